@@ -1,0 +1,613 @@
+/*
+ * xf_command.h - typed parameters of every order (V0.1 and V0.2) and the
+ * GCU's feedback.
+ *
+ * One plain struct, xf_command, holds the parameters of any order under
+ * named members; each order uses the members its row of the table below
+ * lists, in wire order. A table (xf_order_info) drives the byte layout, so
+ * encoding, decoding, the CLI and JSON share one description; the checks
+ * that a table cannot say (union ranges, box corners) are in
+ * xf__command_check(). Unknown orders go through the raw escape hatch:
+ * set xf_host_packet.order / params / params_len yourself.
+ *
+ *  order            wire parameters (members)
+ *  null .. euler    none (also gaze_lock, fpv)
+ *  gaze_geo         longitude S32, latitude S32, altitude S32
+ *  track            cameras, value (1 start, 0 exit), x0, y0, x1, y1 U16
+ *  click_to_aim     cameras, x0, y0 U16
+ *  external_track   cameras, dx S16, dy S16, value (2 start, 0 exit)
+ *  shutter, record, zoom_in, zoom_out, zoom_stop, focus    cameras
+ *  zoom_to          cameras, zoom S16
+ *  palette, night_vision                                   cameras, value
+ *  osd, pip, lighting, ranging, osd_coordinate, auto_flip,
+ *  target_detection, digital_zoom                          value
+ *  time_zone        hours S8
+ *  area_temp        cameras, value, x0, y0, x1, y1 U16
+ *  temp_alarm, isotherm    cameras, value, temp_high S16, temp_low S16
+ *  spot_temp        cameras, value, x0, y0 U16
+ */
+#ifndef XF_COMMAND_H
+#define XF_COMMAND_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include "xf_bytes.h"
+#include "xf_config.h"
+#include "xf_error.h"
+#include "xf_packet.h"
+#include "xf_protocol.h"
+
+XF_BEGIN_DECLS
+
+/** The parameters of one order. Members an order does not use are ignored on encode and zero after decode. */
+typedef struct xf_command {
+    uint8_t order;     /**< xf_order */
+    uint8_t cameras;   /**< KK: camera mask, bit n = camera n+1; never 0 */
+    uint8_t value;     /**< TT: action, mode, level or on/off, per order */
+    int8_t hours;      /**< time_zone: hours from UTC, [-12, 14] */
+    uint16_t x0, y0;   /**< box top-left, or the point, on the [0, 10000] grid */
+    uint16_t x1, y1;   /**< box bottom-right */
+    int16_t dx, dy;    /**< external_track offsets, [-1024, 1024], both >= 3071: lost */
+    int16_t zoom;      /**< zoom_to: [-32768, -10] = -(rate x 10); [1, 10000] = fraction of the range */
+    int16_t temp_high; /**< temp_alarm / isotherm, 0.1 degC */
+    int16_t temp_low;
+    int32_t longitude; /**< gaze_geo, 1e-7 deg */
+    int32_t latitude;
+    int32_t altitude;  /**< gaze_geo, mm */
+} xf_command;
+
+/** The members of xf_command, as items of an order's wire layout. */
+typedef enum xf_field {
+    XF_F_CAMERAS, XF_F_VALUE, XF_F_HOURS, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1,
+    XF_F_DX, XF_F_DY, XF_F_ZOOM, XF_F_TEMP_HIGH, XF_F_TEMP_LOW,
+    XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE
+} xf_field;
+
+#define XF_ORDER_MASK_FAILURE 0x01u /**< failure feedback is the mask of failed cameras (NN) */
+#define XF_ORDER_OPERATING 0x02u    /**< may answer 0x02 "operating" before its final state (calibration) */
+#define XF_ORDER_STREAMED 0x04u     /**< exempt from the once-rule: meant to be streamed (external_track) */
+#define XF_ORDER_SETS_MODE 0x08u    /**< switches the gimbal mode */
+
+/** One row of the order table. */
+typedef struct xf_order_info {
+    uint8_t order;
+    uint8_t since;           /**< protocol version that introduced it: 1 or 2 */
+    uint8_t flags;           /**< XF_ORDER_* */
+    uint8_t default_cameras; /**< the spec's KK default, 0 when the order takes no mask */
+    uint8_t nfields;
+    uint8_t fields[6];       /**< xf_field, in wire order */
+    const char *name;        /**< canonical name, e.g. "zoom_to" */
+} xf_order_info;
+
+/** The table row of @p order, or NULL for an order the protocol does not define. */
+XF_API const xf_order_info *xf_order_lookup(uint8_t order);
+/** The i-th row (i < XF_ORDER_COUNT), NULL past the end: to list every order. */
+XF_API const xf_order_info *xf_order_at(size_t i);
+/** Canonical name of @p order, or NULL if unknown. */
+XF_API const char *xf_order_name(uint8_t order);
+/** Look an order up by canonical name; '-' and '_' are the same. XF_ERR_RANGE if unknown. */
+XF_API xf_err xf_order_from_name(const char *name, uint8_t *order);
+/** Name of a gimbal_mode, or NULL. */
+XF_API const char *xf_mode_name(uint8_t mode);
+/** Name of a member of xf_command (as used in error reports). */
+XF_API const char *xf_field_name(xf_field f);
+/** Wire size of a member: 1, 2 or 4. */
+XF_API size_t xf_field_size(xf_field f);
+/** Parameter bytes of a known order; 0 for unknown orders. */
+XF_API size_t xf_order_params_len(uint8_t order);
+
+/** Zero @p cmd and set its order and the spec's default camera mask. */
+XF_API void xf_command_init(xf_command *cmd, uint8_t order);
+
+/** Read a member as a 32-bit integer / set it (saturating to the member's type). */
+XF_API int32_t xf_command_get(const xf_command *cmd, xf_field f);
+XF_API void xf_command_set(xf_command *cmd, xf_field f, int32_t v);
+
+/**
+ * Check @p cmd's members against the ranges of its order for protocol
+ * @p version. On XF_ERR_RANGE, *bad_field (if not NULL) names the member.
+ * @return XF_OK, XF_ERR_ARG, XF_ERR_UNSUPPORTED (unknown order), XF_ERR_RANGE.
+ */
+XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const char **bad_field);
+
+/**
+ * Encode @p cmd's parameters (checked first) into @p params.
+ * @return as xf_command_check, plus XF_ERR_NO_SPACE.
+ */
+XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap,
+                                size_t *out_len, const char **bad_field);
+
+/**
+ * Decode the @p len parameter bytes of @p order into @p cmd and check them.
+ * @return XF_OK, XF_ERR_ARG, XF_ERR_UNSUPPORTED (unknown order: use the raw
+ *   bytes), XF_ERR_PARAMS (wrong length), XF_ERR_RANGE (*bad_field named).
+ */
+XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version,
+                                xf_command *cmd, const char **bad_field);
+
+/** Put @p cmd into a host packet (order and params) using the packet's version. */
+XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, const char **bad_field);
+
+/* ---- feedback ------------------------------------------------------------ */
+
+typedef enum xf_result {
+    XF_RESULT_OK = 0,       /**< success (0x00) */
+    XF_RESULT_FAILED = 1,   /**< failure: 0x01, or the failed-camera mask NN */
+    XF_RESULT_OPERATING = 2 /**< 0x02 while calibrating: the final state comes later */
+} xf_result;
+
+/** The GCU's answer to an order. */
+typedef struct xf_feedback {
+    uint8_t order;          /**< the order answered (byte 69) */
+    uint8_t has_state;      /**< 1 if byte 70 carries an execution state */
+    uint8_t state;          /**< byte 70 as received */
+    uint8_t result;         /**< xf_result, meaningful when has_state */
+    uint8_t failed_cameras; /**< NN for orders that report a failed-camera mask, else 0 */
+} xf_feedback;
+
+/**
+ * Decode the feedback bytes of a GCU packet (xf_gcu_packet.params). Zero
+ * bytes means "no execution state" (the null order's reply, or a reply that
+ * does not answer yet); bytes after the first are ignored.
+ */
+XF_API xf_err xf_feedback_decode(uint8_t order, const uint8_t *fb, size_t len, xf_feedback *out);
+
+/** The state byte a GCU sends for @p result (GCU side: the simulator). */
+XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed_cameras);
+
+#if XF_EMIT_DEFINITIONS
+
+/* clang-format off */
+#define XF__ROW(o, s, fl, kk, n, a, b, c, d, e, f, nm) \
+    { (uint8_t)(o), (s), (fl), (kk), (n), { (a), (b), (c), (d), (e), (f) }, (nm) }
+/* clang-format on */
+#define XF__Z 0u
+
+static inline const xf_order_info *xf__order_table(void)
+{
+    /* Sorted by order; 26 orders of V0.1 and 10 of V0.2. */
+    static const xf_order_info table[XF_ORDER_COUNT] = {
+        XF__ROW(XF_ORDER_NULL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "null"),
+        XF__ROW(XF_ORDER_CALIBRATION, 1, XF_ORDER_OPERATING, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "calibration"),
+        XF__ROW(XF_ORDER_NEUTRAL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "neutral"),
+        XF__ROW(XF_ORDER_OSD_COORDINATE, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd_coordinate"),
+        XF__ROW(XF_ORDER_AUTO_FLIP, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "auto_flip"),
+        XF__ROW(XF_ORDER_TIME_ZONE, 2, 0, 0, 1, XF_F_HOURS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "time_zone"),
+        XF__ROW(XF_ORDER_ANGLE_CONTROL, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "angle_control"),
+        XF__ROW(XF_ORDER_HEAD_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_lock"),
+        XF__ROW(XF_ORDER_HEAD_FOLLOW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_follow"),
+        XF__ROW(XF_ORDER_ORTHOVIEW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "orthoview"),
+        XF__ROW(XF_ORDER_EULER, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "euler"),
+        XF__ROW(XF_ORDER_GAZE_GEO, 1, XF_ORDER_SETS_MODE, 0, 3, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE, XF__Z, XF__Z, XF__Z, "gaze_geo"),
+        XF__ROW(XF_ORDER_GAZE_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_lock"),
+        XF__ROW(XF_ORDER_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_SETS_MODE, XF_CAM1, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "track"),
+        XF__ROW(XF_ORDER_CLICK_TO_AIM, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 3, XF_F_CAMERAS, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, XF__Z, "click_to_aim"),
+        XF__ROW(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, "external_track"),
+        XF__ROW(XF_ORDER_FPV, 2, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "fpv"),
+        XF__ROW(XF_ORDER_SHUTTER, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "shutter"),
+        XF__ROW(XF_ORDER_RECORD, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "record"),
+        XF__ROW(XF_ORDER_ZOOM_IN, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_in"),
+        XF__ROW(XF_ORDER_ZOOM_OUT, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_out"),
+        XF__ROW(XF_ORDER_ZOOM_STOP, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_stop"),
+        XF__ROW(XF_ORDER_ZOOM_TO, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 2, XF_F_CAMERAS, XF_F_ZOOM, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_to"),
+        XF__ROW(XF_ORDER_FOCUS, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "focus"),
+        XF__ROW(XF_ORDER_PALETTE, 1, XF_ORDER_MASK_FAILURE, XF_CAM2, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "palette"),
+        XF__ROW(XF_ORDER_NIGHT_VISION, 1, 0, XF_CAM1, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "night_vision"),
+        XF__ROW(XF_ORDER_AREA_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "area_temp"),
+        XF__ROW(XF_ORDER_TEMP_ALARM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "temp_alarm"),
+        XF__ROW(XF_ORDER_ISOTHERM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "isotherm"),
+        XF__ROW(XF_ORDER_SPOT_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, "spot_temp"),
+        XF__ROW(XF_ORDER_OSD, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd"),
+        XF__ROW(XF_ORDER_PIP, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "pip"),
+        XF__ROW(XF_ORDER_TARGET_DETECTION, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "target_detection"),
+        XF__ROW(XF_ORDER_DIGITAL_ZOOM, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "digital_zoom"),
+        XF__ROW(XF_ORDER_LIGHTING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "lighting"),
+        XF__ROW(XF_ORDER_RANGING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "ranging"),
+    };
+    return table;
+}
+
+XF_API const xf_order_info *xf_order_at(size_t i)
+{
+    return (i < XF_ORDER_COUNT) ? &xf__order_table()[i] : NULL;
+}
+
+XF_API const xf_order_info *xf_order_lookup(uint8_t order)
+{
+    /* Binary search over the sorted table. */
+    const xf_order_info *t = xf__order_table();
+    size_t lo = 0, hi = XF_ORDER_COUNT;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2u;
+        if (t[mid].order == order) {
+            return &t[mid];
+        }
+        if (t[mid].order < order) {
+            lo = mid + 1u;
+        } else {
+            hi = mid;
+        }
+    }
+    return NULL;
+}
+
+XF_API const char *xf_order_name(uint8_t order)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    return (info != NULL) ? info->name : NULL;
+}
+
+XF_API xf_err xf_order_from_name(const char *name, uint8_t *order)
+{
+    size_t i, k;
+    if (name == NULL || order == NULL) {
+        return XF_ERR_ARG;
+    }
+    for (i = 0; i < XF_ORDER_COUNT; i++) {
+        const char *n = xf__order_table()[i].name;
+        for (k = 0; n[k] != '\0'; k++) {
+            char c = (name[k] == '-') ? '_' : name[k];
+            if (c != n[k]) {
+                break;
+            }
+        }
+        if (n[k] == '\0' && name[k] == '\0') {
+            *order = xf__order_table()[i].order;
+            return XF_OK;
+        }
+    }
+    return XF_ERR_RANGE;
+}
+
+XF_API const char *xf_mode_name(uint8_t mode)
+{
+    switch (mode) {
+    case XF_MODE_ANGLE_CONTROL: return "angle_control";
+    case XF_MODE_HEAD_LOCK: return "head_lock";
+    case XF_MODE_HEAD_FOLLOW: return "head_follow";
+    case XF_MODE_ORTHOVIEW: return "orthoview";
+    case XF_MODE_EULER: return "euler";
+    case XF_MODE_GAZE: return "gaze";
+    case XF_MODE_TRACK: return "track";
+    case XF_MODE_FPV: return "fpv";
+    default: return NULL;
+    }
+}
+
+XF_API const char *xf_field_name(xf_field f)
+{
+    switch (f) {
+    case XF_F_CAMERAS: return "cameras";
+    case XF_F_VALUE: return "value";
+    case XF_F_HOURS: return "hours";
+    case XF_F_X0: return "x0";
+    case XF_F_Y0: return "y0";
+    case XF_F_X1: return "x1";
+    case XF_F_Y1: return "y1";
+    case XF_F_DX: return "dx";
+    case XF_F_DY: return "dy";
+    case XF_F_ZOOM: return "zoom";
+    case XF_F_TEMP_HIGH: return "temp_high";
+    case XF_F_TEMP_LOW: return "temp_low";
+    case XF_F_LONGITUDE: return "longitude";
+    case XF_F_LATITUDE: return "latitude";
+    case XF_F_ALTITUDE: return "altitude";
+    default: return "?";
+    }
+}
+
+XF_API size_t xf_field_size(xf_field f)
+{
+    switch (f) {
+    case XF_F_CAMERAS:
+    case XF_F_VALUE:
+    case XF_F_HOURS: return 1u;
+    case XF_F_LONGITUDE:
+    case XF_F_LATITUDE:
+    case XF_F_ALTITUDE: return 4u;
+    default: return 2u;
+    }
+}
+
+XF_API size_t xf_order_params_len(uint8_t order)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    size_t i, n = 0;
+    if (info != NULL) {
+        for (i = 0; i < info->nfields; i++) {
+            n += xf_field_size((xf_field)info->fields[i]);
+        }
+    }
+    return n;
+}
+
+XF_API void xf_command_init(xf_command *cmd, uint8_t order)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    if (cmd != NULL) {
+        memset(cmd, 0, sizeof(*cmd));
+        cmd->order = order;
+        cmd->cameras = (info != NULL) ? info->default_cameras : 0u;
+    }
+}
+
+static inline int32_t xf__sat(int32_t v, int32_t lo, int32_t hi) { return (v < lo) ? lo : ((v > hi) ? hi : v); }
+
+XF_API int32_t xf_command_get(const xf_command *cmd, xf_field f)
+{
+    if (cmd == NULL) {
+        return 0;
+    }
+    switch (f) {
+    case XF_F_CAMERAS: return cmd->cameras;
+    case XF_F_VALUE: return cmd->value;
+    case XF_F_HOURS: return cmd->hours;
+    case XF_F_X0: return cmd->x0;
+    case XF_F_Y0: return cmd->y0;
+    case XF_F_X1: return cmd->x1;
+    case XF_F_Y1: return cmd->y1;
+    case XF_F_DX: return cmd->dx;
+    case XF_F_DY: return cmd->dy;
+    case XF_F_ZOOM: return cmd->zoom;
+    case XF_F_TEMP_HIGH: return cmd->temp_high;
+    case XF_F_TEMP_LOW: return cmd->temp_low;
+    case XF_F_LONGITUDE: return cmd->longitude;
+    case XF_F_LATITUDE: return cmd->latitude;
+    case XF_F_ALTITUDE: return cmd->altitude;
+    default: return 0;
+    }
+}
+
+XF_API void xf_command_set(xf_command *cmd, xf_field f, int32_t v)
+{
+    if (cmd == NULL) {
+        return;
+    }
+    switch (f) {
+    case XF_F_CAMERAS: cmd->cameras = (uint8_t)xf__sat(v, 0, 255); break;
+    case XF_F_VALUE: cmd->value = (uint8_t)xf__sat(v, 0, 255); break;
+    case XF_F_HOURS: cmd->hours = (int8_t)xf__sat(v, -128, 127); break;
+    case XF_F_X0: cmd->x0 = (uint16_t)xf__sat(v, 0, 65535); break;
+    case XF_F_Y0: cmd->y0 = (uint16_t)xf__sat(v, 0, 65535); break;
+    case XF_F_X1: cmd->x1 = (uint16_t)xf__sat(v, 0, 65535); break;
+    case XF_F_Y1: cmd->y1 = (uint16_t)xf__sat(v, 0, 65535); break;
+    case XF_F_DX: cmd->dx = (int16_t)xf__sat(v, -32768, 32767); break;
+    case XF_F_DY: cmd->dy = (int16_t)xf__sat(v, -32768, 32767); break;
+    case XF_F_ZOOM: cmd->zoom = (int16_t)xf__sat(v, -32768, 32767); break;
+    case XF_F_TEMP_HIGH: cmd->temp_high = (int16_t)xf__sat(v, -32768, 32767); break;
+    case XF_F_TEMP_LOW: cmd->temp_low = (int16_t)xf__sat(v, -32768, 32767); break;
+    case XF_F_LONGITUDE: cmd->longitude = v; break;
+    case XF_F_LATITUDE: cmd->latitude = v; break;
+    case XF_F_ALTITUDE: cmd->altitude = v; break;
+    default: break;
+    }
+}
+
+/* Report the offending member and fail. */
+static inline xf_err xf__bad(const char **bad_field, xf_field f)
+{
+    if (bad_field != NULL) {
+        *bad_field = xf_field_name(f);
+    }
+    return XF_ERR_RANGE;
+}
+
+static inline xf_err xf__check_box(const xf_command *c, int point_only, const char **bad)
+{
+    if (c->x0 > XF_GRID_MAX) return xf__bad(bad, XF_F_X0);
+    if (c->y0 > XF_GRID_MAX) return xf__bad(bad, XF_F_Y0);
+    if (point_only) return XF_OK;
+    /* Corners are top-left then bottom-right; an exit/off box may be all zero. */
+    if (c->x1 > XF_GRID_MAX || c->x1 < c->x0) return xf__bad(bad, XF_F_X1);
+    if (c->y1 > XF_GRID_MAX || c->y1 < c->y0) return xf__bad(bad, XF_F_Y1);
+    return XF_OK;
+}
+
+static inline xf_err xf__check_value_max(const xf_command *c, unsigned max, const char **bad)
+{
+    return (c->value > max) ? xf__bad(bad, XF_F_VALUE) : XF_OK;
+}
+
+/* The ranges of gcu-protocol.md sections 7 and 10, order by order. */
+static inline xf_err xf__command_check(const xf_command *c, uint8_t version, const char **bad)
+{
+    xf_err e;
+    switch (c->order) {
+    case XF_ORDER_TRACK:
+        if (c->value > 1u) return xf__bad(bad, XF_F_VALUE);
+        return xf__check_box(c, 0, bad);
+    case XF_ORDER_AREA_TEMP:
+        if (c->value > 1u) return xf__bad(bad, XF_F_VALUE);
+        return xf__check_box(c, 0, bad);
+    case XF_ORDER_CLICK_TO_AIM:
+        return xf__check_box(c, 1, bad);
+    case XF_ORDER_SPOT_TEMP:
+        if (c->value > 1u) return xf__bad(bad, XF_F_VALUE);
+        return xf__check_box(c, 1, bad);
+    case XF_ORDER_EXTERNAL_TRACK:
+        if (c->value != 0u && c->value != 2u) return xf__bad(bad, XF_F_VALUE);
+        if (c->dx >= XF_EXT_TRACK_LOST && c->dy >= XF_EXT_TRACK_LOST) return XF_OK; /* "lost" marker */
+        if (c->dx < -XF_EXT_TRACK_MAX || c->dx > XF_EXT_TRACK_MAX) return xf__bad(bad, XF_F_DX);
+        if (c->dy < -XF_EXT_TRACK_MAX || c->dy > XF_EXT_TRACK_MAX) return xf__bad(bad, XF_F_DY);
+        return XF_OK;
+    case XF_ORDER_ZOOM_TO:
+        if (c->zoom > -10 && c->zoom < 1) return xf__bad(bad, XF_F_ZOOM);
+        if (c->zoom > 10000) return xf__bad(bad, XF_F_ZOOM);
+        return XF_OK;
+    case XF_ORDER_PALETTE: return xf__check_value_max(c, (version >= XF_PROTOCOL_V2) ? 10u : 100u, bad);
+    case XF_ORDER_PIP: return xf__check_value_max(c, (version >= XF_PROTOCOL_V2) ? 4u : 0u, bad);
+    case XF_ORDER_NIGHT_VISION: return xf__check_value_max(c, 2u, bad);
+    case XF_ORDER_RANGING:
+        return (c->value != 0u && c->value != 2u) ? xf__bad(bad, XF_F_VALUE) : XF_OK;
+    case XF_ORDER_OSD:
+    case XF_ORDER_OSD_COORDINATE:
+    case XF_ORDER_AUTO_FLIP:
+    case XF_ORDER_TARGET_DETECTION:
+    case XF_ORDER_DIGITAL_ZOOM: return xf__check_value_max(c, 1u, bad);
+    case XF_ORDER_TIME_ZONE:
+        return (c->hours < -12 || c->hours > 14) ? xf__bad(bad, XF_F_HOURS) : XF_OK;
+    case XF_ORDER_TEMP_ALARM:
+    case XF_ORDER_ISOTHERM:
+        e = xf__check_value_max(c, 1u, bad);
+        if (e == XF_OK && c->value == 1u && c->temp_high < c->temp_low) {
+            e = xf__bad(bad, XF_F_TEMP_LOW);
+        }
+        return e;
+    default: return XF_OK; /* lighting: any level; the rest take no value */
+    }
+}
+
+XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const char **bad_field)
+{
+    const xf_order_info *info;
+    size_t i;
+    if (cmd == NULL) {
+        return XF_ERR_ARG;
+    }
+    info = xf_order_lookup(cmd->order);
+    if (info == NULL) {
+        return XF_ERR_UNSUPPORTED;
+    }
+    for (i = 0; i < info->nfields; i++) {
+        if (info->fields[i] == XF_F_CAMERAS && cmd->cameras == 0u) {
+            return xf__bad(bad_field, XF_F_CAMERAS); /* a mask of no camera addresses nothing */
+        }
+    }
+    return xf__command_check(cmd, version, bad_field);
+}
+
+XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap,
+                                size_t *out_len, const char **bad_field)
+{
+    const xf_order_info *info;
+    size_t i, n, off = 0;
+    xf_err err = xf_command_check(cmd, version, bad_field);
+    if (err != XF_OK) {
+        return err;
+    }
+    info = xf_order_lookup(cmd->order);
+    n = xf_order_params_len(cmd->order);
+    if (n > 0u && params == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (cap < n) {
+        return XF_ERR_NO_SPACE;
+    }
+    for (i = 0; i < info->nfields; i++) {
+        xf_field f = (xf_field)info->fields[i];
+        int32_t v = xf_command_get(cmd, f);
+        switch (xf_field_size(f)) {
+        case 1u: params[off] = (uint8_t)(v & 0xFF); break;
+        case 2u: xf_put_u16le(params + off, (uint16_t)(v & 0xFFFF)); break;
+        default: xf_put_s32le(params + off, v); break;
+        }
+        off += xf_field_size(f);
+    }
+    if (out_len != NULL) {
+        *out_len = n;
+    }
+    return XF_OK;
+}
+
+XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version,
+                                xf_command *cmd, const char **bad_field)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    xf_command tmp;
+    size_t i, off = 0;
+    if (cmd == NULL || (params == NULL && len > 0u)) {
+        return XF_ERR_ARG;
+    }
+    if (info == NULL) {
+        return XF_ERR_UNSUPPORTED;
+    }
+    if (len != xf_order_params_len(order)) {
+        return XF_ERR_PARAMS;
+    }
+    memset(&tmp, 0, sizeof(tmp));
+    tmp.order = order;
+    for (i = 0; i < info->nfields; i++) {
+        xf_field f = (xf_field)info->fields[i];
+        int32_t v;
+        int is_signed = (f == XF_F_HOURS || f == XF_F_DX || f == XF_F_DY || f == XF_F_ZOOM ||
+                         f == XF_F_TEMP_HIGH || f == XF_F_TEMP_LOW);
+        switch (xf_field_size(f)) {
+        case 1u: v = is_signed ? xf_u8_to_s8(params[off]) : params[off]; break;
+        case 2u: v = is_signed ? xf_get_s16le(params + off) : xf_get_u16le(params + off); break;
+        default: v = xf_get_s32le(params + off); break;
+        }
+        xf_command_set(&tmp, f, v);
+        off += xf_field_size(f);
+    }
+    {
+        xf_err err = xf_command_check(&tmp, version, bad_field);
+        if (err != XF_OK) {
+            return err;
+        }
+    }
+    *cmd = tmp;
+    return XF_OK;
+}
+
+XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, const char **bad_field)
+{
+    size_t n = 0;
+    xf_err err;
+    if (pkt == NULL || cmd == NULL) {
+        return XF_ERR_ARG;
+    }
+    err = xf_command_encode(cmd, pkt->version, pkt->params, sizeof(pkt->params), &n, bad_field);
+    if (err != XF_OK) {
+        return err;
+    }
+    pkt->order = cmd->order;
+    pkt->params_len = (uint8_t)n;
+    return XF_OK;
+}
+
+XF_API xf_err xf_feedback_decode(uint8_t order, const uint8_t *fb, size_t len, xf_feedback *out)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    uint8_t flags = (info != NULL) ? info->flags : 0u;
+    if (out == NULL || (fb == NULL && len > 0u)) {
+        return XF_ERR_ARG;
+    }
+    memset(out, 0, sizeof(*out));
+    out->order = order;
+    if (len == 0u) {
+        return XF_OK; /* no execution state in this reply */
+    }
+    out->has_state = 1u;
+    out->state = fb[0];
+    if (fb[0] == XF_STATE_SUCCESS) {
+        out->result = XF_RESULT_OK;
+    } else if ((flags & XF_ORDER_OPERATING) != 0u && fb[0] == XF_STATE_OPERATING) {
+        out->result = XF_RESULT_OPERATING;
+    } else {
+        out->result = XF_RESULT_FAILED;
+        out->failed_cameras = ((flags & XF_ORDER_MASK_FAILURE) != 0u) ? fb[0] : 0u;
+    }
+    return XF_OK;
+}
+
+XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed_cameras)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    uint8_t flags = (info != NULL) ? info->flags : 0u;
+    switch (result) {
+    case XF_RESULT_OK: return XF_STATE_SUCCESS;
+    case XF_RESULT_OPERATING: return XF_STATE_OPERATING;
+    default:
+        if ((flags & XF_ORDER_MASK_FAILURE) != 0u && failed_cameras != 0u) {
+            return failed_cameras;
+        }
+        return XF_STATE_FAILURE;
+    }
+}
+
+#endif /* XF_EMIT_DEFINITIONS */
+
+XF_END_DECLS
+
+#endif /* XF_COMMAND_H */

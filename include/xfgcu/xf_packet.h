@@ -1,0 +1,443 @@
+/*
+ * xf_packet.h - the four frames as typed structs, and packets packed and
+ * unpacked field by field.
+ *
+ * Member names are the canonical names of shared/spec/gcu-protocol.md; the
+ * values are the raw wire integers (xf_units.h converts to physical units).
+ * Reserved bytes are kept in `reserved_*` arrays so that unpack followed by
+ * pack gives back the very same bytes.
+ */
+#ifndef XF_PACKET_H
+#define XF_PACKET_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include "xf_bytes.h"
+#include "xf_config.h"
+#include "xf_crc.h"
+#include "xf_error.h"
+#include "xf_protocol.h"
+
+XF_BEGIN_DECLS
+
+/** Host main frame, bytes 5-36. */
+typedef struct xf_host_main {
+    int16_t roll_ctrl;   /**< control quantity; meaning set by the mode */
+    int16_t pitch_ctrl;
+    int16_t yaw_ctrl;
+    uint8_t status;      /**< XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID */
+    int16_t carrier_roll;  /**< 0.01 deg, [-18000, 18000) */
+    int16_t carrier_pitch; /**< 0.01 deg, [-9000, 9000] */
+    uint16_t carrier_yaw;  /**< 0.01 deg, [0, 36000) */
+    int16_t accel_north;   /**< 0.01 m/s^2, gravity excluded */
+    int16_t accel_east;
+    int16_t accel_up;
+    int16_t vel_north;     /**< 0.01 m/s */
+    int16_t vel_east;
+    int16_t vel_up;
+    uint8_t sub_request;   /**< sub frame asked of the GCU (XF_SUB_HEADER) */
+    uint8_t reserved_main[6]; /**< bytes 31-36, 0 */
+} xf_host_main;
+
+/** Host sub frame, bytes 37-68. All zero when there is no sub frame data. */
+typedef struct xf_host_sub {
+    uint8_t sub_header;      /**< XF_SUB_HEADER */
+    int32_t longitude;       /**< 1e-7 deg */
+    int32_t latitude;        /**< 1e-7 deg */
+    int32_t altitude;        /**< mm */
+    uint8_t satellites;
+    uint32_t gnss_ms;        /**< GNSS milliseconds of week */
+    int16_t gnss_week;
+    int32_t relative_height; /**< mm */
+    uint8_t reserved_sub[8]; /**< bytes 61-68, 0 */
+} xf_host_sub;
+
+/** GCU main frame, bytes 5-36. */
+typedef struct xf_gcu_main {
+    uint8_t gimbal_mode;     /**< xf_mode */
+    uint16_t pod_status;     /**< XF_POD_* bits */
+    int16_t target_offset_x; /**< [-1000, 1000], right positive */
+    int16_t target_offset_y; /**< [-1000, 1000], down positive */
+    int16_t rel_angle_x;     /**< 0.01 deg relative to the carrier */
+    int16_t rel_angle_y;
+    int16_t rel_angle_z;
+    int16_t cam_roll;        /**< 0.01 deg */
+    int16_t cam_pitch;
+    uint16_t cam_yaw;        /**< 0.01 deg, [0, 36000) */
+    int16_t rate_x;          /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 */
+    int16_t rate_y;
+    int16_t rate_z;
+    uint8_t reserved_main[7]; /**< bytes 30-36 */
+} xf_gcu_main;
+
+/** GCU sub frame, bytes 37-68. */
+typedef struct xf_gcu_sub {
+    uint8_t sub_header;
+    uint8_t hw_version;
+    uint8_t fw_version;
+    uint8_t gimbal_code;      /**< xf_gimbal_model() */
+    uint16_t error_code;      /**< V0.2: XF_ERROR_* bits; reserved in V0.1 */
+    int32_t target_distance;  /**< 0.1 m; -10 or 0: no valid measurement */
+    int32_t target_longitude; /**< 1e-7 deg */
+    int32_t target_latitude;  /**< 1e-7 deg */
+    int32_t target_altitude;  /**< mm */
+    uint16_t zoom_cam1;       /**< 0.1 x */
+    uint16_t zoom_cam2;       /**< 0.1 x */
+    uint8_t thermal_status;   /**< V0.2, byte 63: XF_THERMAL_* (reserved in V0.1) */
+    uint16_t camera_status;   /**< V0.2, bytes 64-65: XF_CAMERA_* (reserved in V0.1) */
+    int8_t time_zone;         /**< V0.2, byte 66: hours from UTC (reserved in V0.1) */
+    uint8_t reserved_sub[2];  /**< bytes 67-68 */
+} xf_gcu_sub;
+
+/** A host -> GCU packet. */
+typedef struct xf_host_packet {
+    uint8_t version;    /**< byte 4: XF_PROTOCOL_V1 or XF_PROTOCOL_V2 */
+    xf_host_main main;
+    xf_host_sub sub;
+    uint8_t order;      /**< byte 69: xf_order, or any other value (raw) */
+    uint8_t params_len; /**< 0..XF_PARAMS_MAX */
+    uint8_t params[XF_PARAMS_MAX];
+} xf_host_packet;
+
+/** A GCU -> host packet. `params` holds the feedback bytes. */
+typedef struct xf_gcu_packet {
+    uint8_t version;
+    xf_gcu_main main;
+    xf_gcu_sub sub;
+    uint8_t order;      /**< the order the feedback answers */
+    uint8_t params_len; /**< feedback bytes: 0 for the null order, 1 otherwise */
+    uint8_t params[XF_PARAMS_MAX];
+} xf_gcu_packet;
+
+/**
+ * Check a whole packet in @p buf: header for @p dir, length field in
+ * [72, XF_PACKET_MAX_LEN] and equal to @p len, CRC.
+ * @return XF_OK, XF_ERR_ARG (NULL buf), XF_ERR_TRUNCATED (fewer bytes than
+ *   the header and length need, or than the length field says),
+ *   XF_ERR_HEADER, XF_ERR_LENGTH (field out of range, or more bytes than it
+ *   says), XF_ERR_CRC.
+ */
+XF_API xf_err xf_packet_check(const uint8_t *buf, size_t len, xf_direction dir);
+
+/** The direction whose header starts @p buf; XF_ERR_HEADER if neither, XF_ERR_TRUNCATED if len < 2. */
+XF_API xf_err xf_packet_direction(const uint8_t *buf, size_t len, xf_direction *dir);
+
+/** Bytes a packet will take: 72 + params_len. */
+XF_API size_t xf_host_packet_size(const xf_host_packet *pkt);
+XF_API size_t xf_gcu_packet_size(const xf_gcu_packet *pkt);
+
+/**
+ * Pack @p pkt into @p buf (capacity @p cap), CRC included; the length is
+ * stored in @p out_len (may be NULL). Nothing is written on error.
+ * @return XF_OK, XF_ERR_ARG, XF_ERR_RANGE (params_len > XF_PARAMS_MAX),
+ *   XF_ERR_NO_SPACE (cap < the packet's size).
+ */
+XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, size_t *out_len);
+XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, size_t *out_len);
+
+/**
+ * Check (as xf_packet_check) and decode one whole packet of @p len bytes.
+ * @p pkt is written only on success.
+ */
+XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt);
+XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt);
+
+/** Initialise a host packet: all zero, @p version, sub_request = XF_SUB_HEADER, null order. */
+XF_API void xf_host_packet_init(xf_host_packet *pkt, uint8_t version);
+
+#if XF_EMIT_DEFINITIONS
+
+static inline void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version)
+{
+    buf[0] = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
+    buf[1] = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
+    xf_put_u16le(buf + XF_OFF_LENGTH, (uint16_t)len);
+    buf[XF_OFF_VERSION] = version;
+}
+
+static inline void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len)
+{
+    uint16_t crc;
+    buf[XF_OFF_ORDER] = order;
+    if (params_len > 0u) {
+        memcpy(buf + XF_OFF_PARAMS, params, params_len);
+    }
+    crc = xf_crc16(buf, len - 2u);
+    buf[len - 2u] = (uint8_t)(crc >> 8); /* the CRC is big-endian */
+    buf[len - 1u] = (uint8_t)(crc & 0xFFu);
+}
+
+XF_API xf_err xf_packet_direction(const uint8_t *buf, size_t len, xf_direction *dir)
+{
+    if (buf == NULL || dir == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (len < 2u) {
+        return XF_ERR_TRUNCATED;
+    }
+    if (buf[0] == XF_HOST_HEADER0 && buf[1] == XF_HOST_HEADER1) {
+        *dir = XF_DIR_HOST;
+    } else if (buf[0] == XF_GCU_HEADER0 && buf[1] == XF_GCU_HEADER1) {
+        *dir = XF_DIR_GCU;
+    } else {
+        return XF_ERR_HEADER;
+    }
+    return XF_OK;
+}
+
+XF_API xf_err xf_packet_check(const uint8_t *buf, size_t len, xf_direction dir)
+{
+    xf_direction seen;
+    xf_err err;
+    size_t field;
+    uint16_t crc;
+    if (buf == NULL || (dir != XF_DIR_HOST && dir != XF_DIR_GCU)) {
+        return XF_ERR_ARG;
+    }
+    err = xf_packet_direction(buf, len, &seen);
+    if (err != XF_OK) {
+        return err;
+    }
+    if (seen != dir) {
+        return XF_ERR_HEADER;
+    }
+    if (len < 4u) {
+        return XF_ERR_TRUNCATED;
+    }
+    field = xf_get_u16le(buf + XF_OFF_LENGTH);
+    if (field < XF_PACKET_MIN_LEN || field > XF_PACKET_MAX_LEN) {
+        return XF_ERR_LENGTH;
+    }
+    if (len < field) {
+        return XF_ERR_TRUNCATED;
+    }
+    if (len > field) {
+        return XF_ERR_LENGTH;
+    }
+    crc = (uint16_t)(((uint16_t)buf[field - 2u] << 8) | buf[field - 1u]);
+    return (xf_crc16(buf, field - 2u) == crc) ? XF_OK : XF_ERR_CRC;
+}
+
+XF_API size_t xf_host_packet_size(const xf_host_packet *pkt)
+{
+    return (pkt == NULL) ? 0u : (size_t)XF_PACKET_MIN_LEN + pkt->params_len;
+}
+
+XF_API size_t xf_gcu_packet_size(const xf_gcu_packet *pkt)
+{
+    return (pkt == NULL) ? 0u : (size_t)XF_PACKET_MIN_LEN + pkt->params_len;
+}
+
+XF_API void xf_host_packet_init(xf_host_packet *pkt, uint8_t version)
+{
+    if (pkt != NULL) {
+        memset(pkt, 0, sizeof(*pkt));
+        pkt->version = version;
+        pkt->main.sub_request = XF_SUB_HEADER;
+    }
+}
+
+XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, size_t *out_len)
+{
+    const xf_host_main *m;
+    const xf_host_sub *s;
+    size_t len;
+    if (pkt == NULL || buf == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (pkt->params_len > XF_PARAMS_MAX) {
+        return XF_ERR_RANGE;
+    }
+    len = xf_host_packet_size(pkt);
+    if (cap < len) {
+        return XF_ERR_NO_SPACE;
+    }
+    m = &pkt->main;
+    s = &pkt->sub;
+    xf__put_header(buf, XF_DIR_HOST, len, pkt->version);
+    xf_put_s16le(buf + 5, m->roll_ctrl);
+    xf_put_s16le(buf + 7, m->pitch_ctrl);
+    xf_put_s16le(buf + 9, m->yaw_ctrl);
+    buf[11] = m->status;
+    xf_put_s16le(buf + 12, m->carrier_roll);
+    xf_put_s16le(buf + 14, m->carrier_pitch);
+    xf_put_u16le(buf + 16, m->carrier_yaw);
+    xf_put_s16le(buf + 18, m->accel_north);
+    xf_put_s16le(buf + 20, m->accel_east);
+    xf_put_s16le(buf + 22, m->accel_up);
+    xf_put_s16le(buf + 24, m->vel_north);
+    xf_put_s16le(buf + 26, m->vel_east);
+    xf_put_s16le(buf + 28, m->vel_up);
+    buf[30] = m->sub_request;
+    memcpy(buf + 31, m->reserved_main, sizeof(m->reserved_main));
+    buf[37] = s->sub_header;
+    xf_put_s32le(buf + 38, s->longitude);
+    xf_put_s32le(buf + 42, s->latitude);
+    xf_put_s32le(buf + 46, s->altitude);
+    buf[50] = s->satellites;
+    xf_put_u32le(buf + 51, s->gnss_ms);
+    xf_put_s16le(buf + 55, s->gnss_week);
+    xf_put_s32le(buf + 57, s->relative_height);
+    memcpy(buf + 61, s->reserved_sub, sizeof(s->reserved_sub));
+    xf__put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
+    if (out_len != NULL) {
+        *out_len = len;
+    }
+    return XF_OK;
+}
+
+XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, size_t *out_len)
+{
+    const xf_gcu_main *m;
+    const xf_gcu_sub *s;
+    size_t len;
+    if (pkt == NULL || buf == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (pkt->params_len > XF_PARAMS_MAX) {
+        return XF_ERR_RANGE;
+    }
+    len = xf_gcu_packet_size(pkt);
+    if (cap < len) {
+        return XF_ERR_NO_SPACE;
+    }
+    m = &pkt->main;
+    s = &pkt->sub;
+    xf__put_header(buf, XF_DIR_GCU, len, pkt->version);
+    buf[5] = m->gimbal_mode;
+    xf_put_u16le(buf + 6, m->pod_status);
+    xf_put_s16le(buf + 8, m->target_offset_x);
+    xf_put_s16le(buf + 10, m->target_offset_y);
+    xf_put_s16le(buf + 12, m->rel_angle_x);
+    xf_put_s16le(buf + 14, m->rel_angle_y);
+    xf_put_s16le(buf + 16, m->rel_angle_z);
+    xf_put_s16le(buf + 18, m->cam_roll);
+    xf_put_s16le(buf + 20, m->cam_pitch);
+    xf_put_u16le(buf + 22, m->cam_yaw);
+    xf_put_s16le(buf + 24, m->rate_x);
+    xf_put_s16le(buf + 26, m->rate_y);
+    xf_put_s16le(buf + 28, m->rate_z);
+    memcpy(buf + 30, m->reserved_main, sizeof(m->reserved_main));
+    buf[37] = s->sub_header;
+    buf[38] = s->hw_version;
+    buf[39] = s->fw_version;
+    buf[40] = s->gimbal_code;
+    xf_put_u16le(buf + 41, s->error_code);
+    xf_put_s32le(buf + 43, s->target_distance);
+    xf_put_s32le(buf + 47, s->target_longitude);
+    xf_put_s32le(buf + 51, s->target_latitude);
+    xf_put_s32le(buf + 55, s->target_altitude);
+    xf_put_u16le(buf + 59, s->zoom_cam1);
+    xf_put_u16le(buf + 61, s->zoom_cam2);
+    buf[63] = s->thermal_status;
+    xf_put_u16le(buf + 64, s->camera_status);
+    buf[66] = (uint8_t)s->time_zone;
+    memcpy(buf + 67, s->reserved_sub, sizeof(s->reserved_sub));
+    xf__put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
+    if (out_len != NULL) {
+        *out_len = len;
+    }
+    return XF_OK;
+}
+
+XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt)
+{
+    xf_host_main *m;
+    xf_host_sub *s;
+    xf_err err;
+    if (pkt == NULL) {
+        return XF_ERR_ARG;
+    }
+    err = xf_packet_check(buf, len, XF_DIR_HOST);
+    if (err != XF_OK) {
+        return err;
+    }
+    m = &pkt->main;
+    s = &pkt->sub;
+    pkt->version = buf[XF_OFF_VERSION];
+    m->roll_ctrl = xf_get_s16le(buf + 5);
+    m->pitch_ctrl = xf_get_s16le(buf + 7);
+    m->yaw_ctrl = xf_get_s16le(buf + 9);
+    m->status = buf[11];
+    m->carrier_roll = xf_get_s16le(buf + 12);
+    m->carrier_pitch = xf_get_s16le(buf + 14);
+    m->carrier_yaw = xf_get_u16le(buf + 16);
+    m->accel_north = xf_get_s16le(buf + 18);
+    m->accel_east = xf_get_s16le(buf + 20);
+    m->accel_up = xf_get_s16le(buf + 22);
+    m->vel_north = xf_get_s16le(buf + 24);
+    m->vel_east = xf_get_s16le(buf + 26);
+    m->vel_up = xf_get_s16le(buf + 28);
+    m->sub_request = buf[30];
+    memcpy(m->reserved_main, buf + 31, sizeof(m->reserved_main));
+    s->sub_header = buf[37];
+    s->longitude = xf_get_s32le(buf + 38);
+    s->latitude = xf_get_s32le(buf + 42);
+    s->altitude = xf_get_s32le(buf + 46);
+    s->satellites = buf[50];
+    s->gnss_ms = xf_get_u32le(buf + 51);
+    s->gnss_week = xf_get_s16le(buf + 55);
+    s->relative_height = xf_get_s32le(buf + 57);
+    memcpy(s->reserved_sub, buf + 61, sizeof(s->reserved_sub));
+    pkt->order = buf[XF_OFF_ORDER];
+    pkt->params_len = (uint8_t)(len - XF_PACKET_MIN_LEN);
+    memcpy(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
+    return XF_OK;
+}
+
+XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
+{
+    xf_gcu_main *m;
+    xf_gcu_sub *s;
+    xf_err err;
+    if (pkt == NULL) {
+        return XF_ERR_ARG;
+    }
+    err = xf_packet_check(buf, len, XF_DIR_GCU);
+    if (err != XF_OK) {
+        return err;
+    }
+    m = &pkt->main;
+    s = &pkt->sub;
+    pkt->version = buf[XF_OFF_VERSION];
+    m->gimbal_mode = buf[5];
+    m->pod_status = xf_get_u16le(buf + 6);
+    m->target_offset_x = xf_get_s16le(buf + 8);
+    m->target_offset_y = xf_get_s16le(buf + 10);
+    m->rel_angle_x = xf_get_s16le(buf + 12);
+    m->rel_angle_y = xf_get_s16le(buf + 14);
+    m->rel_angle_z = xf_get_s16le(buf + 16);
+    m->cam_roll = xf_get_s16le(buf + 18);
+    m->cam_pitch = xf_get_s16le(buf + 20);
+    m->cam_yaw = xf_get_u16le(buf + 22);
+    m->rate_x = xf_get_s16le(buf + 24);
+    m->rate_y = xf_get_s16le(buf + 26);
+    m->rate_z = xf_get_s16le(buf + 28);
+    memcpy(m->reserved_main, buf + 30, sizeof(m->reserved_main));
+    s->sub_header = buf[37];
+    s->hw_version = buf[38];
+    s->fw_version = buf[39];
+    s->gimbal_code = buf[40];
+    s->error_code = xf_get_u16le(buf + 41);
+    s->target_distance = xf_get_s32le(buf + 43);
+    s->target_longitude = xf_get_s32le(buf + 47);
+    s->target_latitude = xf_get_s32le(buf + 51);
+    s->target_altitude = xf_get_s32le(buf + 55);
+    s->zoom_cam1 = xf_get_u16le(buf + 59);
+    s->zoom_cam2 = xf_get_u16le(buf + 61);
+    s->thermal_status = buf[63];
+    s->camera_status = xf_get_u16le(buf + 64);
+    s->time_zone = xf_u8_to_s8(buf[66]);
+    memcpy(s->reserved_sub, buf + 67, sizeof(s->reserved_sub));
+    pkt->order = buf[XF_OFF_ORDER];
+    pkt->params_len = (uint8_t)(len - XF_PACKET_MIN_LEN);
+    memcpy(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
+    return XF_OK;
+}
+
+#endif /* XF_EMIT_DEFINITIONS */
+
+XF_END_DECLS
+
+#endif /* XF_PACKET_H */

@@ -1,0 +1,312 @@
+/*
+ * xf_parser.h - streaming parser: bytes in any chunking, whole frames out.
+ *
+ * Caller-owned state, no allocation, no static data. Feed it whatever the
+ * link delivered; it returns each complete frame whose header (for the
+ * configured direction), length (in [72, XF_PACKET_MAX_LEN]) and CRC are
+ * right.
+ *
+ * Resynchronisation. A candidate is a header pair followed by a valid
+ * length. The earliest candidate is examined first; when its CRC fails, the
+ * parser rescans the bytes it already holds from the candidate's second
+ * byte on, so an intact frame hidden after noise, a false header or a
+ * bogus length is always recovered. A bogus length delays the frames after
+ * it until that many bytes have arrived (at most 255).
+ *
+ * Cost. On a clean stream every byte is copied once and CRC'd once. After a
+ * CRC failure the parser keeps, for each held byte, the CRC of the stream
+ * before it (computed once per byte), and checks every further candidate in
+ * constant time from two of those values (crc(i..j) = P(j) ^ P(i) * x^(8(j-i))),
+ * so adversarial input costs O(1) per byte, never O(frame length).
+ *
+ * Counters only ever increase (the application may zero them):
+ *     bytes_in = bytes of returned frames + bytes_skipped + xf_parser_pending()
+ */
+#ifndef XF_PARSER_H
+#define XF_PARSER_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include "xf_config.h"
+#include "xf_crc.h"
+#include "xf_error.h"
+#include "xf_protocol.h"
+
+XF_BEGIN_DECLS
+
+/* Ring size: a power of two that holds the longest packet. */
+#if XF_PACKET_MAX_LEN > 128
+#define XF_PARSER_RING 256u
+#else
+#define XF_PARSER_RING 128u
+#endif
+
+/** Counters; each only increases. */
+typedef struct xf_parser_stats {
+    uint32_t bytes_in;      /**< bytes fed */
+    uint32_t frames;        /**< valid frames returned */
+    uint32_t crc_errors;    /**< candidates (header and valid length) whose CRC failed */
+    uint32_t length_errors; /**< header pairs followed by a length outside [72, XF_PACKET_MAX_LEN] */
+    uint32_t bytes_skipped; /**< bytes dropped as part of no valid frame */
+} xf_parser_stats;
+
+/** A frame returned by the parser; the bytes stay valid until the next call on the parser. */
+typedef struct xf_frame {
+    const uint8_t *data;
+    size_t len;
+} xf_frame;
+
+/** Parser state. Treat the members as private except `stats`. */
+typedef struct xf_parser {
+    uint8_t ring[XF_PARSER_RING];
+    uint16_t memo[XF_PARSER_RING];    /* CRC of the stream before each held byte (memo mode) */
+    uint8_t scratch[XF_PACKET_MAX_LEN]; /* a frame that wraps round the ring is copied here */
+    uint32_t head;     /* stream position of the first held byte */
+    uint32_t end;      /* one past the last held byte */
+    uint16_t memo_crc; /* CRC of the stream before `end` (memo mode) */
+    uint8_t memo_on;
+    uint8_t h0, h1;    /* header bytes of the direction parsed */
+    xf_parser_stats stats;
+} xf_parser;
+
+/** Start a parser for packets sent in direction @p dir (XF_DIR_GCU on a host). */
+XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir);
+
+/** Drop the bytes held (counted as skipped); keep the direction and the counters. */
+XF_API void xf_parser_reset(xf_parser *p);
+
+/** Bytes held that belong to no returned frame yet. */
+XF_API size_t xf_parser_pending(const xf_parser *p);
+
+#define XF_PARSE_FRAME 1 /**< xf_parser_feed: *frame holds a frame */
+#define XF_PARSE_MORE 0  /**< xf_parser_feed: all input taken, no frame */
+
+/**
+ * Feed @p len bytes. Stops at the first complete frame: returns
+ * XF_PARSE_FRAME with *frame set and *consumed = the bytes of @p data taken
+ * so far; call again with the rest (even when the rest is empty: frames
+ * can be found in bytes already held). Returns XF_PARSE_MORE when every
+ * byte was taken and no frame is complete, or XF_ERR_ARG.
+ *
+ *     size_t n; xf_frame f;
+ *     while (xf_parser_feed(&p, data, len, &n, &f) == XF_PARSE_FRAME) {
+ *         handle(f.data, f.len);
+ *         data += n; len -= n;
+ *     }
+ */
+XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
+
+#if XF_EMIT_DEFINITIONS
+
+#define XF__RMASK (XF_PARSER_RING - 1u)
+XF_STATIC_ASSERT((XF_PARSER_RING & XF__RMASK) == 0u, ring_is_power_of_two);
+XF_STATIC_ASSERT(XF_PARSER_RING >= XF_PACKET_MAX_LEN, ring_holds_a_packet);
+
+static inline uint8_t xf__rb(const xf_parser *p, uint32_t pos) { return p->ring[pos & XF__RMASK]; }
+
+XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir)
+{
+    if (p == NULL || (dir != XF_DIR_HOST && dir != XF_DIR_GCU)) {
+        return XF_ERR_ARG;
+    }
+    memset(p, 0, sizeof(*p));
+    p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
+    p->h1 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
+    return XF_OK;
+}
+
+XF_API size_t xf_parser_pending(const xf_parser *p) { return (p == NULL) ? 0u : (size_t)(p->end - p->head); }
+
+/* Nothing held: restart at ring index 0 in fast mode, so clean frames never wrap. */
+static inline void xf__parser_empty(xf_parser *p)
+{
+    p->head = 0;
+    p->end = 0;
+    p->memo_on = 0;
+}
+
+XF_API void xf_parser_reset(xf_parser *p)
+{
+    if (p != NULL) {
+        p->stats.bytes_skipped += (uint32_t)(p->end - p->head);
+        xf__parser_empty(p);
+    }
+}
+
+/* CRC of held bytes [pos, pos + n) read straight from the ring (fast mode). */
+static inline uint16_t xf__ring_crc(const xf_parser *p, uint32_t pos, size_t n)
+{
+    size_t i0 = pos & XF__RMASK;
+    size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
+    uint16_t c = xf_crc16_update(0, p->ring + i0, first);
+    return xf_crc16_update(c, p->ring, n - first);
+}
+
+/* Enter memo mode: record the CRC before each held byte, from `head` on. */
+static inline void xf__memo_start(xf_parser *p)
+{
+    uint32_t pos;
+    uint16_t c = 0;
+    for (pos = p->head; pos != p->end; pos++) {
+        uint8_t b = xf__rb(p, pos);
+        p->memo[pos & XF__RMASK] = c;
+        c = xf_crc16_update(c, &b, 1);
+    }
+    p->memo_crc = c;
+    p->memo_on = 1;
+}
+
+static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
+{
+    size_t i;
+    if (p->memo_on) {
+        uint16_t c = p->memo_crc;
+        for (i = 0; i < n; i++) {
+            size_t k = (p->end + i) & XF__RMASK;
+            p->memo[k] = c;
+            p->ring[k] = data[i];
+            c = xf_crc16_update(c, data + i, 1);
+        }
+        p->memo_crc = c;
+    } else {
+        size_t i0 = p->end & XF__RMASK;
+        size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
+        memcpy(p->ring + i0, data, first);
+        memcpy(p->ring, data + first, n - first);
+    }
+    p->end += (uint32_t)n;
+}
+
+/* Is the candidate of length len at head intact? */
+static inline int xf__candidate_ok(const xf_parser *p, size_t len)
+{
+    uint32_t crc_pos = p->head + (uint32_t)len - 2u;
+    uint16_t want = (uint16_t)(((uint16_t)xf__rb(p, crc_pos) << 8) | xf__rb(p, crc_pos + 1u));
+    uint16_t got;
+    if (p->memo_on) {
+        got = (uint16_t)(p->memo[crc_pos & XF__RMASK] ^
+                         xf__crc_shift(p->memo[p->head & XF__RMASK], (unsigned)(len - 2u)));
+    } else {
+        got = xf__ring_crc(p, p->head, len - 2u);
+    }
+    return got == want;
+}
+
+static inline void xf__emit(xf_parser *p, size_t len, xf_frame *frame)
+{
+    size_t i0 = p->head & XF__RMASK;
+    if (i0 + len <= XF_PARSER_RING) {
+        frame->data = p->ring + i0;
+    } else {
+        size_t first = XF_PARSER_RING - i0;
+        memcpy(p->scratch, p->ring + i0, first);
+        memcpy(p->scratch + first, p->ring, len - first);
+        frame->data = p->scratch;
+    }
+    frame->len = len;
+    p->head += (uint32_t)len;
+    p->stats.frames++;
+}
+
+static inline void xf__skip1(xf_parser *p)
+{
+    p->head++;
+    p->stats.bytes_skipped++;
+}
+
+/* Work through the held bytes. Returns 1 with a frame, or 0 with *need =
+ * how many more bytes the earliest candidate needs (0: nothing held). */
+static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
+{
+    for (;;) {
+        size_t held = (size_t)(p->end - p->head);
+        size_t len;
+        if (held == 0u) {
+            xf__parser_empty(p);
+            *need = 0;
+            return 0;
+        }
+        if (xf__rb(p, p->head) != p->h0) {
+            xf__skip1(p);
+            continue;
+        }
+        if (held < 2u) {
+            *need = 2u - held;
+            return 0;
+        }
+        if (xf__rb(p, p->head + 1u) != p->h1) {
+            xf__skip1(p);
+            continue;
+        }
+        if (held < 4u) {
+            *need = 4u - held;
+            return 0;
+        }
+        len = (size_t)xf__rb(p, p->head + 2u) | ((size_t)xf__rb(p, p->head + 3u) << 8);
+        if (len < XF_PACKET_MIN_LEN || len > XF_PACKET_MAX_LEN) {
+            p->stats.length_errors++;
+            xf__skip1(p);
+            continue;
+        }
+        if (held < len) {
+            *need = len - held;
+            return 0;
+        }
+        if (xf__candidate_ok(p, len)) {
+            xf__emit(p, len, frame);
+            return 1;
+        }
+        p->stats.crc_errors++;
+        if (!p->memo_on) {
+            xf__memo_start(p);
+        }
+        xf__skip1(p);
+    }
+}
+
+XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
+{
+    size_t used = 0;
+    int found = 0;
+    if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
+        return XF_ERR_ARG;
+    }
+    for (;;) {
+        size_t need;
+        size_t take;
+        if (xf__scan(p, frame, &need)) {
+            found = 1;
+            break;
+        }
+        if (used == len) {
+            break;
+        }
+        if (need == 0u) {
+            /* Nothing held: jump over noise to the next possible header. */
+            const uint8_t *hit = (const uint8_t *)memchr(data + used, p->h0, len - used);
+            size_t skip = (hit != NULL) ? (size_t)(hit - (data + used)) : (len - used);
+            p->stats.bytes_skipped += (uint32_t)skip;
+            p->stats.bytes_in += (uint32_t)skip;
+            used += skip;
+            if (hit == NULL) {
+                break;
+            }
+            need = 4; /* header and length: every packet is longer than that */
+        }
+        take = (need < len - used) ? need : (len - used);
+        xf__append(p, data + used, take);
+        p->stats.bytes_in += (uint32_t)take;
+        used += take;
+    }
+    if (consumed != NULL) {
+        *consumed = used;
+    }
+    return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
+}
+
+#endif /* XF_EMIT_DEFINITIONS */
+
+XF_END_DECLS
+
+#endif /* XF_PARSER_H */

@@ -1,0 +1,209 @@
+/*
+ * xf_units.h - physical units <-> raw wire integers, GNSS time, and the
+ * camera-axis transform of vendor appendix 3.
+ *
+ * Saturation policy: every conversion to a raw value returns the nearest
+ * value inside the field's documented range (rounding half away from zero);
+ * NaN becomes 0. Angles that wrap (roll, yaw) are wrapped instead of
+ * clamped. Conversions from raw never fail. No libm is needed.
+ */
+#ifndef XF_UNITS_H
+#define XF_UNITS_H
+
+#include <stdint.h>
+#include "xf_config.h"
+#include "xf_error.h"
+#include "xf_protocol.h"
+
+XF_BEGIN_DECLS
+
+#define XF_GPS_EPOCH_UNIX 315964800LL /**< 1980-01-06T00:00:00Z in Unix seconds */
+#define XF_WEEK_MS 604800000UL       /**< milliseconds in a GNSS week */
+#define XF_LEAP_SECONDS_2017 18      /**< GPS - UTC since 2017-01-01 (pass what is current) */
+
+/** Round @p v to an integer, clamped to [lo, hi]; NaN gives 0 (or the bound nearest 0). */
+XF_API int32_t xf_units_round(double v, int32_t lo, int32_t hi);
+/** @p deg wrapped into [lo, lo + 360). */
+XF_API double xf_units_wrap360(double deg, double lo);
+
+/* host main frame */
+XF_API int16_t xf_carrier_roll_raw(float deg);   /**< wrapped into [-180, 180), 0.01 deg */
+XF_API int16_t xf_carrier_pitch_raw(float deg);  /**< clamped to [-90, 90] */
+XF_API uint16_t xf_carrier_yaw_raw(float deg);   /**< wrapped into [0, 360) */
+XF_API int16_t xf_accel_raw(float mps2);         /**< 0.01 m/s^2, clamped to int16 */
+XF_API int16_t xf_velocity_raw(float mps);       /**< 0.01 m/s, clamped to int16 */
+/** Control angle (Euler or relative), clamped to [-180, 180] deg, 0.01 deg. */
+XF_API int16_t xf_ctrl_angle_raw(float deg);
+/** Control rate: one raw unit is 0.1 deg/s divided by the main screen's zoom (zoom < 1 counts as 1); clamped to [-1500, 1500]. */
+XF_API int16_t xf_ctrl_rate_raw(float dps, float zoom);
+
+/* host sub frame and gaze_geo */
+XF_API int32_t xf_deg7_raw(double deg); /**< 1e-7 deg, clamped to [-180, 180] deg */
+XF_API int32_t xf_mm_raw(double m);     /**< metres to mm, clamped to int32 */
+
+/* GCU frames */
+XF_API float xf_cdeg(int32_t raw);                       /**< 0.01 deg -> deg */
+XF_API float xf_gcu_rate_dps(int16_t raw, uint8_t version); /**< 0.01 deg/s (V0.1) or 0.1 deg/s (V0.2) -> deg/s */
+XF_API int16_t xf_gcu_rate_raw(float dps, uint8_t version); /**< inverse, clamped to int16 */
+XF_API float xf_zoom_x(uint16_t raw);                     /**< 0.1 x -> x */
+XF_API uint16_t xf_zoom_raw(float x);                     /**< x -> 0.1 x, clamped to [0, 65535] */
+XF_API double xf_deg7(int32_t raw);                       /**< 1e-7 deg -> deg */
+/** target_distance in metres; returns 0 and leaves *m alone when there is no valid measurement (raw <= 0). */
+XF_API int xf_distance_m(int32_t raw, float *m);
+/** zoom_to's ZZ for a desired zoom rate: -(rate x 10), rate clamped to [1.0, 3276.8]. */
+XF_API int16_t xf_zoom_to_rate_raw(float rate);
+
+/**
+ * GNSS week and milliseconds of week to Unix time in ms. @p leap_seconds is
+ * GPS - UTC (18 since 2017). XF_ERR_RANGE if week < 0 or ms >= a week.
+ */
+XF_API xf_err xf_gnss_to_unix_ms(int16_t week, uint32_t ms, int leap_seconds, int64_t *unix_ms);
+/** Inverse; XF_ERR_RANGE before the GPS epoch or past week 32767. */
+XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *week, uint32_t *ms);
+
+/**
+ * Vendor appendix 3: the camera's absolute X/Y/Z-axis angles (deg, rotation
+ * order Z-Y-X) to the reported Euler angles: roll = Y, pitch = -X,
+ * yaw = Z + 90 wrapped into [0, 360).
+ */
+XF_API void xf_axes_to_euler(float ax, float ay, float az, float *roll, float *pitch, float *yaw);
+/** Inverse of xf_axes_to_euler; az comes out in [-180, 180). */
+XF_API void xf_euler_to_axes(float roll, float pitch, float yaw, float *ax, float *ay, float *az);
+
+#if XF_EMIT_DEFINITIONS
+
+XF_API int32_t xf_units_round(double v, int32_t lo, int32_t hi)
+{
+    if (v != v) { /* NaN */
+        v = 0.0;
+    }
+    if (v <= (double)lo) {
+        return lo;
+    }
+    if (v >= (double)hi) {
+        return hi;
+    }
+    return (int32_t)((v >= 0.0) ? (v + 0.5) : (v - 0.5));
+}
+
+XF_API double xf_units_wrap360(double deg, double lo)
+{
+    double r;
+    int64_t turns;
+    if (deg != deg || deg > 1e12 || deg < -1e12) {
+        return lo < 0.0 ? 0.0 : lo; /* NaN or absurd: 0 if it is in range */
+    }
+    r = deg - lo;
+    turns = (int64_t)(r / 360.0);
+    r -= (double)turns * 360.0;
+    if (r < 0.0) {
+        r += 360.0;
+    }
+    if (r >= 360.0) {
+        r -= 360.0;
+    }
+    return r + lo;
+}
+
+XF_API int16_t xf_carrier_roll_raw(float deg)
+{
+    int32_t v = xf_units_round(xf_units_wrap360((double)deg, -180.0) * 100.0, -18000, 18000);
+    return (int16_t)((v == 18000) ? -18000 : v); /* 179.999 rounds up to 180.00 = -180.00 */
+}
+
+XF_API int16_t xf_carrier_pitch_raw(float deg) { return (int16_t)xf_units_round((double)deg * 100.0, -9000, 9000); }
+
+XF_API uint16_t xf_carrier_yaw_raw(float deg)
+{
+    int32_t v = xf_units_round(xf_units_wrap360((double)deg, 0.0) * 100.0, 0, 36000);
+    return (uint16_t)((v == 36000) ? 0 : v);
+}
+
+XF_API int16_t xf_accel_raw(float mps2) { return (int16_t)xf_units_round((double)mps2 * 100.0, -32768, 32767); }
+XF_API int16_t xf_velocity_raw(float mps) { return (int16_t)xf_units_round((double)mps * 100.0, -32768, 32767); }
+XF_API int16_t xf_ctrl_angle_raw(float deg) { return (int16_t)xf_units_round((double)deg * 100.0, -18000, 18000); }
+
+XF_API int16_t xf_ctrl_rate_raw(float dps, float zoom)
+{
+    double z = (zoom >= 1.0f) ? (double)zoom : 1.0;
+    return (int16_t)xf_units_round((double)dps * 10.0 * z, -1500, 1500);
+}
+
+XF_API int32_t xf_deg7_raw(double deg) { return xf_units_round(deg * 1e7, -1800000000, 1800000000); }
+XF_API int32_t xf_mm_raw(double m) { return xf_units_round(m * 1000.0, INT32_MIN, INT32_MAX); }
+XF_API float xf_cdeg(int32_t raw) { return (float)raw / 100.0f; }
+
+XF_API float xf_gcu_rate_dps(int16_t raw, uint8_t version)
+{
+    return (float)raw / ((version >= XF_PROTOCOL_V2) ? 10.0f : 100.0f);
+}
+
+XF_API int16_t xf_gcu_rate_raw(float dps, uint8_t version)
+{
+    double scale = (version >= XF_PROTOCOL_V2) ? 10.0 : 100.0;
+    return (int16_t)xf_units_round((double)dps * scale, -32768, 32767);
+}
+
+XF_API float xf_zoom_x(uint16_t raw) { return (float)raw / 10.0f; }
+XF_API uint16_t xf_zoom_raw(float x) { return (uint16_t)xf_units_round((double)x * 10.0, 0, 65535); }
+XF_API double xf_deg7(int32_t raw) { return (double)raw / 1e7; }
+
+XF_API int xf_distance_m(int32_t raw, float *m)
+{
+    if (raw <= 0) {
+        return 0;
+    }
+    if (m != NULL) {
+        *m = (float)raw / 10.0f;
+    }
+    return 1;
+}
+
+XF_API int16_t xf_zoom_to_rate_raw(float rate) { return (int16_t)xf_units_round(-(double)rate * 10.0, -32768, -10); }
+
+XF_API xf_err xf_gnss_to_unix_ms(int16_t week, uint32_t ms, int leap_seconds, int64_t *unix_ms)
+{
+    if (unix_ms == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (week < 0 || ms >= XF_WEEK_MS) {
+        return XF_ERR_RANGE;
+    }
+    *unix_ms = (XF_GPS_EPOCH_UNIX - (int64_t)leap_seconds) * 1000 + (int64_t)week * (int64_t)XF_WEEK_MS + (int64_t)ms;
+    return XF_OK;
+}
+
+XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *week, uint32_t *ms)
+{
+    int64_t gps_ms;
+    if (week == NULL || ms == NULL) {
+        return XF_ERR_ARG;
+    }
+    gps_ms = unix_ms - (XF_GPS_EPOCH_UNIX - (int64_t)leap_seconds) * 1000;
+    if (gps_ms < 0 || gps_ms / (int64_t)XF_WEEK_MS > 32767) {
+        return XF_ERR_RANGE;
+    }
+    *week = (int16_t)(gps_ms / (int64_t)XF_WEEK_MS);
+    *ms = (uint32_t)(gps_ms % (int64_t)XF_WEEK_MS);
+    return XF_OK;
+}
+
+XF_API void xf_axes_to_euler(float ax, float ay, float az, float *roll, float *pitch, float *yaw)
+{
+    if (roll != NULL) *roll = ay;
+    if (pitch != NULL) *pitch = -ax;
+    if (yaw != NULL) *yaw = (float)xf_units_wrap360((double)az + 90.0, 0.0);
+}
+
+XF_API void xf_euler_to_axes(float roll, float pitch, float yaw, float *ax, float *ay, float *az)
+{
+    if (ax != NULL) *ax = -pitch;
+    if (ay != NULL) *ay = roll;
+    if (az != NULL) *az = (float)xf_units_wrap360((double)yaw - 90.0, -180.0);
+}
+
+#endif /* XF_EMIT_DEFINITIONS */
+
+XF_END_DECLS
+
+#endif /* XF_UNITS_H */
