@@ -16,4 +16,10 @@ printf '#include "xfgcu/xfgcu.h"\nint xf_mcu_probe(const uint8_t *b, size_t n);\
 arm-none-eabi-gcc "${flags[@]}" -c "$out/probe.c" -o "$out/probe.o"
 echo "codec for Cortex-M4 (-Os, whole codec incl. unit helpers; a firmware links only what it calls):"
 arm-none-eabi-size "$out/xf_codec.o" "$out/xf_codec_hf.o" "$out/xf_codec_crc256.o" "$out/xf_codec_max84.o"
-echo "sizeof(xf_parser): $(printf '#include "xfgcu/xfgcu.h"\nchar s[sizeof(xf_parser)];\n' | arm-none-eabi-gcc -Iinclude -x c -std=c99 -c - -o "$out/s.o" && arm-none-eabi-nm -S "$out/s.o" | awk '{print strtonum("0x"$2)}') bytes (XF_PACKET_MAX_LEN=255)"
+# sizeof(xf_parser) on the target: the size of a sized symbol, read from the object file
+printf '#include "xfgcu/xfgcu.h"\nchar xf_parser_size_probe[sizeof(xf_parser)];\n' > "$out/parser_size.c"
+for max in 255 84; do
+  arm-none-eabi-gcc "${flags[@]}" -DXF_PACKET_MAX_LEN=$max -c "$out/parser_size.c" -o "$out/parser_size.o"
+  hex=$(arm-none-eabi-nm -S "$out/parser_size.o" | awk '/xf_parser_size_probe/ {print $2}')
+  echo "RAM of one xf_parser with XF_PACKET_MAX_LEN=$max: $((16#$hex)) bytes"
+done

@@ -10,8 +10,12 @@
  * length. The earliest candidate is examined first; when its CRC fails, the
  * parser rescans the bytes it already holds from the candidate's second
  * byte on, so an intact frame hidden after noise, a false header or a
- * bogus length is always recovered. A bogus length delays the frames after
- * it until that many bytes have arrived (at most 255).
+ * bogus length is always recovered. A bogus length (a bit flip in a length
+ * byte, say) would hold back the frames behind it until that many bytes
+ * had arrived; so while the earliest candidate is incomplete, the first
+ * candidate after it that would end sooner (a contender) is checked as
+ * soon as it is complete, and returned if intact. Which frame comes out
+ * never depends on how the bytes were chunked.
  *
  * Cost. On a clean stream every byte is copied once and CRC'd once. After a
  * CRC failure the parser keeps, for each held byte, the CRC of the stream
@@ -62,10 +66,12 @@ typedef struct xf_parser {
     uint8_t ring[XF_PARSER_RING];
     uint16_t memo[XF_PARSER_RING];    /* CRC of the stream before each held byte (memo mode) */
     uint8_t scratch[XF_PACKET_MAX_LEN]; /* a frame that wraps round the ring is copied here */
-    uint32_t head;     /* stream position of the first held byte */
+    uint32_t head;     /* stream position of the first held byte: the earliest candidate */
     uint32_t end;      /* one past the last held byte */
+    uint32_t look;     /* positions in (head, look) are examined: no candidate, or a failed contender */
     uint16_t memo_crc; /* CRC of the stream before `end` (memo mode) */
     uint8_t memo_on;
+    uint8_t look_done; /* no contender can follow for this head */
     uint8_t h0, h1;    /* header bytes of the direction parsed */
     xf_parser_stats stats;
 } xf_parser;
@@ -111,6 +117,7 @@ XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir)
         return XF_ERR_ARG;
     }
     memset(p, 0, sizeof(*p));
+    p->look = 1;
     p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
     p->h1 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
     return XF_OK;
@@ -123,6 +130,8 @@ static inline void xf__parser_empty(xf_parser *p)
 {
     p->head = 0;
     p->end = 0;
+    p->look = 1;
+    p->look_done = 0;
     p->memo_on = 0;
 }
 
@@ -178,24 +187,34 @@ static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
     p->end += (uint32_t)n;
 }
 
-/* Is the candidate of length len at head intact? */
-static inline int xf__candidate_ok(const xf_parser *p, size_t len)
+/* Is the candidate of length len at pos intact? Needs memo mode unless pos is head. */
+static inline int xf__intact(const xf_parser *p, uint32_t pos, size_t len)
 {
-    uint32_t crc_pos = p->head + (uint32_t)len - 2u;
+    uint32_t crc_pos = pos + (uint32_t)len - 2u;
     uint16_t want = (uint16_t)(((uint16_t)xf__rb(p, crc_pos) << 8) | xf__rb(p, crc_pos + 1u));
     uint16_t got;
     if (p->memo_on) {
         got = (uint16_t)(p->memo[crc_pos & XF__RMASK] ^
-                         xf__crc_shift(p->memo[p->head & XF__RMASK], (unsigned)(len - 2u)));
+                         xf__crc_shift(p->memo[pos & XF__RMASK], (unsigned)(len - 2u)));
     } else {
-        got = xf__ring_crc(p, p->head, len - 2u);
+        got = xf__ring_crc(p, pos, len - 2u);
     }
     return got == want;
 }
 
-static inline void xf__emit(xf_parser *p, size_t len, xf_frame *frame)
+/* Drop the held bytes before pos (they belong to no frame). */
+static inline void xf__drop_to(xf_parser *p, uint32_t pos)
 {
-    size_t i0 = p->head & XF__RMASK;
+    p->stats.bytes_skipped += (uint32_t)(pos - p->head);
+    p->head = pos;
+    p->look = pos + 1u;
+    p->look_done = 0;
+}
+
+/* Return the frame of length len at pos and drop everything before it. */
+static inline void xf__emit(xf_parser *p, uint32_t pos, size_t len, xf_frame *frame)
+{
+    size_t i0 = pos & XF__RMASK;
     if (i0 + len <= XF_PARSER_RING) {
         frame->data = p->ring + i0;
     } else {
@@ -205,63 +224,128 @@ static inline void xf__emit(xf_parser *p, size_t len, xf_frame *frame)
         frame->data = p->scratch;
     }
     frame->len = len;
-    p->head += (uint32_t)len;
+    xf__drop_to(p, pos);
+    p->head = pos + (uint32_t)len;
+    p->look = p->head + 1u;
     p->stats.frames++;
 }
 
-static inline void xf__skip1(xf_parser *p)
+#define XF__NO 0   /* not a candidate */
+#define XF__YES 1  /* a candidate; *len set */
+#define XF__WAIT 2 /* cannot tell yet; *need more bytes */
+
+/* Is there a candidate (header pair, valid length) at pos? */
+static inline int xf__candidate(xf_parser *p, uint32_t pos, size_t *len, size_t *need)
 {
-    p->head++;
-    p->stats.bytes_skipped++;
+    size_t avail = (size_t)(p->end - pos);
+    if (xf__rb(p, pos) != p->h0) {
+        return XF__NO;
+    }
+    if (avail < 2u) {
+        *need = 2u - avail;
+        return XF__WAIT;
+    }
+    if (xf__rb(p, pos + 1u) != p->h1) {
+        return XF__NO;
+    }
+    if (avail < 4u) {
+        *need = 4u - avail;
+        return XF__WAIT;
+    }
+    *len = (size_t)xf__rb(p, pos + 2u) | ((size_t)xf__rb(p, pos + 3u) << 8);
+    if (*len < XF_PACKET_MIN_LEN || *len > XF_PACKET_MAX_LEN) {
+        p->stats.length_errors++; /* each position is examined once, so counted once */
+        return XF__NO;
+    }
+    return XF__YES;
+}
+
+/* Examine positions after head for a contender: the first candidate that
+ * ends before head's candidate (ending at pend). Each position is examined
+ * once per head. Returns 1 with a frame, 0 when done or *need > 0. */
+static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size_t *need)
+{
+    *need = 0;
+    /* A contender starts at least 72 bytes before pend: a clean reply of
+     * 72 or 73 bytes never has one, so the fast path costs nothing. */
+    while (!p->look_done && (uint32_t)(pend - p->look) > XF_PACKET_MIN_LEN) {
+        size_t len = 0;
+        int r;
+        if (p->look == p->end) {
+            *need = 1;
+            return 0;
+        }
+        r = xf__candidate(p, p->look, &len, need);
+        if (r == XF__WAIT) {
+            return 0;
+        }
+        if (r == XF__NO) {
+            p->look++;
+            continue;
+        }
+        if ((uint32_t)(pend - p->look) <= len) {
+            p->look_done = 1; /* the first candidate ends no sooner: leave it to the rescan */
+            break;
+        }
+        if ((size_t)(p->end - p->look) < len) {
+            *need = len - (size_t)(p->end - p->look);
+            return 0;
+        }
+        if (!p->memo_on) {
+            xf__memo_start(p); /* from here on every check is O(1) */
+        }
+        if (xf__intact(p, p->look, len)) {
+            xf__emit(p, p->look, len, frame);
+            return 1;
+        }
+        p->stats.crc_errors++;
+        p->look++;
+    }
+    p->look_done = 1;
+    return 0;
 }
 
 /* Work through the held bytes. Returns 1 with a frame, or 0 with *need =
- * how many more bytes the earliest candidate needs (0: nothing held). */
+ * how many more bytes progress needs (0: nothing held). */
 static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
 {
     for (;;) {
         size_t held = (size_t)(p->end - p->head);
-        size_t len;
+        size_t len = 0, cneed = 0;
+        int r;
         if (held == 0u) {
             xf__parser_empty(p);
             *need = 0;
             return 0;
         }
-        if (xf__rb(p, p->head) != p->h0) {
-            xf__skip1(p);
-            continue;
-        }
-        if (held < 2u) {
-            *need = 2u - held;
+        r = xf__candidate(p, p->head, &len, need);
+        if (r == XF__WAIT) {
             return 0;
         }
-        if (xf__rb(p, p->head + 1u) != p->h1) {
-            xf__skip1(p);
+        if (r == XF__NO) {
+            xf__drop_to(p, p->head + 1u);
             continue;
         }
-        if (held < 4u) {
-            *need = 4u - held;
-            return 0;
-        }
-        len = (size_t)xf__rb(p, p->head + 2u) | ((size_t)xf__rb(p, p->head + 3u) << 8);
-        if (len < XF_PACKET_MIN_LEN || len > XF_PACKET_MAX_LEN) {
-            p->stats.length_errors++;
-            xf__skip1(p);
-            continue;
+        if (xf__contend(p, p->head + (uint32_t)len, frame, &cneed)) {
+            return 1;
         }
         if (held < len) {
-            *need = len - held;
+            /* Ask for no more than the nearer of the two ends, so that
+             * `consumed` stops exactly at the end of whichever frame wins. */
+            *need = (cneed != 0u && cneed < len - held) ? cneed : len - held;
             return 0;
         }
-        if (xf__candidate_ok(p, len)) {
-            xf__emit(p, len, frame);
+        if (xf__intact(p, p->head, len)) {
+            xf__emit(p, p->head, len, frame);
             return 1;
         }
         p->stats.crc_errors++;
         if (!p->memo_on) {
             xf__memo_start(p);
         }
-        xf__skip1(p);
+        /* Positions up to `look` were examined already: no candidate there,
+         * or a contender that failed. Jump over them. */
+        xf__drop_to(p, (p->look_done || p->look > p->head + 1u) ? p->look : p->head + 1u);
     }
 }
 
