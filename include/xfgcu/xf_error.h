@@ -1,7 +1,8 @@
 /*
  * xf_error.h - the one error enum of xfgcu.
  *
- * Zero is success, every error is negative. The code says who is at fault:
+ * Zero is success, every error is negative, and a positive value is a
+ * success with a warning. The code says who is at fault:
  * the caller (ARG, NO_SPACE, RANGE), the bytes received (HEADER, LENGTH, CRC,
  * TRUNCATED), or the outside world (IO, TIMEOUT, CLOSED, ...). The value -1
  * is skipped so that a stray "-1" from other code is never taken for ours.
@@ -15,6 +16,8 @@ XF_BEGIN_DECLS
 
 typedef enum xf_err {
     XF_OK = 0,
+    /* success with a warning (positive) */
+    XF_WARN_RATE = 1,        /**< accepted, but outside the 30-50 Hz the vendor recommends */
     /* the caller */
     XF_ERR_ARG = -2,         /**< invalid argument (NULL pointer, bad enum): a bug in the caller */
     XF_ERR_NO_SPACE = -3,    /**< the output buffer is too small */
@@ -44,6 +47,7 @@ XF_API const char *xf_strerror(int err)
 {
     switch (err) {
     case XF_OK: return "ok";
+    case XF_WARN_RATE: return "rate outside the recommended 30-50 Hz";
     case XF_ERR_ARG: return "invalid argument";
     case XF_ERR_NO_SPACE: return "output buffer too small";
     case XF_ERR_RANGE: return "value out of range";

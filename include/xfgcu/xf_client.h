@@ -1,0 +1,289 @@
+/*
+ * xf_client.h - the host side of the protocol: the 30-50 Hz question-and-
+ * answer loop, carrier data, control, commands, telemetry, link health.
+ *
+ * Portable C over xf_hal: no OS, no heap, no threads, no globals. The
+ * application owns the xf_client storage and drives it by calling
+ * xf_client_step(c, now_ms) often enough (at least at the packet rate;
+ * xf_client_next_deadline() says when next). Any number of clients can
+ * live in one process; a client is not thread-safe.
+ *
+ * Every packet is built from the latest inputs:
+ *  - carrier state (attitude, accelerations without gravity, velocities):
+ *    sent with ins_valid only while younger than carrier_max_age_ms,
+ *    otherwise zeros with ins_valid clear. Never invented.
+ *  - GNSS (position, satellites, week/ms, relative height): the sub frame
+ *    is filled only while younger than gnss_max_age_ms, else all zero.
+ *  - control quantities, with ctrl_valid: rates (deg/s) or angles (deg),
+ *    whose meaning is the gimbal mode's (head lock: rates; euler: Euler
+ *    angles; angle_control/fpv: angles relative to the carrier).
+ *
+ * Commands run the way the protocol wants: null packets by default; a
+ * command is sent in every packet until a reply carries its execution
+ * state; then null packets again, so two commands of the same order are
+ * always separated by a null. A reply for the command's order is taken
+ * only once a reply to an earlier, different packet has come back (so a
+ * late reply to a previous command of the same order is not mistaken for
+ * this one's). Calibration's "operating" keeps it going until its final
+ * state. Results: ok, failed (with the failed-camera mask), timeout,
+ * link lost; by callback and by polling the command's id.
+ *
+ * Rate watchdog: rates not refreshed for rate_watchdog_ms are replaced by
+ * zero rates, so a stalled application never leaves a gimbal spinning.
+ */
+#ifndef XF_CLIENT_H
+#define XF_CLIENT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "xf_command.h"
+#include "xf_config.h"
+#include "xf_error.h"
+#include "xf_hal.h"
+#include "xf_packet.h"
+#include "xf_parser.h"
+
+XF_BEGIN_DECLS
+
+#ifndef XF_CLIENT_QUEUE
+#define XF_CLIENT_QUEUE 8 /**< commands waiting to run, per client */
+#endif
+#ifndef XF_CLIENT_RESULTS
+#define XF_CLIENT_RESULTS 8 /**< finished commands kept for polling by id */
+#endif
+#if XF_CLIENT_QUEUE < 1 || XF_CLIENT_QUEUE > 64 || XF_CLIENT_RESULTS < 1 || XF_CLIENT_RESULTS > 64
+#error "XF_CLIENT_QUEUE and XF_CLIENT_RESULTS must be in [1, 64]"
+#endif
+
+/** Link health. */
+typedef enum xf_link_state {
+    XF_LINK_DOWN = 0,  /**< no valid reply for down_ms (or never), or the transport is closed */
+    XF_LINK_STALE = 1, /**< no valid reply for stale_ms */
+    XF_LINK_UP = 2
+} xf_link_state;
+
+/** Where a command is. */
+typedef enum xf_cmd_status {
+    XF_CMD_UNKNOWN = 0,   /**< no such id (never submitted, or forgotten) */
+    XF_CMD_QUEUED = 1,    /**< waiting behind other commands */
+    XF_CMD_SENDING = 2,   /**< in every packet, no execution state yet */
+    XF_CMD_OPERATING = 3, /**< the GCU said "operating" (calibration); final state to come */
+    XF_CMD_OK = 4,
+    XF_CMD_FAILED = 5,    /**< the GCU said failure; see failed_cameras */
+    XF_CMD_TIMEOUT = 6,   /**< no execution state within the timeout */
+    XF_CMD_LINK_LOST = 7, /**< the link went down before it finished */
+    XF_CMD_CANCELLED = 8  /**< removed by xf_client_cancel_all */
+} xf_cmd_status;
+
+/** A command's outcome (or progress, for XF_CMD_OPERATING). */
+typedef struct xf_cmd_result {
+    uint32_t id;
+    uint8_t order;
+    uint8_t status;         /**< xf_cmd_status */
+    uint8_t state;          /**< the GCU's state byte, when it sent one */
+    uint8_t failed_cameras; /**< for orders that report a mask */
+    uint16_t packets;       /**< packets that carried the command */
+    uint32_t elapsed_ms;    /**< from first sent to this result */
+} xf_cmd_result;
+
+/** The gimbal's state in physical units, with when each part last arrived. */
+typedef struct xf_telemetry {
+    uint8_t version;          /**< protocol version the GCU speaks */
+    uint8_t gimbal_mode;      /**< xf_mode */
+    uint16_t pod_status;      /**< XF_POD_* */
+    float cam_roll_deg, cam_pitch_deg, cam_yaw_deg;
+    float rel_x_deg, rel_y_deg, rel_z_deg;
+    float rate_x_dps, rate_y_dps, rate_z_dps; /**< unit picked by version */
+    int16_t target_offset_x, target_offset_y; /**< [-1000, 1000] */
+    /* sub frame */
+    uint8_t hw_version, fw_version, gimbal_code;
+    const char *model;        /**< from gimbal_code, NULL if unknown */
+    uint16_t error_code;
+    uint8_t distance_valid;
+    float target_distance_m;
+    double target_lat_deg, target_lon_deg;
+    float target_alt_m;
+    float zoom_cam1, zoom_cam2; /**< x */
+    uint8_t thermal_status;     /**< V0.2 */
+    uint16_t camera_status;     /**< V0.2 */
+    int8_t time_zone;           /**< V0.2 */
+    /* freshness: xf_client_step's clock; 0 with have_* clear means never */
+    uint8_t have_main, have_sub;
+    uint32_t main_ms;           /**< when the main frame was last received */
+    uint32_t sub_ms;            /**< when a sub frame (sub_header 0x01) was last received */
+    xf_gcu_packet last;         /**< the last packet as received */
+} xf_telemetry;
+
+/** Link health figures. */
+typedef struct xf_health {
+    uint8_t link;             /**< xf_link_state */
+    uint8_t watchdog_active;  /**< zero rates are being sent because rates went stale */
+    uint32_t last_rx_ms;      /**< when the last valid reply arrived */
+    uint32_t packets_sent;
+    uint32_t replies;         /**< valid GCU packets received */
+    uint32_t replies_missing; /**< packets sent minus replies, over the last full second */
+    uint16_t reply_rate_hz;   /**< replies in the last full second */
+    uint32_t send_errors;     /**< HAL writes that failed */
+    uint32_t watchdog_trips;
+    xf_parser_stats parser;   /**< the receive parser's counters */
+} xf_health;
+
+/** Carrier state; gravity excluded from the accelerations. */
+typedef struct xf_carrier {
+    float roll_deg, pitch_deg, yaw_deg;  /**< absolute Euler angles (vendor appendix 2 frame) */
+    float accel_north, accel_east, accel_up; /**< m/s^2, 0 when static or in steady flight */
+    float vel_north, vel_east, vel_up;   /**< m/s */
+} xf_carrier;
+
+/** GNSS data for the sub frame. */
+typedef struct xf_gnss {
+    double latitude_deg, longitude_deg;
+    double altitude_m;
+    uint8_t satellites;
+    int16_t week;
+    uint32_t ms_of_week;
+    double relative_height_m; /**< 0 when not needed */
+} xf_gnss;
+
+typedef void (*xf_on_result_fn)(void *user, const xf_cmd_result *result);
+typedef void (*xf_on_telemetry_fn)(void *user, const xf_telemetry *telemetry);
+typedef void (*xf_on_link_fn)(void *user, xf_link_state state);
+/** Every packet sent and received, raw (for tracing and recording). */
+typedef void (*xf_on_bytes_fn)(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
+
+typedef struct xf_client_config {
+    uint8_t protocol_version;        /**< sent in byte 4; default 1 */
+    uint16_t rate_hz;                /**< packets per second, 1..200; default 50 (30-50 recommended) */
+    uint32_t carrier_max_age_ms;     /**< default 200 */
+    uint32_t gnss_max_age_ms;        /**< default 2000 */
+    uint32_t stale_ms;               /**< default 250 */
+    uint32_t down_ms;                /**< default 1000 */
+    uint32_t command_timeout_ms;     /**< no execution state within this: timeout; default 1000 */
+    uint32_t operating_timeout_ms;   /**< after "operating", the final state within this; default 60000 */
+    uint32_t rate_watchdog_ms;       /**< default 500; 0 = off (not recommended) */
+    xf_on_result_fn on_result;
+    xf_on_telemetry_fn on_telemetry;
+    xf_on_link_fn on_link;
+    xf_on_bytes_fn on_bytes;
+    void *user;
+} xf_client_config;
+
+typedef struct xf_cmd_slot {
+    xf_command cmd;
+    uint32_t id;
+} xf_cmd_slot;
+
+/** Client state: treat the members as private; use the functions. */
+typedef struct xf_client {
+    xf_client_config cfg;
+    xf_hal hal;
+    xf_parser parser;
+    xf_telemetry tele;
+    xf_health health;
+    /* inputs */
+    xf_carrier carrier;
+    uint32_t carrier_ms;
+    uint8_t have_carrier;
+    xf_gnss gnss;
+    uint32_t gnss_ms;
+    uint8_t have_gnss;
+    uint8_t ctrl_kind; /* 0 none, 1 rates, 2 angles */
+    float ctrl[3];     /* roll, pitch, yaw */
+    uint32_t ctrl_ms;
+    /* streamed external track */
+    uint8_t stream_on;
+    xf_command stream;
+    /* commands */
+    xf_cmd_slot queue[XF_CLIENT_QUEUE];
+    uint8_t q_head, q_count;
+    uint8_t active;           /* queue[q_head] is being sent */
+    uint8_t ignored;          /* replies of its order still to ignore (may answer an earlier command) */
+    uint8_t guard_order;      /* order of the last finished command */
+    uint8_t guard_open;       /* no reply of another order seen since it finished */
+    uint8_t operating;
+    uint8_t nulls_owed;       /* null packets to send before the next command */
+    uint16_t packets;
+    uint32_t started_ms, operating_ms;
+    uint32_t next_id;
+    xf_cmd_result results[XF_CLIENT_RESULTS];
+    uint8_t r_next;
+    /* timing */
+    uint32_t period_ms;
+    uint32_t next_send_ms;
+    uint8_t started;
+    uint8_t hal_closed;
+    uint32_t window_start_ms, window_sent, window_replies;
+    uint32_t now_ms;
+} xf_client;
+
+/** Defaults, as documented in xf_client_config. */
+void xf_client_config_init(xf_client_config *cfg);
+
+/**
+ * Start a client on @p hal (copied). @p cfg NULL means defaults.
+ * @return XF_OK, XF_WARN_RATE (accepted; rate outside 30-50 Hz),
+ *   XF_ERR_ARG (NULL, incomplete hal), XF_ERR_RANGE (rate 0 or > 200,
+ *   version 0).
+ */
+xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *cfg);
+
+/**
+ * Do what is due at @p now_ms: read and parse what arrived, update
+ * telemetry and health, resolve commands, send the next packet when due.
+ * Callbacks run from here. Returns XF_OK, or the transport's error of this
+ * step (XF_ERR_CLOSED while the link is down; the client keeps going).
+ */
+xf_err xf_client_step(xf_client *c, uint32_t now_ms);
+
+/** When the next packet is due (for a poll timeout). */
+uint32_t xf_client_next_deadline(const xf_client *c);
+
+/* ---- inputs ------------------------------------------------------------------ */
+
+void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now_ms);
+void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
+/** Desired angular velocities (deg/s), scaled by the zoom the GCU reports. Subject to the watchdog. */
+void xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms);
+/** Desired angles (deg): Euler or relative to the carrier, as the mode says. */
+void xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms);
+/** No control quantities (ctrl_valid clear). */
+void xf_client_clear_control(xf_client *c);
+
+/* ---- commands ---------------------------------------------------------------- */
+
+/**
+ * Queue @p cmd (checked against the protocol version). *id (may be NULL)
+ * identifies it for xf_client_command_status and the result callback.
+ * @return XF_OK, XF_ERR_ARG, XF_ERR_RANGE / XF_ERR_UNSUPPORTED (from
+ *   xf_command_check; *bad_field names the member), XF_ERR_BUSY (queue full).
+ */
+xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const char **bad_field);
+
+/** Status of command @p id; *result (may be NULL) gets its result once finished. */
+xf_cmd_status xf_client_command_status(const xf_client *c, uint32_t id, xf_cmd_result *result);
+
+/** Commands queued or running. */
+size_t xf_client_pending(const xf_client *c);
+
+/** Drop every queued command (XF_CMD_CANCELLED); the one running is cancelled too. */
+void xf_client_cancel_all(xf_client *c);
+
+/**
+ * External track is streamed, not run once: while on, every packet that
+ * carries no other command carries order 0x1B with these offsets.
+ * xf_client_external_track_stop() sends the exit (value 0) as a command.
+ */
+xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16_t dy);
+xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id);
+
+/* ---- state ------------------------------------------------------------------- */
+
+const xf_telemetry *xf_client_telemetry(const xf_client *c);
+const xf_health *xf_client_health(const xf_client *c);
+xf_link_state xf_client_link(const xf_client *c);
+const char *xf_link_state_name(xf_link_state s);
+const char *xf_cmd_status_name(xf_cmd_status s);
+
+XF_END_DECLS
+
+#endif /* XF_CLIENT_H */
