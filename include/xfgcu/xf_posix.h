@@ -162,6 +162,62 @@ void xf_tcp_close(xf_tcp *t);
 /** Fill @p hal. Writes block at most 100 ms for a full socket buffer, else the connection is dropped. */
 void xf_tcp_hal(xf_tcp *t, xf_hal *hal);
 
+/* ---- the GCU side: links for the simulator ----------------------------------- */
+
+typedef enum xf_simlink_kind { XF_SIMLINK_PTY = 0, XF_SIMLINK_UDP = 1, XF_SIMLINK_TCP = 2 } xf_simlink_kind;
+
+/**
+ * A simulated GCU's end of a link: a pseudo-terminal's master (the host
+ * opens the slave path), a UDP socket on the GCU's port answering whoever
+ * sent the last packet, or a TCP server accepting one client at a time (a
+ * second client is refused, like the real GCU).
+ */
+typedef struct xf_simlink {
+    xf_simlink_kind kind;
+    int fd;                 /**< pty master, UDP socket or TCP listener; -1 when closed */
+    int slave_fd;           /**< pty: a slave descriptor held open so the master never reads EIO */
+    int client_fd;          /**< TCP: the connected host, -1 if none */
+    char pty_path[64];      /**< pty: the slave's path */
+    char link_path[256];    /**< pty: a stable symlink to the slave ("" if none) */
+    char bind_host[64];
+    uint16_t port;          /**< UDP / TCP: the port bound */
+    struct sockaddr_storage peer;
+    socklen_t peer_len;     /**< UDP: 0 until a packet arrived */
+    uint8_t down;           /**< disconnected by xf_simlink_disconnect */
+    uint32_t up_at;
+    xf_link_stats stats;
+    xf_os_error error;
+} xf_simlink;
+
+/** A new pty; its slave path is in l->pty_path, and @p symlink_path (may be NULL) points to it. */
+xf_err xf_simlink_open_pty(xf_simlink *l, const char *symlink_path);
+/** Listen for UDP on @p host (NULL: 127.0.0.1) : @p port (0: any free, then l->port). */
+xf_err xf_simlink_open_udp(xf_simlink *l, const char *host, uint16_t port);
+/** TCP server on @p host (NULL: 127.0.0.1) : @p port (0: any free). */
+xf_err xf_simlink_open_tcp(xf_simlink *l, const char *host, uint16_t port);
+void xf_simlink_hal(xf_simlink *l, xf_hal *hal);
+/**
+ * Fault injection: drop the host now and come back after @p ms: the pty
+ * hangs up (a new pty, the symlink repointed), the TCP connection is
+ * closed and new ones refused meanwhile, UDP goes silent.
+ */
+void xf_simlink_disconnect(xf_simlink *l, uint32_t ms);
+void xf_simlink_close(xf_simlink *l);
+
+/* ---- many clients, one thread --------------------------------------------------- */
+
+struct xf_client;
+struct xf_sim;
+
+/**
+ * One round of a poll loop: wait (at most @p max_wait_ms) until a link of
+ * any client or simulator is readable or a client's next packet is due,
+ * then step every client and simulator. Call it in a loop; the clients
+ * stay independent (no shared state). Returns XF_OK or XF_ERR_IO (poll).
+ */
+xf_err xf_posix_poll(struct xf_client *const *clients, size_t n_clients, struct xf_sim *const *sims, size_t n_sims,
+                     int max_wait_ms);
+
 XF_END_DECLS
 
 #endif /* XF_POSIX_H */
