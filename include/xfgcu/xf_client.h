@@ -42,6 +42,7 @@
 #include "xf_hal.h"
 #include "xf_packet.h"
 #include "xf_parser.h"
+#include "xf_units.h"
 
 XF_BEGIN_DECLS
 
@@ -244,7 +245,7 @@ void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
 /** Desired angular velocities (deg/s), scaled by the zoom the GCU reports. Subject to the watchdog. */
 void xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms);
-/** Desired angles (deg): Euler or relative to the carrier, as the mode says. */
+/** Desired angles (deg): Euler or relative to the carrier, as the mode says. Roll and yaw are wrapped into [-180, 180), pitch is clamped to [-180, 180]. */
 void xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms);
 /** No control quantities (ctrl_valid clear). */
 void xf_client_clear_control(xf_client *c);
