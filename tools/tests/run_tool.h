@@ -1,0 +1,44 @@
+/*
+ * run_tool.h - run the built xfgcu binary (path: XFGCU_EXE) with given
+ * arguments and stdin, and collect its exit status, stdout and stderr.
+ */
+#ifndef XFGCU_RUN_TOOL_H
+#define XFGCU_RUN_TOOL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct tool_result {
+    int status; /* exit code, or 128 + signal */
+    char *out;  /* NUL-terminated */
+    size_t out_len;
+    char *err;  /* NUL-terminated */
+    size_t err_len;
+} tool_result;
+
+/** Run xfgcu with @p argc arguments (argv[0] not included) and @p input on stdin (NULL: empty). */
+tool_result run_tool_argv(int argc, const char *const *args, const char *input);
+/** Same with the arguments listed, NULL-terminated. */
+tool_result run_tool(const char *input, ...);
+void tool_result_free(tool_result *r);
+
+/** Number of lines (newline-terminated) in @p text. */
+size_t count_lines(const char *text);
+/**
+ * Assert the usual failure: @p status, nothing on stdout, and one stderr
+ * line starting "xfgcu: " that contains every needle (NULL-terminated list).
+ */
+void assert_failure(const tool_result *r, int status, ...);
+
+/** Uppercase hex with single spaces and a newline, as `encode` prints. */
+void hex_line(const uint8_t *bytes, size_t n, char *buf);
+/** Fix the length field and CRC of a packet of @p len bytes. */
+void seal_packet(uint8_t *bytes, size_t len);
+
+/** The appendix-1 packet of the vendor document (gcu-protocol.md section 9.1). */
+extern const uint8_t appendix1[72];
+#define APPENDIX1_HEX                                                                                                  \
+    "A8 E5 48 00 01 00 00 64 00 9C FF 05 94 FB 65 00 C0 5D 70 00 90 FF 70 00 40 80 C0 F7 40 80 01 00 00 00 00 00 00 "  \
+    "01 24 F2 DF 65 16 EE AA 16 A3 A0 00 00 13 B0 0C 06 15 E6 08 58 2F 00 00 00 00 00 00 00 00 00 00 00 E9 D4"
+
+#endif /* XFGCU_RUN_TOOL_H */

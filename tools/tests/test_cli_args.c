@@ -1,0 +1,195 @@
+/*
+ * test_cli_args.c - the program's shape: help, version, link options,
+ * unknown commands and options, and the online commands not built yet.
+ * Every failure is exit 2 with one "xfgcu: ..." line naming the culprit.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "run_tool.h"
+#include "xfgcu/xfgcu.h"
+
+static void assert_ok_containing(tool_result *r, const char *needle)
+{
+    if (r->status != 0 || strstr(r->out, needle) == NULL || r->err_len != 0u) {
+        print_error("status %d\nstdout: %s\nstderr: %s\n", r->status, r->out, r->err);
+        fail();
+    }
+}
+
+static void test_version(void **state)
+{
+    tool_result r = run_tool(NULL, "--version", NULL);
+    (void)state;
+    assert_int_equal(r.status, 0);
+    assert_string_equal(r.out, "xfgcu " XF_VERSION_STRING "\n");
+    tool_result_free(&r);
+}
+
+static void test_help(void **state)
+{
+    static const char *const names[] = {"decode", "encode", "send", "point", "rate", "monitor",
+                                        "sim", "demo", "record", "replay", "--baud", "--protocol"};
+    tool_result r = run_tool(NULL, "--help", NULL);
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
+        assert_ok_containing(&r, names[i]);
+    }
+    tool_result_free(&r);
+}
+
+static void test_command_help(void **state)
+{
+    tool_result r = run_tool(NULL, "decode", "--help", NULL);
+    (void)state;
+    assert_ok_containing(&r, "usage: xfgcu decode");
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "--help", NULL);
+    assert_ok_containing(&r, "zoom-to");
+    assert_ok_containing(&r, "--rate R");
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "zoom-to", "--help", NULL);
+    assert_ok_containing(&r, "usage: xfgcu encode [--protocol 1|2] zoom-to (--rate R | --fraction N)");
+    tool_result_free(&r);
+}
+
+static void test_no_command(void **state)
+{
+    tool_result r = run_tool(NULL, NULL);
+    (void)state;
+    assert_failure(&r, 2, "no command", NULL);
+    tool_result_free(&r);
+}
+
+static void test_unknown_command_and_option(void **state)
+{
+    tool_result r = run_tool(NULL, "frobnicate", NULL);
+    (void)state;
+    assert_failure(&r, 2, "unknown command 'frobnicate'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--bogus", "decode", NULL);
+    assert_failure(&r, 2, "unknown option '--bogus'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "zoom-to", NULL);
+    assert_failure(&r, 2, "'zoom-to'", "xfgcu encode zoom-to", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "decode", "--bogus", NULL);
+    assert_failure(&r, 2, "decode: unknown option '--bogus'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "--bogus", NULL);
+    assert_failure(&r, 2, "encode: unknown option '--bogus'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "frobnicate", NULL);
+    assert_failure(&r, 2, "unknown command 'frobnicate'", NULL);
+    tool_result_free(&r);
+}
+
+static void test_baud(void **state)
+{
+    static const char *const good[] = {"115200", "250000", "500000", "1000000"};
+    static const char *const bad[] = {"9600", "0", "-115200", "fast", "115200x", "2000000"};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(good) / sizeof(good[0]); i++) {
+        tool_result r = run_tool(NULL, "--baud", good[i], "decode", APPENDIX1_HEX, NULL);
+        assert_int_equal(r.status, 0);
+        tool_result_free(&r);
+    }
+    for (i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+        tool_result r = run_tool(NULL, "--baud", bad[i], "decode", APPENDIX1_HEX, NULL);
+        assert_failure(&r, 2, "--baud", bad[i], "115200, 250000, 500000 or 1000000", NULL);
+        tool_result_free(&r);
+    }
+    {
+        tool_result r = run_tool(NULL, "--baud=250000", "decode", APPENDIX1_HEX, NULL);
+        assert_int_equal(r.status, 0);
+        tool_result_free(&r);
+        r = run_tool(NULL, "--baud", NULL);
+        assert_failure(&r, 2, "--baud needs a value", NULL);
+        tool_result_free(&r);
+    }
+}
+
+static void test_protocol_option(void **state)
+{
+    tool_result r = run_tool(NULL, "--protocol", "3", "encode", "null", NULL);
+    (void)state;
+    assert_failure(&r, 2, "--protocol 3", "1 or 2", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "--protocol", "0", "null", NULL);
+    assert_failure(&r, 2, "--protocol 0", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "null", "--protocol", "x", NULL);
+    assert_failure(&r, 2, "--protocol x", NULL);
+    tool_result_free(&r);
+}
+
+static void test_other_link_options(void **state)
+{
+    tool_result r = run_tool(NULL, "--serial", "/dev/null", "--udp", "10.0.0.1", "decode", APPENDIX1_HEX, NULL);
+    (void)state;
+    assert_failure(&r, 2, "only one of --serial, --udp, --tcp", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--gcu-port", "0", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--gcu-port 0", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--local-port", "65536", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--local-port 65536", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--tcp", "gimbal:99999", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--tcp", "99999", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--rate", "0", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--rate 0", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--timeout", "soon", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--timeout soon", NULL);
+    tool_result_free(&r);
+    /* valid link options are accepted (and ignored) by the offline commands */
+    r = run_tool(NULL, "--tcp", "192.168.144.108:2332", "--rate", "30", "--timeout", "500", "--gcu-port", "2337",
+                 "--local-port", "2338", "decode", APPENDIX1_HEX, NULL);
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--serial", "/dev/ttyUSB0", "--baud", "1000000", "encode", "null", NULL);
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+}
+
+static void test_online_commands_not_built(void **state)
+{
+    static const char *const names[] = {"send", "point", "rate", "monitor", "sim", "demo", "record", "replay"};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
+        char want[64];
+        tool_result r = run_tool(NULL, "--udp", "127.0.0.1", names[i], "shutter", NULL);
+        snprintf(want, sizeof(want), "'%s' needs the client layer, not built yet", names[i]);
+        assert_failure(&r, 2, want, NULL);
+        tool_result_free(&r);
+        r = run_tool(NULL, names[i], "--help", NULL);
+        assert_ok_containing(&r, "not built yet");
+        tool_result_free(&r);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_version),
+        cmocka_unit_test(test_help),
+        cmocka_unit_test(test_command_help),
+        cmocka_unit_test(test_no_command),
+        cmocka_unit_test(test_unknown_command_and_option),
+        cmocka_unit_test(test_baud),
+        cmocka_unit_test(test_protocol_option),
+        cmocka_unit_test(test_other_link_options),
+        cmocka_unit_test(test_online_commands_not_built),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,480 @@
+/*
+ * test_cli_decode.c - `xfgcu decode`: the vendor's worked example, both
+ * directions and versions, every argument layout, faults of hex and of
+ * packets, and noisy streams on stdin.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+#include <jansson.h>
+
+#include "run_tool.h"
+#include "xfgcu/xfgcu.h"
+
+/* ---- helpers ------------------------------------------------------------------ */
+
+static json_t *parse_line(const char *text)
+{
+    json_error_t e;
+    json_t *obj = json_loadb(text, strcspn(text, "\n"), 0, &e);
+    if (obj == NULL) {
+        print_error("not JSON (%s): %s\n", e.text, text);
+        fail();
+    }
+    return obj;
+}
+
+static json_int_t int_key(const json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!json_is_integer(v)) {
+        print_error("key %s is missing or not an integer\n", key);
+        fail();
+    }
+    return json_integer_value(v);
+}
+
+static const char *str_key(const json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!json_is_string(v)) {
+        print_error("key %s is missing or not a string\n", key);
+        fail();
+    }
+    return json_string_value(v);
+}
+
+static void hex_plain(const uint8_t *b, size_t n, char *buf)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        sprintf(buf + 2u * i, "%02x", b[i]);
+    }
+    buf[2u * n] = '\0';
+}
+
+static size_t gcu_packet(uint8_t version, uint8_t order, const uint8_t *fb, uint8_t fb_len, uint8_t *out)
+{
+    xf_gcu_packet p;
+    size_t len = 0;
+    memset(&p, 0, sizeof(p));
+    p.version = version;
+    p.order = order;
+    p.params_len = fb_len;
+    if (fb_len > 0u) {
+        memcpy(p.params, fb, fb_len);
+    }
+    p.main.gimbal_mode = XF_MODE_HEAD_LOCK;
+    p.main.pod_status = XF_POD_RANGING_ON | XF_POD_TARGET_VALID;
+    p.main.cam_pitch = -4500;
+    p.main.cam_yaw = 35999;
+    p.main.rate_x = -123;
+    p.sub.sub_header = XF_SUB_HEADER;
+    p.sub.gimbal_code = 30;
+    p.sub.target_distance = 12345;
+    p.sub.zoom_cam1 = 55;
+    p.sub.thermal_status = 0x81;
+    p.sub.camera_status = 0x2012;
+    p.sub.time_zone = -5;
+    assert_int_equal(xf_gcu_pack(&p, out, XF_PACKET_MAX_LEN, &len), XF_OK);
+    return len;
+}
+
+/* ---- the vendor's worked example ---------------------------------------------------- */
+
+static void test_appendix1_json(void **state)
+{
+    static const char *const host_keys[] = {"roll_ctrl", "pitch_ctrl", "yaw_ctrl", "status", "carrier_roll",
+                                            "carrier_pitch", "carrier_yaw", "accel_north", "accel_east", "accel_up",
+                                            "vel_north", "vel_east", "vel_up", "sub_request", "sub_header",
+                                            "longitude", "latitude", "altitude", "satellites", "gnss_ms",
+                                            "gnss_week", "relative_height"};
+    tool_result r = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, NULL);
+    json_t *o;
+    size_t i;
+    (void)state;
+    assert_int_equal(r.status, 0);
+    assert_int_equal(r.err_len, 0);
+    assert_int_equal(count_lines(r.out), 1);
+    /* compact, keys in order, required keys first */
+    assert_true(strncmp(r.out, "{\"direction\":\"host\",\"version\":1,\"length\":72,\"order\":0,", 54) == 0);
+    o = parse_line(r.out);
+    assert_string_equal(str_key(o, "params"), "");
+    for (i = 0; i < sizeof(host_keys) / sizeof(host_keys[0]); i++) {
+        (void)int_key(o, host_keys[i]);
+    }
+    assert_int_equal(int_key(o, "roll_ctrl"), 0);
+    assert_int_equal(int_key(o, "pitch_ctrl"), 100);
+    assert_int_equal(int_key(o, "yaw_ctrl"), -100);
+    assert_int_equal(int_key(o, "status"), 5);
+    assert_int_equal(int_key(o, "carrier_roll"), -1132);
+    assert_int_equal(int_key(o, "carrier_pitch"), 101);
+    assert_int_equal(int_key(o, "carrier_yaw"), 24000);
+    assert_int_equal(int_key(o, "accel_north"), 112);
+    assert_int_equal(int_key(o, "accel_east"), -112);
+    assert_int_equal(int_key(o, "accel_up"), 112);
+    assert_int_equal(int_key(o, "vel_north"), -32704);
+    assert_int_equal(int_key(o, "vel_east"), -2112);
+    assert_int_equal(int_key(o, "vel_up"), -32704);
+    assert_int_equal(int_key(o, "sub_request"), 1);
+    assert_int_equal(int_key(o, "sub_header"), 1);
+    assert_int_equal(int_key(o, "longitude"), 1709175332);
+    assert_int_equal(int_key(o, "latitude"), 380300822);
+    assert_int_equal(int_key(o, "altitude"), 41123);
+    assert_int_equal(int_key(o, "satellites"), 19);
+    assert_int_equal(int_key(o, "gnss_ms"), 352718000);
+    assert_int_equal(int_key(o, "gnss_week"), 2278);
+    assert_int_equal(int_key(o, "relative_height"), 12120);
+    assert_null(json_object_get(o, "reserved_main")); /* all zero: not printed */
+    assert_null(json_object_get(o, "reserved_sub"));
+    assert_null(json_object_get(o, "thermal_status"));
+    json_decref(o);
+    tool_result_free(&r);
+}
+
+static void test_appendix1_layouts(void **state)
+{
+    char lower[2 * 72 + 1], colons[3 * 72], prefixed[5 * 72 + 1];
+    const char *singles[72 + 2];
+    char bytes[72][3];
+    tool_result ref = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, NULL);
+    tool_result r;
+    size_t i;
+    (void)state;
+    hex_plain(appendix1, 72, lower);
+    for (i = 0; i < 72; i++) {
+        sprintf(colons + 3u * i, i < 71u ? "%02X:" : "%02X", appendix1[i]);
+        sprintf(prefixed + 5u * i, i < 71u ? "0x%02X," : "0x%02X", appendix1[i]);
+        sprintf(bytes[i], "%02x", appendix1[i]);
+        singles[i + 2] = bytes[i];
+    }
+    r = run_tool(NULL, "decode", "--json", lower, NULL);
+    assert_string_equal(r.out, ref.out);
+    tool_result_free(&r);
+    r = run_tool(NULL, "decode", "--json", colons, NULL);
+    assert_string_equal(r.out, ref.out);
+    tool_result_free(&r);
+    r = run_tool(NULL, "decode", "--json", prefixed, NULL);
+    assert_string_equal(r.out, ref.out);
+    tool_result_free(&r);
+    /* unquoted on a shell: one byte per argument */
+    singles[0] = "decode";
+    singles[1] = "--json";
+    r = run_tool_argv(74, singles, NULL);
+    assert_int_equal(r.status, 0);
+    assert_string_equal(r.out, ref.out);
+    tool_result_free(&r);
+    tool_result_free(&ref);
+}
+
+static void test_appendix1_table(void **state)
+{
+    tool_result r = run_tool(NULL, "decode", APPENDIX1_HEX, NULL);
+    static const char *const needles[] = {"host packet", "72 bytes", "version 1", "0xE9D4", "vel_north",
+                                          "-32704", "-327.04 m/s", "ins_valid ctrl_valid", "170.9175332 deg",
+                                          "240.00 deg", "352718.000 s", "41.123 m", "null"};
+    size_t i;
+    (void)state;
+    assert_int_equal(r.status, 0);
+    for (i = 0; i < sizeof(needles) / sizeof(needles[0]); i++) {
+        if (strstr(r.out, needles[i]) == NULL) {
+            print_error("table lacks \"%s\":\n%s", needles[i], r.out);
+            fail();
+        }
+    }
+    tool_result_free(&r);
+}
+
+/* ---- GCU packets, versions, extras --------------------------------------------------- */
+
+static void test_gcu_versions(void **state)
+{
+    uint8_t pkt[XF_PACKET_MAX_LEN];
+    char hex[2 * XF_PACKET_MAX_LEN + 1];
+    static const uint8_t failed3 = 0x03;
+    size_t len = gcu_packet(2, XF_ORDER_ZOOM_IN, &failed3, 1, pkt);
+    tool_result r;
+    json_t *o, *fb;
+    (void)state;
+    hex_plain(pkt, len, hex);
+    r = run_tool(NULL, "decode", "--json", hex, NULL);
+    assert_int_equal(r.status, 0);
+    o = parse_line(r.out);
+    assert_string_equal(str_key(o, "direction"), "gcu");
+    assert_int_equal(int_key(o, "version"), 2);
+    assert_int_equal(int_key(o, "length"), 73);
+    assert_int_equal(int_key(o, "order"), 0x22);
+    assert_string_equal(str_key(o, "order_name"), "zoom_in");
+    assert_string_equal(str_key(o, "params"), "03");
+    assert_int_equal(int_key(o, "gimbal_mode"), 0x11);
+    assert_string_equal(str_key(o, "mode_name"), "head_lock");
+    assert_int_equal(int_key(o, "pod_status"), 0x180);
+    assert_int_equal(int_key(o, "cam_pitch"), -4500);
+    assert_int_equal(int_key(o, "cam_yaw"), 35999);
+    assert_int_equal(int_key(o, "rate_x"), -123);
+    assert_int_equal(int_key(o, "gimbal_code"), 30);
+    assert_string_equal(str_key(o, "gimbal_model"), "Z-9A");
+    assert_int_equal(int_key(o, "target_distance"), 12345);
+    assert_int_equal(int_key(o, "zoom_cam1"), 55);
+    assert_int_equal(int_key(o, "thermal_status"), 0x81);
+    assert_int_equal(int_key(o, "camera_status"), 0x2012);
+    assert_int_equal(int_key(o, "time_zone"), -5);
+    fb = json_object_get(o, "feedback");
+    assert_string_equal(str_key(fb, "result"), "failed");
+    assert_int_equal(int_key(fb, "failed_cameras"), 3);
+    json_decref(o);
+    tool_result_free(&r);
+
+    /* V0.1: bytes 63-66 are reserved, shown as reserved_sub when not zero */
+    len = gcu_packet(1, XF_ORDER_NULL, NULL, 0, pkt);
+    hex_plain(pkt, len, hex);
+    r = run_tool(NULL, "decode", "--json", hex, NULL);
+    o = parse_line(r.out);
+    assert_null(json_object_get(o, "thermal_status"));
+    assert_null(json_object_get(o, "camera_status"));
+    assert_null(json_object_get(o, "time_zone"));
+    assert_null(json_object_get(o, "feedback")); /* the null order's reply has no state */
+    assert_string_equal(str_key(o, "reserved_sub"), "811220FB0000");
+    json_decref(o);
+    tool_result_free(&r);
+
+    /* the table shows the V0.2 rate unit */
+    len = gcu_packet(2, XF_ORDER_NULL, NULL, 0, pkt);
+    hex_plain(pkt, len, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_non_null(strstr(r.out, "-12.3 deg/s"));
+    assert_non_null(strstr(r.out, "UTC-5"));
+    assert_non_null(strstr(r.out, "1234.5 m"));
+    assert_non_null(strstr(r.out, "osd_on"));
+    tool_result_free(&r);
+}
+
+static void test_host_command_extra(void **state)
+{
+    uint8_t pkt[XF_PACKET_MAX_LEN];
+    char hex[2 * XF_PACKET_MAX_LEN + 1];
+    xf_host_packet h;
+    size_t len = 0;
+    tool_result r;
+    json_t *o, *c;
+    (void)state;
+    xf_host_packet_init(&h, 1);
+    h.order = XF_ORDER_ZOOM_TO;
+    h.params_len = 3;
+    h.params[0] = 0xFF;
+    h.params[1] = 0xC9;
+    h.params[2] = 0xFF;
+    h.main.reserved_main[5] = 0x42;
+    assert_int_equal(xf_host_pack(&h, pkt, sizeof(pkt), &len), XF_OK);
+    hex_plain(pkt, len, hex);
+    r = run_tool(NULL, "decode", "--json", hex, NULL);
+    o = parse_line(r.out);
+    c = json_object_get(o, "command");
+    assert_int_equal(int_key(c, "cameras"), 255);
+    assert_int_equal(int_key(c, "zoom"), -55);
+    assert_string_equal(str_key(o, "reserved_main"), "000000000042");
+    json_decref(o);
+    tool_result_free(&r);
+
+    /* wrong parameter length for the order: the raw params, and why they do not decode */
+    h.params_len = 2;
+    assert_int_equal(xf_host_pack(&h, pkt, sizeof(pkt), &len), XF_OK);
+    hex_plain(pkt, len, hex);
+    r = run_tool(NULL, "decode", "--json", hex, NULL);
+    o = parse_line(r.out);
+    assert_null(json_object_get(o, "command"));
+    assert_non_null(strstr(str_key(o, "command_error"), "3 parameter bytes"));
+    assert_string_equal(str_key(o, "params"), "FFC9");
+    json_decref(o);
+    tool_result_free(&r);
+}
+
+/* ---- faults in arguments -------------------------------------------------------------- */
+
+static void test_argument_faults(void **state)
+{
+    uint8_t pkt[72];
+    char hex[2 * 80 + 1], odd[2 * 72 + 2];
+    tool_result r;
+    (void)state;
+
+    memcpy(pkt, appendix1, 72);
+    pkt[71] ^= 1u;
+    hex_plain(pkt, 72, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_failure(&r, 2, "argument 1", "bad CRC", "E9 D5", "E9 D4", NULL);
+    tool_result_free(&r);
+
+    r = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, hex, NULL); /* nothing printed for the good one */
+    assert_failure(&r, 2, "argument 2", "bad CRC", NULL);
+    tool_result_free(&r);
+
+    hex_plain(appendix1, 50, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_failure(&r, 2, "truncated", "50 bytes", NULL);
+    tool_result_free(&r);
+
+    memcpy(pkt, appendix1, 72);
+    pkt[0] = 0x12;
+    hex_plain(pkt, 72, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_failure(&r, 2, "bad header", "12 E5", NULL);
+    tool_result_free(&r);
+
+    memcpy(pkt, appendix1, 72);
+    pkt[2] = 0x20; /* length 32 */
+    hex_plain(pkt, 72, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_failure(&r, 2, "bad length", "32", NULL);
+    tool_result_free(&r);
+
+    hex_plain(appendix1, 72, hex);
+    strcat(hex, "00");
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_failure(&r, 2, "bad length", "73 bytes", NULL);
+    tool_result_free(&r);
+
+    hex_plain(appendix1, 72, odd);
+    odd[5] = 'g';
+    r = run_tool(NULL, "decode", odd, NULL);
+    assert_failure(&r, 2, "argument 1, position 6", "'g' is not a hex digit", NULL);
+    tool_result_free(&r);
+
+    r = run_tool(NULL, "decode", APPENDIX1_HEX, "A8 E5 4", NULL);
+    assert_failure(&r, 2, "argument 2, position 7", "odd number of hex digits", NULL);
+    tool_result_free(&r);
+
+    r = run_tool(NULL, "decode", "", NULL);
+    assert_failure(&r, 2, "argument 1", "no hex digits", NULL);
+    tool_result_free(&r);
+}
+
+/* ---- stdin ------------------------------------------------------------------------------------ */
+
+static char *spaced(const uint8_t *b, size_t n)
+{
+    char *s = malloc(3u * n + 2u);
+    assert_non_null(s);
+    hex_line(b, n, s);
+    return s;
+}
+
+static void test_stdin_noisy(void **state)
+{
+    uint8_t gcu[XF_PACKET_MAX_LEN];
+    static const uint8_t ok = 0;
+    size_t glen = gcu_packet(2, XF_ORDER_SHUTTER, &ok, 1, gcu);
+    char *a = spaced(appendix1, 72), *g = spaced(gcu, glen);
+    char input[4096];
+    tool_result r;
+    json_t *o;
+    const char *line;
+    (void)state;
+    /* noise, a false candidate (its CRC fails), the example, a false header, the GCU reply, noise; any layout */
+    snprintf(input, sizeof(input),
+             "12 34 8A\n0xA8,0xE5 48 00 01 02 03\r\n%s\n99 88 a8e5 ff00\n%s  \t77 66:55\n%.*s", a, g, 99, a);
+    r = run_tool(input, "decode", "--json", NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(r.err_len, 0);
+    assert_int_equal(count_lines(r.out), 2);
+    o = parse_line(r.out);
+    assert_int_equal(int_key(o, "vel_east"), -2112);
+    json_decref(o);
+    line = strchr(r.out, '\n') + 1;
+    o = parse_line(line);
+    assert_string_equal(str_key(o, "direction"), "gcu");
+    assert_string_equal(str_key(json_object_get(o, "feedback"), "result"), "ok");
+    json_decref(o);
+    tool_result_free(&r);
+
+    /* the table says where each packet starts */
+    r = run_tool(input, "decode", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "host packet (stdin offset"));
+    assert_non_null(strstr(r.out, "gcu packet (stdin offset"));
+    tool_result_free(&r);
+    free(a);
+    free(g);
+}
+
+/* A false header with a long length holds the host parser back: a host
+ * packet inside it is found after a GCU packet that starts later. The
+ * output is still in stream order, and a false header just before the end
+ * of the input does not hide the packets after it. */
+static void test_stdin_stream_order(void **state)
+{
+    uint8_t gcu[XF_PACKET_MAX_LEN];
+    size_t glen = gcu_packet(1, XF_ORDER_NULL, NULL, 0, gcu);
+    char *a = spaced(appendix1, 72), *g = spaced(gcu, glen);
+    char input[4096];
+    tool_result r;
+    (void)state;
+    snprintf(input, sizeof(input), "A8 E5 F0 00\n%s%s", a, g);
+    r = run_tool(input, "decode", "--json", NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(count_lines(r.out), 2);
+    assert_non_null(strstr(r.out, "{\"direction\":\"host\""));
+    assert_true(strstr(r.out, "\"direction\":\"host\"") < strstr(r.out, "\"direction\":\"gcu\""));
+    tool_result_free(&r);
+
+    snprintf(input, sizeof(input), "%s A8 E5 F0 00 %s", g, a);
+    r = run_tool(input, "decode", "--json", NULL);
+    assert_int_equal(count_lines(r.out), 2);
+    assert_true(strstr(r.out, "\"direction\":\"gcu\"") < strstr(r.out, "\"direction\":\"host\""));
+    tool_result_free(&r);
+    free(a);
+    free(g);
+}
+
+static void test_stdin_faults(void **state)
+{
+    char input[1024];
+    char *a = spaced(appendix1, 72);
+    tool_result r;
+    (void)state;
+    r = run_tool("A8 E5 48\n00 garbage 01\n", "decode", NULL);
+    assert_failure(&r, 2, "stdin", "line 2 column 4", "offset 12", "'g' is not a hex digit", NULL);
+    tool_result_free(&r);
+
+    r = run_tool("A8 E5 4\n", "decode", NULL);
+    assert_failure(&r, 2, "stdin", "line 1 column 7", "odd number", NULL);
+    tool_result_free(&r);
+
+    r = run_tool("12 34 56\n", "decode", NULL);
+    assert_failure(&r, 2, "no valid packet", "3 bytes", NULL);
+    tool_result_free(&r);
+
+    r = run_tool(NULL, "decode", NULL);
+    assert_failure(&r, 2, "no valid packet", NULL);
+    tool_result_free(&r);
+
+    /* the packets before a hex fault are printed, then the fault fails the command */
+    snprintf(input, sizeof(input), "%s zz\n", a);
+    r = run_tool(input, "decode", "--json", NULL);
+    assert_int_equal(r.status, 2);
+    assert_int_equal(count_lines(r.out), 1);
+    assert_non_null(strstr(r.err, "'z' is not a hex digit"));
+    tool_result_free(&r);
+    free(a);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_appendix1_json),
+        cmocka_unit_test(test_appendix1_layouts),
+        cmocka_unit_test(test_appendix1_table),
+        cmocka_unit_test(test_gcu_versions),
+        cmocka_unit_test(test_host_command_extra),
+        cmocka_unit_test(test_argument_faults),
+        cmocka_unit_test(test_stdin_noisy),
+        cmocka_unit_test(test_stdin_stream_order),
+        cmocka_unit_test(test_stdin_faults),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

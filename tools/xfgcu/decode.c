@@ -1,0 +1,422 @@
+/*
+ * decode.c - `xfgcu decode [--json] [HEX ...]`.
+ *
+ * With arguments: each is one whole packet; all are checked before any is
+ * printed, and the first bad one fails the command with its fault.
+ *
+ * Without: stdin is hex text in any layout, read as one byte stream and
+ * run through two streaming parsers, one per direction, so host and GCU
+ * packets can be mixed (a capture of both sides). The parsers return a
+ * frame when it ends and may find one late (after a false header), so
+ * frames wait in a small queue sorted by where they start, and leave it
+ * once no parser can return anything that starts earlier: the output is
+ * in stream order.
+ */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "hexin.h"
+#include "jsonpkt.h"
+#include "table.h"
+
+void help_decode(FILE *out)
+{
+    fputs("usage: xfgcu decode [--json] [HEX ...]\n\n"
+          "Decode packets of either direction (host A8 E5, GCU 8A 5E).\n"
+          "Each HEX argument is one whole packet: hex digits, with spaces, colons, commas or 0x\n"
+          "prefixes if you like (\"A8 E5 48 00 ...\", \"a8e54800...\", \"0xA8,0xE5,...\"). A bad\n"
+          "packet (header, length, CRC, truncated) is an error that names the fault. Bytes given\n"
+          "unquoted (decode A8 E5 48 00 ...) are read as one byte string of whole packets.\n"
+          "Without HEX, stdin is read as hex text in any layout, one byte stream; every valid\n"
+          "packet in it is printed in stream order and everything else is skipped.\n\n"
+          "  --json    one JSON object per packet and line: direction, version, length, order,\n"
+          "            params (hex of bytes 70..S-3) and every field under its canonical name as\n"
+          "            the raw wire integer; reserved_main / reserved_sub (hex) when not zero;\n"
+          "            extras: order_name, command / command_error (host), feedback, mode_name,\n"
+          "            gimbal_model (GCU). `xfgcu encode --json` turns it back into the packet.\n"
+          "Without --json: a table of field, raw value and physical value.\n",
+          out);
+}
+
+static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, int json,
+                        size_t index)
+{
+    if (json) {
+        return jsonpkt_print(buf, len, dir, stdout);
+    }
+    if (index > 0u) {
+        putchar('\n');
+    }
+    table_print(buf, len, dir, where, stdout);
+    return XFGCU_EXIT_OK;
+}
+
+/* ---- packets given as arguments -------------------------------------------- */
+
+typedef struct arg_packet {
+    uint8_t bytes[XF_PACKET_MAX_LEN];
+    size_t len;
+    xf_direction dir;
+} arg_packet;
+
+/* Say precisely what is wrong with a packet that xf_packet_check refused. */
+static int packet_fault(const arg_packet *p, const char *where, xf_err err)
+{
+    size_t field = (p->len >= 4u) ? xf_get_u16le(p->bytes + XF_OFF_LENGTH) : 0u;
+    switch (err) {
+    case XF_ERR_HEADER:
+        return cli_fail("decode: %s: bad header %02X %02X: a packet starts with A8 E5 (host) or 8A 5E (GCU)", where,
+                        p->bytes[0], p->len > 1u ? p->bytes[1] : 0u);
+    case XF_ERR_TRUNCATED:
+        if (p->len < 4u) {
+            return cli_fail("decode: %s: truncated packet: %zu bytes, a packet has at least %u", where, p->len,
+                            XF_PACKET_MIN_LEN);
+        }
+        return cli_fail("decode: %s: truncated packet: %zu bytes, the length field says %zu", where, p->len, field);
+    case XF_ERR_LENGTH:
+        if (field < XF_PACKET_MIN_LEN || field > XF_PACKET_MAX_LEN) {
+            return cli_fail("decode: %s: bad length: the length field says %zu, must be %u..%u", where, field,
+                            XF_PACKET_MIN_LEN, XF_PACKET_MAX_LEN);
+        }
+        return cli_fail("decode: %s: bad length: %zu bytes, the length field says %zu (one packet per argument)",
+                        where, p->len, field);
+    case XF_ERR_CRC:
+        return cli_fail("decode: %s: bad CRC: the packet says %02X %02X, its bytes give %02X %02X", where,
+                        p->bytes[field - 2u], p->bytes[field - 1u], (unsigned)(xf_crc16(p->bytes, field - 2u) >> 8),
+                        (unsigned)(xf_crc16(p->bytes, field - 2u) & 0xFFu));
+    default: return cli_fail("decode: %s: %s", where, xf_strerror(err));
+    }
+}
+
+static int check_packet(arg_packet *p, const char *where)
+{
+    xf_err err = xf_packet_direction(p->bytes, p->len, &p->dir);
+    if (err == XF_OK) {
+        err = xf_packet_check(p->bytes, p->len, p->dir);
+    }
+    return (err == XF_OK) ? XFGCU_EXIT_OK : packet_fault(p, where, err);
+}
+
+/* Hex of argument @p k into @p out (at most @p cap bytes); *n may exceed cap. */
+static int argument_bytes(const char *text, int k, uint8_t *out, size_t cap, size_t *n)
+{
+    hex_fault fault;
+    char why[96];
+    if (hex_parse_string(text, out, cap, n, &fault) != 0) {
+        hex_fault_text(&fault, why, sizeof(why));
+        return cli_fail("decode: argument %d, position %zu: %s", k, fault.offset + 1u, why);
+    }
+    if (*n == 0u) {
+        return cli_fail("decode: argument %d: no hex digits", k);
+    }
+    if (*n > cap) {
+        return cli_fail("decode: argument %d: %zu bytes, longer than any packet (%u at most)", k, *n,
+                        XF_PACKET_MAX_LEN);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* A packet list that grows as packets are found. */
+typedef struct packet_list {
+    arg_packet *items;
+    size_t count;
+} packet_list;
+
+static int one_per_argument(int count, char **hex, packet_list *list)
+{
+    int k, rc = XFGCU_EXIT_OK;
+    for (k = 0; k < count && rc == XFGCU_EXIT_OK; k++) {
+        arg_packet *p = &list->items[list->count++];
+        char where[32];
+        snprintf(where, sizeof(where), "argument %d", k + 1);
+        rc = argument_bytes(hex[k], k + 1, p->bytes, sizeof(p->bytes), &p->len);
+        if (rc == XFGCU_EXIT_OK) {
+            rc = check_packet(p, where);
+        }
+    }
+    return rc;
+}
+
+/* Cut @p bytes into whole packets, each checked; a fault names its byte offset. */
+static int split_packets(const uint8_t *bytes, size_t total, packet_list *list)
+{
+    size_t at = 0;
+    while (at < total) {
+        arg_packet *p = &list->items[list->count++];
+        size_t rest = total - at, field = (rest >= 4u) ? xf_get_u16le(bytes + at + XF_OFF_LENGTH) : rest;
+        size_t take = (field >= XF_PACKET_MIN_LEN && field <= rest) ? field : rest;
+        char where[64];
+        int rc;
+        p->len = (take < sizeof(p->bytes)) ? take : sizeof(p->bytes);
+        memcpy(p->bytes, bytes + at, p->len);
+        snprintf(where, sizeof(where), "the arguments as one byte string, byte %zu", at);
+        rc = check_packet(p, where);
+        if (rc != XFGCU_EXIT_OK) {
+            return rc;
+        }
+        at += take;
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* `decode A8 E5 48 00 ...` unquoted gives one byte per argument: when no
+ * argument is long enough to hold even a header and a length, the
+ * arguments are read as one byte string of whole packets instead. */
+static int all_arguments_short(int count, char **hex)
+{
+    int k;
+    uint8_t tmp[4];
+    for (k = 0; k < count; k++) {
+        hex_fault fault;
+        size_t n = 0;
+        if (hex_parse_string(hex[k], tmp, sizeof(tmp), &n, &fault) != 0 || n >= 4u) {
+            return 0;
+        }
+    }
+    return count > 1;
+}
+
+static int joined_arguments(int count, char **hex, packet_list *list)
+{
+    uint8_t *bytes = malloc((size_t)count * 4u);
+    size_t total = 0;
+    int k, rc = XFGCU_EXIT_OK;
+    if (bytes == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    for (k = 0; k < count && rc == XFGCU_EXIT_OK; k++) {
+        size_t n = 0;
+        rc = argument_bytes(hex[k], k + 1, bytes + total, 4u, &n);
+        total += n;
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = split_packets(bytes, total, list);
+    }
+    free(bytes);
+    return rc;
+}
+
+static int decode_arguments(int count, char **hex, int json)
+{
+    int joined = all_arguments_short(count, hex);
+    size_t k, slots = joined ? ((size_t)count * 4u) / XF_PACKET_MIN_LEN + 1u : (size_t)count;
+    packet_list list;
+    int rc;
+    list.count = 0;
+    list.items = calloc(slots, sizeof(*list.items));
+    if (list.items == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    rc = joined ? joined_arguments(count, hex, &list) : one_per_argument(count, hex, &list);
+    for (k = 0; k < list.count && rc == XFGCU_EXIT_OK; k++) {
+        char where[32];
+        snprintf(where, sizeof(where), joined ? "packet %zu of the arguments" : "argument %zu", k + 1u);
+        rc = print_packet(list.items[k].bytes, list.items[k].len, list.items[k].dir, where, json, k);
+    }
+    free(list.items);
+    return rc;
+}
+
+/* ---- a byte stream on stdin ------------------------------------------------ */
+
+#define STREAM_CHUNK 64u /* bytes fed to the parsers at a time: bounds the queue */
+#define QUEUE_MAX 32u    /* > frames that can wait: (ring 256 + chunk 64) / 72 per parser, two parsers */
+#define TEXT_CHUNK 4096u
+
+typedef struct found {
+    size_t start; /* stream offset of the first byte */
+    size_t len;
+    xf_direction dir;
+    uint8_t bytes[XF_PACKET_MAX_LEN];
+} found;
+
+typedef struct stream {
+    xf_parser parser[2]; /* indexed by xf_direction */
+    size_t fed;          /* bytes given to each parser */
+    size_t real_end;     /* at the end: bytes of real input (zero padding follows) */
+    found queue[QUEUE_MAX];
+    size_t queued;
+    size_t printed;
+    int json;
+    int rc;
+} stream;
+
+static void emit(stream *s, const found *f)
+{
+    char where[48];
+    if (s->rc != XFGCU_EXIT_OK) {
+        return;
+    }
+    if (s->real_end > 0u && f->start + f->len > s->real_end) {
+        return; /* completed by the end-of-stream padding: not in the input */
+    }
+    snprintf(where, sizeof(where), "stdin offset %zu", f->start);
+    s->rc = print_packet(f->bytes, f->len, f->dir, where, s->json, s->printed);
+    s->printed++;
+}
+
+/* Print the queued frames that start before @p limit, earliest first. */
+static void flush(stream *s, size_t limit)
+{
+    size_t n = 0;
+    while (n < s->queued && s->queue[n].start < limit) {
+        emit(s, &s->queue[n]);
+        n++;
+    }
+    memmove(s->queue, s->queue + n, (s->queued - n) * sizeof(s->queue[0]));
+    s->queued -= n;
+}
+
+static void enqueue(stream *s, size_t start, xf_direction dir, const xf_frame *frame)
+{
+    size_t at;
+    if (s->queued == QUEUE_MAX) {
+        flush(s, s->queue[0].start + 1u); /* cannot happen with the bounds above; stay safe */
+    }
+    at = s->queued;
+    while (at > 0u && s->queue[at - 1u].start > start) {
+        at--;
+    }
+    memmove(s->queue + at + 1, s->queue + at, (s->queued - at) * sizeof(s->queue[0]));
+    s->queue[at].start = start;
+    s->queue[at].len = frame->len;
+    s->queue[at].dir = dir;
+    memcpy(s->queue[at].bytes, frame->data, frame->len);
+    s->queued++;
+}
+
+/* Nothing either parser returns from now on starts before this offset. */
+static size_t watermark(const stream *s)
+{
+    size_t host = s->fed - xf_parser_pending(&s->parser[XF_DIR_HOST]);
+    size_t gcu = s->fed - xf_parser_pending(&s->parser[XF_DIR_GCU]);
+    return (host < gcu) ? host : gcu;
+}
+
+static void feed_parser(stream *s, xf_direction dir, const uint8_t *data, size_t n)
+{
+    size_t taken = 0, used = 0;
+    xf_frame frame;
+    while (xf_parser_feed(&s->parser[dir], data + taken, n - taken, &used, &frame) == XF_PARSE_FRAME) {
+        taken += used;
+        /* the frame ends where the held bytes begin */
+        enqueue(s, s->fed + taken - xf_parser_pending(&s->parser[dir]) - frame.len, dir, &frame);
+    }
+}
+
+static void feed(stream *s, const uint8_t *data, size_t n)
+{
+    while (n > 0u) {
+        size_t k = (n < STREAM_CHUNK) ? n : STREAM_CHUNK;
+        feed_parser(s, XF_DIR_HOST, data, k);
+        feed_parser(s, XF_DIR_GCU, data, k);
+        s->fed += k;
+        flush(s, watermark(s));
+        data += k;
+        n -= k;
+    }
+}
+
+/* The parsers wait for as many bytes as a length field announces, so a
+ * false header near the end would hide the packets after it; zero bytes
+ * (never a header) complete every candidate, and emit() drops anything
+ * that reaches into them. */
+static void finish(stream *s)
+{
+    static const uint8_t zeros[STREAM_CHUNK];
+    size_t rounds;
+    s->real_end = s->fed;
+    for (rounds = 0; rounds < 8u && (xf_parser_pending(&s->parser[0]) > 0u || xf_parser_pending(&s->parser[1]) > 0u);
+         rounds++) {
+        feed(s, zeros, sizeof(zeros));
+    }
+    flush(s, (size_t)-1);
+}
+
+static int hex_error(const hex_fault *fault)
+{
+    char why[96];
+    hex_fault_text(fault, why, sizeof(why));
+    return cli_fail("decode: stdin, line %zu column %zu (offset %zu): %s", fault->line, fault->column, fault->offset,
+                    why);
+}
+
+/* Read hex text, convert, feed; stops at the first fault (*bad set, *fault filled). */
+static int read_stdin(stream *s, int *bad, hex_fault *fault)
+{
+    char text[TEXT_CHUNK];
+    uint8_t bytes[TEXT_CHUNK / 2u + 1u];
+    hex_reader reader;
+    size_t got;
+    hex_reader_init(&reader);
+    *bad = 0;
+    while (!*bad && s->rc == XFGCU_EXIT_OK && (got = fread(text, 1, sizeof(text), stdin)) > 0u) {
+        size_t n = 0;
+        *bad = hex_reader_feed(&reader, text, got, bytes, sizeof(bytes), &n, fault) != 0;
+        feed(s, bytes, n); /* the bytes before a fault are good */
+    }
+    if (!*bad && ferror(stdin)) {
+        return cli_fail("decode: cannot read stdin: %s", strerror(errno));
+    }
+    if (!*bad) {
+        *bad = hex_reader_finish(&reader, fault) != 0;
+    }
+    return XFGCU_EXIT_OK;
+}
+
+static int decode_stdin(int json)
+{
+    stream *s = calloc(1, sizeof(*s));
+    hex_fault fault;
+    int rc, bad = 0;
+    if (s == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    s->json = json;
+    (void)xf_parser_init(&s->parser[XF_DIR_HOST], XF_DIR_HOST);
+    (void)xf_parser_init(&s->parser[XF_DIR_GCU], XF_DIR_GCU);
+    rc = read_stdin(s, &bad, &fault);
+    if (rc == XFGCU_EXIT_OK) {
+        finish(s); /* the packets before a hex fault are printed before it is reported */
+        rc = s->rc;
+    }
+    if (rc == XFGCU_EXIT_OK && bad) {
+        rc = hex_error(&fault);
+    } else if (rc == XFGCU_EXIT_OK && s->printed == 0u) {
+        rc = cli_fail("decode: no valid packet in the %zu bytes read from stdin", s->real_end);
+    }
+    free(s);
+    return rc;
+}
+
+/* ---- the command ------------------------------------------------------------- */
+
+int cmd_decode(const cli_link *link, int argc, char **argv)
+{
+    int i, json = 0, nhex = 0, rc;
+    char **hex = calloc((size_t)argc, sizeof(*hex));
+    (void)link; /* offline */
+    if (hex == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0) {
+            free(hex);
+            help_decode(stdout);
+            return XFGCU_EXIT_OK;
+        }
+        if (strcmp(argv[i], "--json") == 0) {
+            json = 1;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            free(hex);
+            return cli_fail("decode: unknown option '%s' (see 'xfgcu decode --help')", argv[i]);
+        } else {
+            hex[nhex++] = argv[i];
+        }
+    }
+    rc = (nhex > 0) ? decode_arguments(nhex, hex, json) : decode_stdin(json);
+    free(hex);
+    return rc;
+}

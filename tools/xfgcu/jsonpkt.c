@@ -1,0 +1,575 @@
+/*
+ * jsonpkt.c - packet <-> JSON object (see jsonpkt.h for the keys).
+ *
+ * Both directions walk the same field rows (fields.h), so what decode
+ * prints is exactly what encode reads back. Typed extras ("command",
+ * "feedback") come from the codec's own decoders; on input they are only
+ * used when "params" is absent, and a "command" that disagrees with the
+ * "params" next to it is refused rather than silently dropped.
+ */
+#include "jsonpkt.h"
+
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "fields.h"
+#include "hexin.h"
+
+/* ---- output ---------------------------------------------------------------- */
+
+/* An object under construction; `failed` remembers an allocation failure. */
+typedef struct builder {
+    json_t *obj;
+    int failed;
+} builder;
+
+static void put(builder *b, const char *key, json_t *value)
+{
+    if (value == NULL || json_object_set_new(b->obj, key, value) != 0) {
+        b->failed = 1;
+    }
+}
+
+static void put_hex(builder *b, const char *key, const uint8_t *bytes, size_t n)
+{
+    char text[3 * XF_PARAMS_MAX + 1];
+    hex_format(bytes, n, '\0', text);
+    put(b, key, json_string(text));
+}
+
+/* Typed parameters of a host packet's order, or why they do not decode. */
+static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t n, uint8_t version)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    const char *bad = NULL;
+    char why[128];
+    xf_command cmd;
+    xf_err err;
+    size_t i;
+    if (info == NULL || (info->nfields == 0u && n == 0u)) {
+        return; /* unknown order, or nothing to show */
+    }
+    err = xf_command_decode(order, params, n, version, &cmd, &bad);
+    if (err == XF_OK) {
+        builder c = {json_object(), 0};
+        if (c.obj == NULL) {
+            b->failed = 1;
+            return;
+        }
+        for (i = 0; i < info->nfields; i++) {
+            xf_field f = (xf_field)info->fields[i];
+            put(&c, xf_field_name(f), json_integer(xf_command_get(&cmd, f)));
+        }
+        b->failed |= c.failed;
+        put(b, "command", c.obj);
+        return;
+    }
+    if (err == XF_ERR_PARAMS) {
+        snprintf(why, sizeof(why), "%s takes %zu parameter bytes, not %zu", info->name, xf_order_params_len(order), n);
+    } else {
+        snprintf(why, sizeof(why), "%s out of range", bad != NULL ? bad : "a parameter");
+    }
+    put(b, "command_error", json_string(why));
+}
+
+static const char *result_name(uint8_t result)
+{
+    switch (result) {
+    case XF_RESULT_OK: return "ok";
+    case XF_RESULT_OPERATING: return "operating";
+    default: return "failed";
+    }
+}
+
+static void put_feedback(builder *b, uint8_t order, const uint8_t *fb, size_t n)
+{
+    xf_feedback f;
+    builder o;
+    if (xf_feedback_decode(order, fb, n, &f) != XF_OK || !f.has_state) {
+        return; /* no execution state in this reply */
+    }
+    o.obj = json_object();
+    o.failed = 0;
+    if (o.obj == NULL) {
+        b->failed = 1;
+        return;
+    }
+    put(&o, "result", json_string(result_name(f.result)));
+    put(&o, "failed_cameras", json_integer(f.failed_cameras));
+    b->failed |= o.failed;
+    put(b, "feedback", o.obj);
+}
+
+static void put_reserved(builder *b, const void *pkt, xf_direction dir, uint8_t version, int block)
+{
+    uint8_t bytes[RESERVED_MAX];
+    size_t i, n = reserved_get(pkt, dir, version, block, bytes);
+    for (i = 0; i < n; i++) {
+        if (bytes[i] != 0u) {
+            put_hex(b, reserved_name(block), bytes, n);
+            return;
+        }
+    }
+}
+
+static void put_fields(builder *b, const void *pkt, xf_direction dir, uint8_t version)
+{
+    size_t i, n;
+    int main_done = 0;
+    const field_desc *rows = fields_of(dir, &n);
+    for (i = 0; i < n; i++) {
+        const field_desc *f = &rows[i];
+        long long v = field_get(pkt, f);
+        const char *name = NULL;
+        if (!field_present(f, version)) {
+            continue;
+        }
+        if (f->frame == 1u && !main_done) {
+            put_reserved(b, pkt, dir, version, RESERVED_MAIN);
+            main_done = 1;
+        }
+        put(b, f->name, json_integer(v));
+        if (f->unit == FU_MODE && (name = xf_mode_name((uint8_t)v)) != NULL) {
+            put(b, "mode_name", json_string(name));
+        } else if (f->unit == FU_MODEL && (name = xf_gimbal_model((uint8_t)v)) != NULL) {
+            put(b, "gimbal_model", json_string(name));
+        }
+    }
+    put_reserved(b, pkt, dir, version, RESERVED_SUB);
+}
+
+json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir)
+{
+    xf_host_packet host;
+    xf_gcu_packet gcu;
+    const void *pkt = (dir == XF_DIR_HOST) ? (const void *)&host : (const void *)&gcu;
+    uint8_t version, order, plen;
+    const uint8_t *params;
+    const char *name;
+    builder b;
+    xf_err err = (dir == XF_DIR_HOST) ? xf_host_unpack(buf, len, &host) : xf_gcu_unpack(buf, len, &gcu);
+    if (err != XF_OK) {
+        return NULL;
+    }
+    version = (dir == XF_DIR_HOST) ? host.version : gcu.version;
+    order = (dir == XF_DIR_HOST) ? host.order : gcu.order;
+    params = (dir == XF_DIR_HOST) ? host.params : gcu.params;
+    plen = (dir == XF_DIR_HOST) ? host.params_len : gcu.params_len;
+    b.obj = json_object();
+    b.failed = 0;
+    if (b.obj == NULL) {
+        return NULL;
+    }
+    put(&b, "direction", json_string(dir == XF_DIR_HOST ? "host" : "gcu"));
+    put(&b, "version", json_integer(version));
+    put(&b, "length", json_integer((json_int_t)len));
+    put(&b, "order", json_integer(order));
+    if ((name = xf_order_name(order)) != NULL) {
+        put(&b, "order_name", json_string(name));
+    }
+    put_hex(&b, "params", params, plen);
+    if (dir == XF_DIR_HOST) {
+        put_command(&b, order, params, plen, version);
+    } else {
+        put_feedback(&b, order, params, plen);
+    }
+    put_fields(&b, pkt, dir, version);
+    if (b.failed) {
+        json_decref(b.obj);
+        return NULL;
+    }
+    return b.obj;
+}
+
+int jsonpkt_print(const uint8_t *buf, size_t len, xf_direction dir, FILE *out)
+{
+    json_t *obj = jsonpkt_from_wire(buf, len, dir);
+    char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER) : NULL;
+    json_decref(obj);
+    if (text == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    fprintf(out, "%s\n", text);
+    free(text);
+    return XFGCU_EXIT_OK;
+}
+
+/* ---- input ----------------------------------------------------------------- */
+
+typedef struct reader {
+    const json_t *obj;
+    const char *where;
+    xf_direction dir;
+    uint8_t version;
+    uint8_t order;
+    uint8_t params[XF_PARAMS_MAX];
+    size_t params_len;
+    int has_params;
+} reader;
+
+static int fail_at(const reader *r, const char *fmt, ...) CLI_PRINTF(2, 3);
+
+/* "xfgcu: --json: <message>" */
+static int fail_at(const reader *r, const char *fmt, ...)
+{
+    char msg[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof(msg), fmt, ap);
+    va_end(ap);
+    return cli_fail("%s: %s", r->where, msg);
+}
+
+static const char *const common_keys[] = {"direction", "version", "length", "order", "order_name", "params", NULL};
+static const char *const host_extra_keys[] = {"command", "command_error", NULL};
+static const char *const gcu_extra_keys[] = {"feedback", "mode_name", "gimbal_model", NULL};
+
+static int in_list(const char *const *list, const char *key)
+{
+    for (; *list != NULL; list++) {
+        if (strcmp(*list, key) == 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int check_keys(const reader *r)
+{
+    const char *key;
+    json_t *value;
+    const char *side = (r->dir == XF_DIR_HOST) ? "host" : "gcu";
+    json_object_foreach((json_t *)r->obj, key, value) {
+        const field_desc *f = field_find(r->dir, key);
+        (void)value;
+        if (f != NULL && !field_present(f, r->version)) {
+            return fail_at(r, "key '%s' needs version >= %u (in version %u these bytes are reserved: use reserved_sub)",
+                           key, (unsigned)f->since, (unsigned)r->version);
+        }
+        if (f == NULL && !in_list(common_keys, key) &&
+            !in_list(r->dir == XF_DIR_HOST ? host_extra_keys : gcu_extra_keys, key) &&
+            strcmp(key, reserved_name(RESERVED_MAIN)) != 0 && strcmp(key, reserved_name(RESERVED_SUB)) != 0) {
+            return fail_at(r, "unknown key '%s' for a %s packet", key, side);
+        }
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* An optional integer member in [lo, hi]; *present tells whether it was there. */
+static int get_int(const reader *r, const json_t *obj, const char *prefix, const char *key, long long lo,
+                   long long hi, long long *out, int *present)
+{
+    json_t *v = json_object_get(obj, key);
+    *present = (v != NULL);
+    if (v == NULL) {
+        return XFGCU_EXIT_OK;
+    }
+    if (!json_is_integer(v)) {
+        return fail_at(r, "%s%s must be an integer in %lld..%lld", prefix, key, lo, hi);
+    }
+    *out = (long long)json_integer_value(v);
+    if (*out < lo || *out > hi) {
+        return fail_at(r, "%s%s %lld is out of range %lld..%lld", prefix, key, *out, lo, hi);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* A hex string member into @p out (at most @p cap bytes); *n gets its size. */
+static int get_hex(const reader *r, const char *key, uint8_t *out, size_t cap, size_t *n, int *present)
+{
+    json_t *v = json_object_get(r->obj, key);
+    hex_fault fault;
+    char why[96];
+    *present = (v != NULL);
+    *n = 0;
+    if (v == NULL) {
+        return XFGCU_EXIT_OK;
+    }
+    if (!json_is_string(v)) {
+        return fail_at(r, "%s must be a string of hex bytes", key);
+    }
+    if (hex_parse_string(json_string_value(v), out, cap, n, &fault) != 0) {
+        hex_fault_text(&fault, why, sizeof(why));
+        return fail_at(r, "%s, position %zu: %s", key, fault.offset + 1u, why);
+    }
+    if (*n > cap) {
+        return fail_at(r, "%s holds %zu bytes, at most %zu fit in a packet", key, *n, cap);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+static int read_direction(reader *r)
+{
+    json_t *v = json_object_get(r->obj, "direction");
+    const char *s = json_is_string(v) ? json_string_value(v) : NULL;
+    if (v == NULL) {
+        r->dir = XF_DIR_HOST;
+    } else if (s != NULL && strcmp(s, "host") == 0) {
+        r->dir = XF_DIR_HOST;
+    } else if (s != NULL && strcmp(s, "gcu") == 0) {
+        r->dir = XF_DIR_GCU;
+    } else {
+        return fail_at(r, "direction must be \"host\" or \"gcu\"");
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* "order": a number or a canonical name; without it, "order_name"; else the null order. */
+static int read_order(reader *r)
+{
+    json_t *v = json_object_get(r->obj, "order");
+    if (v == NULL) {
+        v = json_object_get(r->obj, "order_name");
+    }
+    if (v == NULL) {
+        r->order = XF_ORDER_NULL;
+        return XFGCU_EXIT_OK;
+    }
+    if (json_is_integer(v) && json_integer_value(v) >= 0 && json_integer_value(v) <= 255) {
+        r->order = (uint8_t)json_integer_value(v);
+        return XFGCU_EXIT_OK;
+    }
+    if (json_is_string(v) && xf_order_from_name(json_string_value(v), &r->order) == XF_OK) {
+        return XFGCU_EXIT_OK;
+    }
+    return fail_at(r, "order must be an integer 0..255 or the name of an order, like \"zoom_to\"");
+}
+
+static void member_range(xf_field f, long long *lo, long long *hi)
+{
+    switch (f) {
+    case XF_F_CAMERAS:
+    case XF_F_VALUE: *lo = 0; *hi = UINT8_MAX; break;
+    case XF_F_HOURS: *lo = INT8_MIN; *hi = INT8_MAX; break;
+    case XF_F_X0:
+    case XF_F_Y0:
+    case XF_F_X1:
+    case XF_F_Y1: *lo = 0; *hi = UINT16_MAX; break;
+    case XF_F_LONGITUDE:
+    case XF_F_LATITUDE:
+    case XF_F_ALTITUDE: *lo = INT32_MIN; *hi = INT32_MAX; break;
+    default: *lo = INT16_MIN; *hi = INT16_MAX; break;
+    }
+}
+
+static int command_member(const reader *r, const xf_order_info *info, const char *key, xf_field *f)
+{
+    char names[128] = "";
+    size_t i;
+    for (i = 0; i < info->nfields; i++) {
+        if (strcmp(xf_field_name((xf_field)info->fields[i]), key) == 0) {
+            *f = (xf_field)info->fields[i];
+            return XFGCU_EXIT_OK;
+        }
+        strncat(names, i > 0u ? ", " : "", sizeof(names) - strlen(names) - 1u);
+        strncat(names, xf_field_name((xf_field)info->fields[i]), sizeof(names) - strlen(names) - 1u);
+    }
+    return fail_at(r, "command.%s is not a parameter of %s (%s)", key, info->name,
+                   info->nfields > 0u ? names : "it takes none");
+}
+
+/* Parameters from a "command" object: missing members take xf_command_init's defaults. */
+static int params_from_command(const reader *r, const json_t *c, uint8_t *out, size_t *n)
+{
+    const xf_order_info *info = xf_order_lookup(r->order);
+    const char *key, *bad = NULL;
+    json_t *value;
+    xf_command cmd;
+    xf_err err;
+    if (info == NULL) {
+        return fail_at(r, "command needs a known order; 0x%02X is not one (give params instead)", r->order);
+    }
+    if (!json_is_object(c)) {
+        return fail_at(r, "command must be an object of %s's parameters", info->name);
+    }
+    xf_command_init(&cmd, r->order);
+    json_object_foreach((json_t *)c, key, value) {
+        xf_field f = XF_F_CAMERAS;
+        long long v = 0, lo, hi;
+        int present, rc = command_member(r, info, key, &f);
+        (void)value;
+        member_range(f, &lo, &hi);
+        if (rc == XFGCU_EXIT_OK) {
+            rc = get_int(r, c, "command.", key, lo, hi, &v, &present);
+        }
+        if (rc != XFGCU_EXIT_OK) {
+            return rc;
+        }
+        xf_command_set(&cmd, f, (int32_t)v);
+    }
+    err = xf_command_encode(&cmd, r->version, out, XF_PARAMS_MAX, n, &bad);
+    if (err != XF_OK) {
+        return fail_at(r, "command.%s is out of range for %s (protocol %u)", bad != NULL ? bad : "?", info->name,
+                       (unsigned)r->version);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* Host: "command" builds the params when they are absent, and must agree with them when present. */
+static int read_command(reader *r)
+{
+    const json_t *c = json_object_get(r->obj, "command");
+    uint8_t bytes[XF_PARAMS_MAX];
+    size_t n = 0;
+    int rc;
+    if (c == NULL) {
+        return XFGCU_EXIT_OK;
+    }
+    rc = params_from_command(r, c, bytes, &n);
+    if (rc != XFGCU_EXIT_OK) {
+        return rc;
+    }
+    if (!r->has_params) {
+        memcpy(r->params, bytes, n);
+        r->params_len = n;
+        r->has_params = 1;
+    } else if (n != r->params_len || memcmp(bytes, r->params, n) != 0) {
+        return fail_at(r, "command and params disagree; give only one of them");
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* GCU: "feedback" builds the state byte only when params are absent (it is derived from them). */
+static int read_feedback(reader *r)
+{
+    const json_t *f = json_object_get(r->obj, "feedback");
+    const json_t *res = json_object_get(f, "result");
+    const char *s = json_is_string(res) ? json_string_value(res) : "";
+    long long cams = 0;
+    int present, rc;
+    xf_result result;
+    if (f == NULL || r->has_params) {
+        return XFGCU_EXIT_OK;
+    }
+    if (strcmp(s, "ok") == 0) {
+        result = XF_RESULT_OK;
+    } else if (strcmp(s, "failed") == 0) {
+        result = XF_RESULT_FAILED;
+    } else if (strcmp(s, "operating") == 0) {
+        result = XF_RESULT_OPERATING;
+    } else {
+        return fail_at(r, "feedback.result must be \"ok\", \"failed\" or \"operating\"");
+    }
+    rc = get_int(r, f, "feedback.", "failed_cameras", 0, 255, &cams, &present);
+    if (rc == XFGCU_EXIT_OK) {
+        r->params[0] = xf_feedback_state(r->order, result, (uint8_t)cams);
+        r->params_len = 1;
+        r->has_params = 1;
+    }
+    return rc;
+}
+
+static int read_params(reader *r)
+{
+    long long length = 0;
+    int present, rc = get_hex(r, "params", r->params, sizeof(r->params), &r->params_len, &r->has_params);
+    if (rc == XFGCU_EXIT_OK) {
+        rc = (r->dir == XF_DIR_HOST) ? read_command(r) : read_feedback(r);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = get_int(r, r->obj, "", "length", XF_PACKET_MIN_LEN, XF_PACKET_MAX_LEN, &length, &present);
+    }
+    if (rc == XFGCU_EXIT_OK && present && (size_t)length != XF_PACKET_MIN_LEN + r->params_len) {
+        return fail_at(r, "length %lld disagrees with %zu params bytes (the packet is %zu bytes)", length,
+                       r->params_len, (size_t)XF_PACKET_MIN_LEN + r->params_len);
+    }
+    return rc;
+}
+
+static int read_fields(const reader *r, void *pkt)
+{
+    size_t i, n;
+    const field_desc *rows = fields_of(r->dir, &n);
+    for (i = 0; i < n; i++) {
+        long long v = 0, lo, hi;
+        int present, rc;
+        if (!field_present(&rows[i], r->version)) {
+            continue;
+        }
+        field_range(&rows[i], &lo, &hi);
+        rc = get_int(r, r->obj, "", rows[i].name, lo, hi, &v, &present);
+        if (rc != XFGCU_EXIT_OK) {
+            return rc;
+        }
+        field_set(pkt, &rows[i], v);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+static int read_reserved(const reader *r, void *pkt)
+{
+    int block;
+    for (block = RESERVED_MAIN; block <= RESERVED_SUB; block++) {
+        uint8_t bytes[RESERVED_MAX];
+        size_t want = reserved_size(r->dir, r->version, block), n = 0;
+        int present, rc = get_hex(r, reserved_name(block), bytes, sizeof(bytes), &n, &present);
+        if (rc != XFGCU_EXIT_OK) {
+            return rc;
+        }
+        if (present && n != want) {
+            return fail_at(r, "%s must hold %zu bytes for this packet, not %zu", reserved_name(block), want, n);
+        }
+        if (present) {
+            reserved_set(pkt, r->dir, r->version, block, bytes);
+        }
+    }
+    return XFGCU_EXIT_OK;
+}
+
+static int read_header(reader *r, uint8_t default_version)
+{
+    long long v = default_version;
+    int present;
+    int rc = read_direction(r);
+    if (rc == XFGCU_EXIT_OK) {
+        rc = get_int(r, r->obj, "", "version", 0, 255, &v, &present);
+        r->version = (uint8_t)v;
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = check_keys(r);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = read_order(r);
+    }
+    return (rc == XFGCU_EXIT_OK) ? read_params(r) : rc;
+}
+
+int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *where, uint8_t *out, size_t cap,
+                    size_t *len)
+{
+    reader r;
+    xf_host_packet host;
+    xf_gcu_packet gcu;
+    void *pkt;
+    int rc;
+    xf_err err;
+    memset(&r, 0, sizeof(r));
+    r.obj = obj;
+    r.where = where;
+    if (!json_is_object(obj)) {
+        return fail_at(&r, "expected a JSON object");
+    }
+    rc = read_header(&r, default_version);
+    if (rc != XFGCU_EXIT_OK) {
+        return rc;
+    }
+    memset(&host, 0, sizeof(host)); /* missing fields are 0 */
+    memset(&gcu, 0, sizeof(gcu));
+    pkt = (r.dir == XF_DIR_HOST) ? (void *)&host : (void *)&gcu;
+    rc = read_fields(&r, pkt);
+    if (rc == XFGCU_EXIT_OK) {
+        rc = read_reserved(&r, pkt);
+    }
+    if (rc != XFGCU_EXIT_OK) {
+        return rc;
+    }
+    host.version = gcu.version = r.version;
+    host.order = gcu.order = r.order;
+    host.params_len = gcu.params_len = (uint8_t)r.params_len;
+    memcpy(host.params, r.params, r.params_len);
+    memcpy(gcu.params, r.params, r.params_len);
+    err = (r.dir == XF_DIR_HOST) ? xf_host_pack(&host, out, cap, len) : xf_gcu_pack(&gcu, out, cap, len);
+    return (err == XF_OK) ? XFGCU_EXIT_OK : fail_at(&r, "cannot build the packet: %s", xf_strerror(err));
+}
