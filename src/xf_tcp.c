@@ -52,8 +52,31 @@ static void xf__tcp_backoff(xf_tcp *t, uint32_t now)
     t->backoff_ms = (t->backoff_ms * 2u > t->cfg.retry_max_ms) ? t->cfg.retry_max_ms : t->backoff_ms * 2u;
 }
 
-static void xf__tcp_up(xf_tcp *t)
+/* Connected to itself? When nobody listens on a port of the ephemeral
+ * range, Linux may give the connecting socket that very port as its own,
+ * and the SYN meets itself (TCP simultaneous open): "connected", to no
+ * server, with nothing ever to read. A GCU simulator on loopback at a
+ * high port meets this while it is down. */
+static int xf__tcp_self(int fd)
 {
+    struct sockaddr_storage a, b;
+    socklen_t la = sizeof(a), lb = sizeof(b);
+    memset(&a, 0, sizeof(a));
+    memset(&b, 0, sizeof(b));
+    if (getsockname(fd, (struct sockaddr *)&a, &la) != 0 || getpeername(fd, (struct sockaddr *)&b, &lb) != 0) {
+        return 0;
+    }
+    return la == lb && memcmp(&a, &b, la) == 0;
+}
+
+static void xf__tcp_up(xf_tcp *t, uint32_t now)
+{
+    if (xf__tcp_self(t->fd)) {
+        xf__fail(&t->error, XF_ERR_CLOSED, "connect to %s:%u: connected to itself (nobody listens there)", t->host,
+                 (unsigned)t->cfg.port);
+        xf__tcp_backoff(t, now);
+        return;
+    }
     t->state = XF_TCP_UP;
     t->stats.opens++;
     t->backoff_ms = t->cfg.retry_min_ms;
@@ -77,7 +100,7 @@ static void xf__tcp_start(xf_tcp *t, uint32_t now)
     }
     t->started_at = now;
     if (connect(t->fd, (const struct sockaddr *)&t->addr, t->addr_len) == 0) {
-        xf__tcp_up(t);
+        xf__tcp_up(t, now);
     } else if (errno == EINPROGRESS || errno == EINTR) {
         t->state = XF_TCP_CONNECTING;
     } else {
@@ -111,7 +134,7 @@ static void xf__tcp_check(xf_tcp *t, uint32_t now)
         xf__tcp_backoff(t, now);
         return;
     }
-    xf__tcp_up(t);
+    xf__tcp_up(t, now);
 }
 
 /* Move the state machine on; 1 if the connection is up. */

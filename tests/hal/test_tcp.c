@@ -11,10 +11,15 @@
 #include <arpa/inet.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <net/if.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <sched.h>
+#include <signal.h>
 #include <stdlib.h>
+#include <sys/ioctl.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "hal_test.h"
@@ -451,6 +456,95 @@ static void test_closed_by_application(void **state)
     assert_xf(xf_tcp_wait(&f->t, 10), XF_ERR_ARG);
 }
 
+/*
+ * Self-connect: with nobody listening on a port of the ephemeral range,
+ * Linux may hand the connecting socket that same port, and it connects to
+ * itself. Forced here in a private network namespace (only its own
+ * loopback) whose ephemeral range is that one port; run in a child so the
+ * test process keeps its namespace. The link must not count that as up.
+ */
+enum { SELF_OK = 0, SELF_CONNECTED = 1, SELF_OTHER = 2, SELF_SKIP = 3 };
+
+static int self_connect_child(void)
+{
+    static const char range[] = "40000 40000\n";
+    struct ifreq ifr;
+    xf_tcp t;
+    xf_tcp_config cfg;
+    xf_err err;
+    int fd, s;
+    if (unshare(CLONE_NEWNET) != 0) {
+        return SELF_SKIP;
+    }
+    s = socket(AF_INET, SOCK_DGRAM, 0);
+    memset(&ifr, 0, sizeof(ifr));
+    snprintf(ifr.ifr_name, sizeof(ifr.ifr_name), "lo");
+    if (s < 0 || ioctl(s, SIOCGIFFLAGS, &ifr) != 0) {
+        return SELF_SKIP;
+    }
+    ifr.ifr_flags = (short)(ifr.ifr_flags | IFF_UP);
+    if (ioctl(s, SIOCSIFFLAGS, &ifr) != 0) {
+        return SELF_SKIP;
+    }
+    close(s);
+    fd = open("/proc/sys/net/ipv4/ip_local_port_range", O_WRONLY);
+    if (fd < 0 || write(fd, range, sizeof(range) - 1) != (ssize_t)(sizeof(range) - 1)) {
+        return SELF_SKIP;
+    }
+    close(fd);
+    link_config(40000, &cfg);
+    if (xf_tcp_open(&t, &cfg) != XF_OK) {
+        return SELF_OTHER;
+    }
+    /* the first attempt meets itself at once on loopback */
+    err = xf_tcp_wait(&t, 30);
+    if (err == XF_OK) {
+        fprintf(stderr, "child: the link is up, connected to itself\n");
+        return SELF_CONNECTED;
+    }
+    if (strstr(t.error.text, "itself") == NULL || t.stats.opens != 0) {
+        fprintf(stderr, "child: %d (%s): %s\n", (int)err, xf_strerror(err), t.error.text);
+        return SELF_OTHER;
+    }
+    /* and never comes up later (the one port may now be in TIME_WAIT) */
+    err = xf_tcp_wait(&t, 300);
+    if (err == XF_OK || t.stats.opens != 0) {
+        fprintf(stderr, "child: later attempt: %d (%s): %s\n", (int)err, xf_strerror(err), t.error.text);
+        return SELF_CONNECTED;
+    }
+    xf_tcp_close(&t);
+    return SELF_OK;
+}
+
+static void test_self_connect_is_not_up(void **state)
+{
+    pid_t pid;
+    int status = 0;
+    uint32_t t0;
+    (void)state;
+    fflush(NULL);
+    pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        alarm(5);
+        _exit(self_connect_child());
+    }
+    t0 = ht_now();
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+        if (ht_since(t0) > 5000u) {
+            kill(pid, SIGKILL);
+            (void)waitpid(pid, &status, 0);
+            fail_msg("the child did not finish");
+        }
+        ht_sleep_ms(2);
+    }
+    assert_true(WIFEXITED(status));
+    if (WEXITSTATUS(status) == SELF_SKIP) {
+        skip(); /* no network namespace here (not root): nothing to test */
+    }
+    assert_int_equal(WEXITSTATUS(status), SELF_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -464,6 +558,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_unresolvable_host, setup, teardown),
         cmocka_unit_test_setup_teardown(test_connect_timeout_full_backlog, setup, teardown),
         cmocka_unit_test_setup_teardown(test_closed_by_application, setup, teardown),
+        cmocka_unit_test(test_self_connect_is_not_up),
     };
     return cmocka_run_group_tests_name("tcp (loopback server)", tests, NULL, NULL);
 }
