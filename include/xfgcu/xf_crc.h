@@ -101,7 +101,6 @@ static inline uint16_t xf__crc_mulmod(uint16_t a, uint16_t b)
 {
     uint16_t mult[16];
     uint16_t r = 0;
-    int shift;
     unsigned k;
     mult[0] = 0;
     mult[1] = a;
@@ -110,11 +109,11 @@ static inline uint16_t xf__crc_mulmod(uint16_t a, uint16_t b)
         mult[k] = (uint16_t)((uint16_t)(h << 1) ^ ((h & 0x8000u) ? 0x1021u : 0u));
         mult[k + 1] = (uint16_t)(mult[k] ^ a);
     }
-    for (shift = 12; shift >= 0; shift -= 4) {
+    for (k = 0; k < 4u; k++) {
         /* r * x^4 mod G: the top nibble of r wraps round through the polynomial. */
         uint16_t top = (uint16_t)(r >> 12);
         r = (uint16_t)((uint16_t)(r << 4) ^ (uint16_t)(top << 12) ^ (uint16_t)(top << 5) ^ top);
-        r = (uint16_t)(r ^ mult[(b >> shift) & 0x0Fu]);
+        r = (uint16_t)(r ^ mult[((unsigned)b >> (12u - 4u * k)) & 0x0Fu]);
     }
     return r;
 }

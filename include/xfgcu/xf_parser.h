@@ -103,6 +103,14 @@ XF_API size_t xf_parser_pending(const xf_parser *p);
  */
 XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
 
+/**
+ * The input has ended (end of file, link closed): give up the candidates
+ * that can no longer complete and return the intact frames behind them.
+ * Call until it returns XF_PARSE_MORE; then nothing is pending. The bytes
+ * given up count as skipped.
+ */
+XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame);
+
 #if XF_EMIT_DEFINITIONS
 
 #define XF__RMASK (XF_PARSER_RING - 1u)
@@ -346,6 +354,27 @@ static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
         /* Positions up to `look` were examined already: no candidate there,
          * or a contender that failed. Jump over them. */
         xf__drop_to(p, (p->look_done || p->look > p->head + 1u) ? p->look : p->head + 1u);
+    }
+}
+
+XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame)
+{
+    if (p == NULL || frame == NULL) {
+        return XF_ERR_ARG;
+    }
+    for (;;) {
+        size_t need = 0;
+        if (xf__scan(p, frame, &need)) {
+            return XF_PARSE_FRAME;
+        }
+        if (p->end == p->head) {
+            return XF_PARSE_MORE;
+        }
+        /* The earliest candidate needs bytes that will never come. */
+        if (!p->memo_on) {
+            xf__memo_start(p);
+        }
+        xf__drop_to(p, (p->look > p->head + 1u) ? p->look : p->head + 1u);
     }
 }
 
