@@ -198,15 +198,20 @@ xf_err xf_serial_open(xf_serial *s, const char *path, uint32_t baud)
     snprintf(s->path, sizeof(s->path), "%s", path);
     s->baud = baud;
     if (!xf_serial_baud_ok(baud)) {
-        return xf__fail(&s->error, XF_ERR_RANGE, "baud %u: the GCU speaks 115200, 250000, 500000 or 1000000",
-                        (unsigned)baud);
+        err = xf__fail(&s->error, XF_ERR_RANGE, "baud %u: the GCU speaks 115200, 250000, 500000 or 1000000",
+                       (unsigned)baud);
+    } else {
+        err = xf__serial_try_open(s);
     }
-    err = xf__serial_try_open(s);
-    if (err == XF_OK) {
-        s->stats.opens++;
-        s->backoff_ms = XF_SERIAL_RETRY_MIN_MS;
+    if (err != XF_OK) {
+        /* A link that failed to open is closed, like after xf_serial_close:
+         * only a hang-up of an open link arms the reopening. */
+        s->path[0] = '\0';
+        return err;
     }
-    return err;
+    s->stats.opens++;
+    s->backoff_ms = XF_SERIAL_RETRY_MIN_MS;
+    return XF_OK;
 }
 
 void xf_serial_close(xf_serial *s)

@@ -288,6 +288,45 @@ static void test_no_device(void **state)
     assert_int_equal(f->s.stats.opens, 0);
 }
 
+/* A link whose open failed is closed: its HAL says so and never opens the
+ * path by itself, even once the path works (or at a refused baud rate). */
+static void test_failed_open_stays_closed(void **state)
+{
+    fixture *f = *state;
+    char path[192];
+    uint8_t buf[16];
+    size_t n = 7;
+    uint32_t t0;
+
+    assert_xf(xf_serial_open(&f->s, f->link, 9600), XF_ERR_RANGE);
+    xf_serial_hal(&f->s, &f->hal);
+    t0 = ht_now();
+    while (ht_since(t0) < 80u) {
+        assert_xf(f->hal.read(f->hal.ctx, buf, sizeof(buf), &n), XF_ERR_CLOSED);
+        assert_int_equal(n, 0);
+        ht_sleep_ms(5);
+    }
+    assert_xf(f->hal.write(f->hal.ctx, buf, sizeof(buf)), XF_ERR_CLOSED);
+    assert_int_equal(f->s.stats.opens, 0);
+    assert_int_equal(xf_hal_fd(&f->hal), -1);
+    assert_contains(f->s.error.text, "9600");
+
+    /* not there at open time, there later: still closed until opened again */
+    snprintf(path, sizeof(path), "%s/later", f->dir);
+    assert_xf(xf_serial_open(&f->s, path, 115200), XF_ERR_NOT_FOUND);
+    assert_int_equal(symlink(f->pty.slave, path), 0);
+    t0 = ht_now();
+    while (ht_since(t0) < 80u) {
+        assert_xf(f->hal.read(f->hal.ctx, buf, sizeof(buf), &n), XF_ERR_CLOSED);
+        ht_sleep_ms(5);
+    }
+    assert_int_equal(f->s.stats.opens, 0);
+    assert_contains(f->s.error.text, "No such file");
+    assert_xf(xf_serial_open(&f->s, path, 115200), XF_OK);
+    assert_int_equal(f->s.stats.opens, 1);
+    unlink(path);
+}
+
 static void test_not_a_terminal(void **state)
 {
     fixture *f = *state;
@@ -426,6 +465,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_hangup_and_reopen, setup, teardown),
         cmocka_unit_test_setup_teardown(test_close_stays_closed, setup, teardown),
         cmocka_unit_test_setup_teardown(test_no_device, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_failed_open_stays_closed, setup, teardown),
         cmocka_unit_test_setup_teardown(test_not_a_terminal, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bad_baud_and_args, setup, teardown),
         cmocka_unit_test_setup_teardown(test_permission_denied, setup, teardown),
