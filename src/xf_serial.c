@@ -268,6 +268,18 @@ static int xf__serial_ready(xf_serial *s)
     return 0;
 }
 
+/* A transfer failed, but the line is not gone. xf_hal allows XF_ERR_IO
+ * here, not the errno's own code (ETIMEDOUT would become XF_ERR_TIMEOUT). */
+static xf_err xf__serial_io(xf_serial *s, int e, const char *what)
+{
+    if (e == ETIMEDOUT) {
+        return xf__fail(&s->error, XF_ERR_IO, "%s %s: driver buffer full for %d ms", what, s->path,
+                        XF_SERIAL_WRITE_TIMEOUT_MS);
+    }
+    (void)xf__os_fail(&s->error, e, "%s %s", what, s->path);
+    return XF_ERR_IO;
+}
+
 static xf_err xf__serial_write(void *ctx, const uint8_t *data, size_t len)
 {
     xf_serial *s = (xf_serial *)ctx;
@@ -279,7 +291,7 @@ static xf_err xf__serial_write(void *ctx, const uint8_t *data, size_t len)
         enum sp_return r = sp_blocking_write(s->port, data, len, XF_SERIAL_WRITE_TIMEOUT_MS);
         if (r < 0) {
             e = sp_last_error_code();
-            return (e == EIO || e == ENXIO) ? xf__serial_lost(s, e) : xf__os_fail(&s->error, e, "write %s", s->path);
+            return (e == EIO || e == ENXIO) ? xf__serial_lost(s, e) : xf__serial_io(s, e, "write");
         }
         if ((size_t)r != len) {
             return xf__fail(&s->error, XF_ERR_IO, "write %s: driver buffer full for %d ms", s->path,
@@ -288,7 +300,7 @@ static xf_err xf__serial_write(void *ctx, const uint8_t *data, size_t len)
     } else {
         e = xf__write_all(s->fd, data, len, XF_SERIAL_WRITE_TIMEOUT_MS, 0);
         if (e != 0) {
-            return (e == EIO || e == ENXIO) ? xf__serial_lost(s, e) : xf__os_fail(&s->error, e, "write %s", s->path);
+            return (e == EIO || e == ENXIO) ? xf__serial_lost(s, e) : xf__serial_io(s, e, "write");
         }
     }
     s->stats.bytes_tx += (uint32_t)len;
@@ -311,7 +323,7 @@ static xf_err xf__serial_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_l
     pfd.events = POLLIN;
     pfd.revents = 0;
     if (poll(&pfd, 1, 0) < 0) {
-        return (errno == EINTR) ? XF_OK : xf__os_fail(&s->error, errno, "poll %s", s->path);
+        return (errno == EINTR) ? XF_OK : xf__serial_io(s, errno, "poll");
     }
     if ((pfd.revents & POLLIN) == 0) {
         return (pfd.revents & (POLLHUP | POLLERR | POLLNVAL)) ? xf__serial_lost(s, EIO) : XF_OK;
@@ -320,7 +332,7 @@ static xf_err xf__serial_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_l
         enum sp_return r = sp_nonblocking_read(s->port, buf, cap);
         if (r < 0) {
             int e = sp_last_error_code();
-            return (e == EIO || e == ENXIO) ? xf__serial_lost(s, e) : xf__os_fail(&s->error, e, "read %s", s->path);
+            return (e == EIO || e == ENXIO) ? xf__serial_lost(s, e) : xf__serial_io(s, e, "read");
         }
         n = (ssize_t)r;
     } else {
@@ -329,8 +341,7 @@ static xf_err xf__serial_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_l
             if (errno == EAGAIN || errno == EINTR) {
                 return XF_OK;
             }
-            return (errno == EIO || errno == ENXIO) ? xf__serial_lost(s, errno)
-                                                    : xf__os_fail(&s->error, errno, "read %s", s->path);
+            return (errno == EIO || errno == ENXIO) ? xf__serial_lost(s, errno) : xf__serial_io(s, errno, "read");
         }
     }
     if (n == 0) {

@@ -149,7 +149,12 @@ static xf_err xf__udp_write(void *ctx, const uint8_t *data, size_t len)
         }
         /* An ICMP error from an earlier datagram (nobody on 2337 yet) is
          * reported here; it says nothing about this one, which is gone. */
-        return (errno == ECONNREFUSED) ? XF_OK : xf__os_fail(&u->error, errno, "send UDP datagram");
+        if (errno == ECONNREFUSED) {
+            return XF_OK;
+        }
+        /* xf_hal allows XF_ERR_IO here, whatever the errno maps to. */
+        (void)xf__os_fail(&u->error, errno, "send UDP datagram");
+        return XF_ERR_IO;
     }
     if ((size_t)w != len) {
         return xf__fail(&u->error, XF_ERR_IO, "send UDP datagram: %zd of %zu bytes", w, len);
@@ -180,7 +185,8 @@ static xf_err xf__udp_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
             if (errno == EAGAIN || errno == EWOULDBLOCK || errno == ECONNREFUSED) {
                 break;
             }
-            return xf__os_fail(&u->error, errno, "receive UDP datagram");
+            (void)xf__os_fail(&u->error, errno, "receive UDP datagram");
+            return XF_ERR_IO;
         }
         if (!u->accept_any && !xf__same_peer(&from, &u->gcu)) {
             u->stats.foreign++;

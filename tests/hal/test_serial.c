@@ -171,6 +171,33 @@ static void test_host_packet_in_one_piece(void **state)
     assert_int_equal(f->s.stats.bytes_tx, len);
 }
 
+/* Nobody reads the other end: once the pty's buffer is full, a write gives
+ * up after its bound (100 ms) with XF_ERR_IO, as xf_posix.h promises. */
+static void test_write_full_buffer(void **state)
+{
+    fixture *f = *state;
+    uint8_t pkt[XF_PACKET_LIMIT];
+    size_t len = ht_host_packet(pkt, sizeof(pkt), 5), i;
+    xf_err err = XF_OK;
+    uint32_t t0 = ht_now(), took = 0;
+    open_link(f, f->link);
+    for (i = 0; i < 100000u && ht_since(t0) < 5000u; i++) {
+        uint32_t w0 = ht_now();
+        err = f->hal.write(f->hal.ctx, pkt, len);
+        took = ht_since(w0);
+        if (err != XF_OK) {
+            break;
+        }
+    }
+    assert_xf(err, XF_ERR_IO);
+    assert_true(took >= 90u);
+    assert_true(took < 1000u);
+    assert_contains(f->s.error.text, f->link);
+    assert_contains(f->s.error.text, "buffer full");
+    assert_int_equal(f->s.stats.losses, 0); /* a full buffer is not a hang-up */
+    assert_string_equal(xf_serial_backend(&f->s), "termios");
+}
+
 /* Read the link until it reports XF_ERR_CLOSED, at most @p ms; the time taken or -1. */
 static long read_until_closed(fixture *f, uint32_t ms)
 {
@@ -462,6 +489,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_force_termios, setup, teardown),
         cmocka_unit_test_setup_teardown(test_fragmented_gcu_packet, setup, teardown),
         cmocka_unit_test_setup_teardown(test_host_packet_in_one_piece, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_write_full_buffer, setup, teardown),
         cmocka_unit_test_setup_teardown(test_hangup_and_reopen, setup, teardown),
         cmocka_unit_test_setup_teardown(test_close_stays_closed, setup, teardown),
         cmocka_unit_test_setup_teardown(test_no_device, setup, teardown),

@@ -329,6 +329,31 @@ static void test_lsp_hangup_and_reopen(void **state)
     assert_memory_equal(buf, pkt, len);
 }
 
+/* Nobody reads the other end: sp_blocking_write gives up after 100 ms, XF_ERR_IO. */
+static void test_lsp_write_full_buffer(void **state)
+{
+    fixture *f = *state;
+    uint8_t pkt[XF_PACKET_LIMIT];
+    size_t len = ht_host_packet(pkt, sizeof(pkt), 5), i;
+    xf_err err = XF_OK;
+    uint32_t t0 = ht_now(), took = 0;
+    open_lsp(f);
+    for (i = 0; i < 100000u && ht_since(t0) < 5000u; i++) {
+        uint32_t w0 = ht_now();
+        err = f->hal.write(f->hal.ctx, pkt, len);
+        took = ht_since(w0);
+        if (err != XF_OK) {
+            break;
+        }
+    }
+    assert_xf(err, XF_ERR_IO);
+    assert_true(took >= 90u);
+    assert_true(took < 1000u);
+    assert_contains(f->s.error.text, "buffer full");
+    assert_int_equal(f->s.stats.losses, 0);
+    assert_string_equal(xf_serial_backend(&f->s), "libserialport");
+}
+
 static int count_fds(void)
 {
     DIR *d = opendir("/proc/self/fd");
@@ -391,6 +416,7 @@ static int run_lsp_tests(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_lsp_bytes_both_ways, setup, teardown),
         cmocka_unit_test_setup_teardown(test_lsp_fragmented_gcu_packet, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_lsp_write_full_buffer, setup, teardown),
         cmocka_unit_test_setup_teardown(test_lsp_hangup_and_reopen, setup, teardown),
         cmocka_unit_test_setup_teardown(test_lsp_refused_falls_back_to_termios, setup, teardown),
         cmocka_unit_test(test_lsp_list),

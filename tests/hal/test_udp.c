@@ -9,8 +9,11 @@
 #include <arpa/inet.h>
 #include <errno.h>
 #include <netinet/in.h>
+#include <sched.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "hal_test.h"
@@ -339,6 +342,77 @@ static void test_ipv6_loopback(void **state)
     close(g);
 }
 
+/*
+ * A send the kernel refuses returns XF_ERR_IO, the only failure xf_hal
+ * allows a write besides AGAIN and CLOSED (not the errno's own mapping,
+ * e.g. XF_ERR_NOT_FOUND for ENETUNREACH), with the reason in the text.
+ * Provoked in a child in a fresh network namespace, whose loopback is
+ * down: sending to 127.0.0.1 there fails with ENETUNREACH, and nothing can
+ * leave the namespace.
+ */
+enum { SEND_OK = 0, SEND_WRONG_CODE = 1, SEND_WRONG_TEXT = 2, SEND_SKIP = 3 };
+
+static int send_error_child(void)
+{
+    xf_udp u;
+    xf_udp_config cfg;
+    xf_hal hal;
+    uint8_t pkt[XF_PACKET_LIMIT];
+    size_t len = ht_host_packet(pkt, sizeof(pkt), 1);
+    xf_err err;
+    if (unshare(CLONE_NEWNET) != 0) {
+        return SEND_SKIP;
+    }
+    xf_udp_config_init(&cfg);
+    cfg.gcu_host = "127.0.0.1";
+    cfg.local_port = 0; /* any address: 127.0.0.1 is not up in here */
+    if (xf_udp_open(&u, &cfg) != XF_OK) {
+        fprintf(stderr, "child: xf_udp_open: %s\n", u.error.text);
+        return SEND_SKIP;
+    }
+    xf_udp_hal(&u, &hal);
+    err = hal.write(hal.ctx, pkt, len);
+    if (err != XF_ERR_IO) {
+        fprintf(stderr, "child: write: %d (%s): %s\n", (int)err, xf_strerror(err), u.error.text);
+        return SEND_WRONG_CODE;
+    }
+    if (u.error.os_errno != ENETUNREACH || strstr(u.error.text, "send UDP datagram") == NULL) {
+        fprintf(stderr, "child: error text: %s\n", u.error.text);
+        return SEND_WRONG_TEXT;
+    }
+    xf_udp_close(&u);
+    return SEND_OK;
+}
+
+static void test_send_error_is_io(void **state)
+{
+    pid_t pid;
+    int status = 0;
+    uint32_t t0;
+    (void)state;
+    fflush(NULL);
+    pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        alarm(5);
+        _exit(send_error_child());
+    }
+    t0 = ht_now();
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+        if (ht_since(t0) > 5000u) {
+            kill(pid, SIGKILL);
+            (void)waitpid(pid, &status, 0);
+            fail_msg("the child did not finish");
+        }
+        ht_sleep_ms(2);
+    }
+    assert_true(WIFEXITED(status));
+    if (WEXITSTATUS(status) == SEND_SKIP) {
+        skip(); /* no network namespace here (not root): nothing to test */
+    }
+    assert_int_equal(WEXITSTATUS(status), SEND_OK);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -352,6 +426,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_bad_host, setup, teardown),
         cmocka_unit_test_setup_teardown(test_closed, setup, teardown),
         cmocka_unit_test(test_ipv6_loopback),
+        cmocka_unit_test(test_send_error_is_io),
     };
     return cmocka_run_group_tests_name("udp (loopback)", tests, NULL, NULL);
 }
