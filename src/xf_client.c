@@ -11,7 +11,6 @@
 #define XF_CTRL_RATES 1u
 #define XF_CTRL_ANGLES 2u
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
-#define XF_STALE_REPLY_BUDGET_MAX 3u
 
 void xf_client_config_init(xf_client_config *cfg)
 {
@@ -202,16 +201,9 @@ static void xf__match(xf_client *c, const xf_gcu_packet *p)
     }
     cmd = &c->queue[c->q_head].cmd;
     if (p->order != cmd->order) {
-        /* Replies come in order: after one that answers an earlier, different
-         * packet, no late reply to a previous command of this order can follow. */
-        c->ignored = 0;
         return;
     }
     if (xf_feedback_decode(p->order, p->params, p->params_len, &fb) != XF_OK || !fb.has_state) {
-        return;
-    }
-    if (c->ignored > 0u) {
-        c->ignored--; /* may answer a packet sent before this command: not ours */
         return;
     }
     switch (fb.result) {
@@ -365,11 +357,17 @@ static const xf_command *xf__next_order(xf_client *c)
 {
     if (!c->active && c->q_count > 0u && c->nulls_owed == 0u) {
         const xf_command *cmd = &c->queue[c->q_head].cmd;
+        if (c->guard_open && cmd->order == c->guard_order && c->health.link != XF_LINK_DOWN) {
+            /* Replies to the previous packets of this order may still be on
+             * their way, each with that command's state. Replies come in
+             * order: keep sending nulls until one of theirs is back, then
+             * every reply of this order answers this command. */
+            return NULL;
+        }
         c->active = 1;
         c->operating = 0;
         c->packets = 0;
         c->started_ms = c->now_ms;
-        c->ignored = (c->guard_open && cmd->order == c->guard_order) ? XF_STALE_REPLY_BUDGET_MAX : 0u;
     }
     if (c->active) {
         return &c->queue[c->q_head].cmd;
@@ -609,6 +607,10 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
     xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
     if (c->stream_on) {
         cmd.cameras = c->stream.cameras;
+        /* The stream's replies (same order, with their own state) may still
+         * be in flight: the exit's result must be its own. */
+        c->guard_order = XF_ORDER_EXTERNAL_TRACK;
+        c->guard_open = 1;
     }
     c->stream_on = 0;
     return xf_client_submit(c, &cmd, id, NULL); /* value 0: exit */

@@ -21,10 +21,12 @@
  * Commands run the way the protocol wants: null packets by default; a
  * command is sent in every packet until a reply carries its execution
  * state; then null packets again, so two commands of the same order are
- * always separated by a null. A reply for the command's order is taken
- * only once a reply to an earlier, different packet has come back (so a
- * late reply to a previous command of the same order is not mistaken for
- * this one's). Calibration's "operating" keeps it going until its final
+ * always separated by a null. A command of the same order as the last one
+ * (or the exit of a stopped external-track stream) starts only once a
+ * reply to a later, different packet has come back (nulls are sent until
+ * then; not while the link is down), so a late reply to the previous
+ * command of that order is never mistaken for this one's, however long
+ * the link's delay. Calibration's "operating" keeps it going until its final
  * state. Results: ok, failed (with the failed-camera mask), timeout,
  * link lost; by callback and by polling the command's id.
  *
@@ -198,9 +200,8 @@ typedef struct xf_client {
     xf_cmd_slot queue[XF_CLIENT_QUEUE];
     uint8_t q_head, q_count;
     uint8_t active;           /* queue[q_head] is being sent */
-    uint8_t ignored;          /* replies of its order still to ignore (may answer an earlier command) */
-    uint8_t guard_order;      /* order of the last finished command */
-    uint8_t guard_open;       /* no reply of another order seen since it finished */
+    uint8_t guard_order;      /* order of the last finished command (or of the stopped stream) */
+    uint8_t guard_open;       /* no reply of another order seen since: a command of guard_order waits */
     uint8_t operating;
     uint8_t nulls_owed;       /* null packets to send before the next command */
     uint16_t packets;
