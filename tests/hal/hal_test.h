@@ -5,8 +5,8 @@
  * loopback sockets. Every wait here is bounded by a deadline, so a broken
  * link fails a test instead of hanging it.
  *
- * Include after the feature-test macros and before nothing else: it pulls
- * in cmocka (which needs setjmp.h, stdarg.h and stddef.h first).
+ * Include it after the feature-test macros (_GNU_SOURCE); it includes
+ * cmocka itself, with the headers cmocka needs before it.
  */
 #ifndef XFGCU_HAL_TEST_H
 #define XFGCU_HAL_TEST_H
