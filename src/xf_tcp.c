@@ -225,7 +225,8 @@ xf_err xf_tcp_wait(xf_tcp *t, uint32_t timeout_ms)
     while (!xf__tcp_service(t)) {
         struct pollfd pfd;
         if (xf_ms_since(xf_posix_now_ms(), start) >= timeout_ms) {
-            if (t->error.text[0] == '\0') {
+            /* A refusal says more than "no answer"; an attempt still in progress does not. */
+            if (t->state == XF_TCP_CONNECTING || t->error.text[0] == '\0') {
                 xf__fail(&t->error, XF_ERR_TIMEOUT, "connect to %s:%u: no answer in %u ms", t->host,
                          (unsigned)t->cfg.port, (unsigned)timeout_ms);
             }

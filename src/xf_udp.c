@@ -16,6 +16,8 @@
 #include "xf_posix_internal.h"
 #include "xfgcu/xf_protocol.h"
 
+#define XF_UDP_READS_MAX 64u /* datagrams one read may take, foreign ones included */
+
 void xf_udp_config_init(xf_udp_config *cfg)
 {
     if (cfg != NULL) {
@@ -74,6 +76,16 @@ static int xf__same_peer(const struct sockaddr_storage *a, const struct sockaddr
     return 0;
 }
 
+/* From the GCU? With `broadcast` the host sends to a broadcast address, so
+ * the GCU's own address is not known: its source port says it is the GCU. */
+static int xf__from_gcu(const xf_udp *u, const struct sockaddr_storage *from)
+{
+    if (u->broadcast) {
+        return from->ss_family == u->gcu.ss_family && xf__port_of(from) == xf__port_of(&u->gcu);
+    }
+    return xf__same_peer(from, &u->gcu);
+}
+
 xf_err xf_udp_open(xf_udp *u, const xf_udp_config *cfg)
 {
     xf_udp_config def;
@@ -91,6 +103,7 @@ xf_err xf_udp_open(xf_udp *u, const xf_udp_config *cfg)
     memset(u, 0, sizeof(*u));
     u->fd = -1;
     u->accept_any = cfg->accept_any;
+    u->broadcast = cfg->broadcast;
     err = xf__resolve(&u->error, cfg->gcu_host != NULL ? cfg->gcu_host : XF_GCU_DEFAULT_ADDRESS, cfg->gcu_port,
                       AF_UNSPEC, 0, &u->gcu, &u->gcu_len);
     if (err != XF_OK) {
@@ -168,13 +181,15 @@ static xf_err xf__udp_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
 {
     xf_udp *u = (xf_udp *)ctx;
     size_t n = 0;
+    unsigned tries;
     *out_len = 0;
     if (u->fd < 0) {
         return XF_ERR_CLOSED;
     }
     /* Whole datagrams, while a whole packet still fits (at least one: a
-     * caller with a small buffer gets the datagram's first cap bytes). */
-    while ((n == 0 && cap > 0) || cap - n >= XF_PACKET_LIMIT) {
+     * caller with a small buffer gets the datagram's first cap bytes), and
+     * a bounded number of them, so a flood cannot hold the caller here. */
+    for (tries = 0; tries < XF_UDP_READS_MAX && ((n == 0 && cap > 0) || cap - n >= XF_PACKET_LIMIT); tries++) {
         struct sockaddr_storage from;
         socklen_t from_len = sizeof(from);
         ssize_t r = recvfrom(u->fd, buf + n, cap - n, 0, (struct sockaddr *)&from, &from_len);
@@ -188,7 +203,7 @@ static xf_err xf__udp_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
             (void)xf__os_fail(&u->error, errno, "receive UDP datagram");
             return XF_ERR_IO;
         }
-        if (!u->accept_any && !xf__same_peer(&from, &u->gcu)) {
+        if (!u->accept_any && !xf__from_gcu(u, &from)) {
             u->stats.foreign++;
             continue;
         }

@@ -8,6 +8,9 @@
  * xf_hal with xf_*_hal(). A link is not thread-safe: drive it from one
  * thread (xf_hal's functions are meant for a single client loop).
  *
+ * Open a link on zeroed or closed storage: opening an open link again
+ * loses its descriptor (close it first).
+ *
  * Errors carry the operating system's reason: after a failure,
  * link->error.text says what failed and why, in one line, e.g.
  * "open /dev/ttyUSB0: Permission denied".
@@ -103,7 +106,8 @@ typedef struct xf_udp_config {
     const char *local_host; /**< address to bind, default any */
     uint16_t local_port;    /**< default 2338; 0 = any free port */
     uint8_t accept_any;     /**< accept datagrams from any source (default: only gcu_host:gcu_port) */
-    uint8_t broadcast;      /**< allow sending to a broadcast address */
+    uint8_t broadcast;      /**< gcu_host is a broadcast address: send there, and take replies from any
+                                 address whose source port is gcu_port */
 } xf_udp_config;
 
 typedef struct xf_udp {
@@ -111,6 +115,7 @@ typedef struct xf_udp {
     struct sockaddr_storage gcu;
     socklen_t gcu_len;
     uint8_t accept_any;
+    uint8_t broadcast;
     uint16_t local_port; /**< the port bound (useful with local_port 0) */
     xf_link_stats stats;
     xf_os_error error;

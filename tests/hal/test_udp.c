@@ -253,6 +253,57 @@ static void test_accept_any(void **state)
     close(foreign);
 }
 
+/* A UDP socket bound to 127.0.0.2:@p port (the loopback net is all of 127/8 on Linux). */
+static int socket_at_127_0_0_2(uint16_t port)
+{
+    struct sockaddr_in a;
+    int fd = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+    if (fd < 0) {
+        return -1;
+    }
+    memset(&a, 0, sizeof(a));
+    a.sin_family = AF_INET;
+    a.sin_port = htons(port);
+    (void)inet_pton(AF_INET, "127.0.0.2", &a.sin_addr);
+    if (bind(fd, (struct sockaddr *)&a, sizeof(a)) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+/* With `broadcast` the GCU's address is unknown (the host sends to a
+ * broadcast address): a reply from any address is the GCU's when it comes
+ * from the GCU's port, and foreign otherwise. */
+static void test_broadcast_takes_gcu_port_from_any_address(void **state)
+{
+    fixture *f = *state;
+    xf_udp bc;
+    xf_udp_config cfg;
+    xf_hal hal;
+    uint8_t pkt[XF_PACKET_LIMIT], other[XF_PACKET_LIMIT], buf[1024];
+    size_t len = ht_gcu_packet(pkt, sizeof(pkt), 12), olen = ht_gcu_packet(other, sizeof(other), 34), n = 0;
+    uint16_t foreign_port = 0;
+    int gcu_elsewhere = socket_at_127_0_0_2(f->gcu_port);
+    int foreign = bound_socket(AF_INET, "127.0.0.1", &foreign_port);
+    assert_true(gcu_elsewhere >= 0);
+    assert_true(foreign >= 0);
+    link_config(f, &cfg);
+    cfg.broadcast = 1;
+    assert_xf(xf_udp_open(&bc, &cfg), XF_OK);
+    xf_udp_hal(&bc, &hal);
+
+    send_to(foreign, bc.local_port, other, olen);   /* right address, wrong port */
+    send_to(gcu_elsewhere, bc.local_port, pkt, len); /* other address, the GCU's port */
+    n = ht_hal_read_until(&hal, buf, len, 1000, NULL);
+    assert_int_equal(n, len);
+    assert_memory_equal(buf, pkt, len);
+    assert_int_equal(bc.stats.foreign, 1);
+    xf_udp_close(&bc);
+    close(gcu_elsewhere);
+    close(foreign);
+}
+
 /* A second link on a port in use: XF_ERR_BUSY, and the text names the port. */
 static void test_port_in_use(void **state)
 {
@@ -422,6 +473,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_read_small_buffer, setup, teardown),
         cmocka_unit_test_setup_teardown(test_foreign_source_ignored, setup, teardown),
         cmocka_unit_test_setup_teardown(test_accept_any, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_broadcast_takes_gcu_port_from_any_address, setup, teardown),
         cmocka_unit_test_setup_teardown(test_port_in_use, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bad_host, setup, teardown),
         cmocka_unit_test_setup_teardown(test_closed, setup, teardown),
