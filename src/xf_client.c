@@ -234,6 +234,7 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     c->health.replies++;
     c->window_replies++;
     c->health.last_rx_ms = c->now_ms;
+    c->hal_closed = 0; /* a GCU answers over the (reopened) transport */
     if (p.order != c->guard_order) {
         c->guard_open = 0; /* the separating null's reply: no late reply of guard_order can follow */
     }
@@ -259,7 +260,6 @@ static xf_err xf__receive(xf_client *c)
         if (err != XF_OK) {
             return err;
         }
-        c->hal_closed = 0;
         if (n == 0u) {
             break;
         }
@@ -407,7 +407,6 @@ static xf_err xf__send(xf_client *c)
         }
         return err;
     }
-    c->hal_closed = 0;
     c->health.packets_sent++;
     c->window_sent++;
     if (c->active) {

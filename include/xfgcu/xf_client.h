@@ -60,7 +60,7 @@ XF_BEGIN_DECLS
 
 /** Link health. */
 typedef enum xf_link_state {
-    XF_LINK_DOWN = 0,  /**< no valid reply for down_ms (or never), or the transport is closed */
+    XF_LINK_DOWN = 0,  /**< no valid reply for down_ms (or never), or the transport was closed and no valid reply came since */
     XF_LINK_STALE = 1, /**< no valid reply for stale_ms */
     XF_LINK_UP = 2
 } xf_link_state;
