@@ -1,0 +1,911 @@
+/*
+ * test_parser.c - xf_parser.h, the streaming parser.
+ *
+ * The central property: fed a stream in any chunking, the parser returns
+ * every intact frame, byte-identical and in order, whatever noise, false
+ * starts, stray header bytes and bogus lengths lie between them; its
+ * counters only grow and always satisfy
+ *     bytes_in == bytes of returned frames + bytes_skipped + pending.
+ *
+ * Random streams are checked against a brute-force reference scan written
+ * here (at each position: a header, a length in [72, XF_PACKET_MAX_LEN]
+ * and a right CRC make a frame, else move one byte on), and the frames the
+ * generator meant to send must all be among the reference's frames. The
+ * parser may return a frame earlier than the reference would (it checks a
+ * "contender" that ends before an incomplete bogus-length candidate), but
+ * the frames themselves are the same unless two intact frames overlap,
+ * which these streams never contain.
+ */
+#include <stdlib.h>
+#include "test_util.h"
+
+/* ---- harness: feed, collect, check the counters after every call -------- */
+
+#define MAX_FRAMES 40000
+#define MAX_OUT (4u << 20)
+
+typedef struct harness {
+    xf_parser p;
+    xf_direction dir;
+    xf_parser_stats last;
+    uint64_t frame_bytes;
+    size_t nframes;
+    size_t wrapped; /* frames returned from the parser's scratch copy (spanned the ring's end) */
+    uint8_t *out;   /* the frames returned, concatenated */
+    size_t out_len;
+    size_t *lens;
+} harness;
+
+static void harness_init(harness *h, xf_direction dir)
+{
+    memset(h, 0, sizeof(*h));
+    h->dir = dir;
+    assert_err(xf_parser_init(&h->p, dir), XF_OK);
+    h->out = (uint8_t *)malloc(MAX_OUT);
+    h->lens = (size_t *)malloc(MAX_FRAMES * sizeof(size_t));
+    assert_non_null(h->out);
+    assert_non_null(h->lens);
+}
+
+static void harness_free(harness *h)
+{
+    free(h->out);
+    free(h->lens);
+    h->out = NULL;
+    h->lens = NULL;
+}
+
+static void check_counters(harness *h)
+{
+    const xf_parser_stats *s = &h->p.stats;
+    /* never decrease */
+    assert_true(s->bytes_in >= h->last.bytes_in);
+    assert_true(s->frames >= h->last.frames);
+    assert_true(s->crc_errors >= h->last.crc_errors);
+    assert_true(s->length_errors >= h->last.length_errors);
+    assert_true(s->bytes_skipped >= h->last.bytes_skipped);
+    /* every byte in is in a frame, skipped, or still held */
+    if ((uint64_t)s->bytes_in != h->frame_bytes + s->bytes_skipped + xf_parser_pending(&h->p)) {
+        print_error("bytes_in %u != frames %llu + skipped %u + pending %zu\n", s->bytes_in,
+                    (unsigned long long)h->frame_bytes, s->bytes_skipped, xf_parser_pending(&h->p));
+        fail();
+    }
+    assert_int_equal(s->frames, h->nframes);
+    assert_true(xf_parser_pending(&h->p) <= XF_PACKET_MAX_LEN);
+    h->last = *s;
+}
+
+/* Feed one chunk, draining every frame it completes. Returns the number of
+ * frames it produced. */
+static size_t harness_feed(harness *h, const uint8_t *data, size_t len)
+{
+    size_t produced = 0;
+    for (;;) {
+        xf_frame f;
+        size_t used = (size_t)-1;
+        int rc;
+        memset(&f, 0, sizeof(f));
+        rc = xf_parser_feed(&h->p, data, len, &used, &f);
+        if (rc != XF_PARSE_FRAME && rc != XF_PARSE_MORE) {
+            print_error("xf_parser_feed returned %d\n", rc);
+            fail();
+        }
+        assert_true(used <= len);
+        if (rc == XF_PARSE_MORE) {
+            assert_int_equal(used, len); /* MORE means every byte was taken */
+        } else {
+            assert_non_null(f.data);
+            assert_true(f.len >= 72u && f.len <= XF_PACKET_MAX_LEN);
+            assert_err(xf_packet_check(f.data, f.len, h->dir), XF_OK);
+            assert_true(h->nframes < MAX_FRAMES && h->out_len + f.len <= MAX_OUT);
+            memcpy(h->out + h->out_len, f.data, f.len);
+            h->out_len += f.len;
+            h->lens[h->nframes++] = f.len;
+            h->frame_bytes += f.len;
+            if (f.data == h->p.scratch) {
+                h->wrapped++;
+            }
+            produced++;
+        }
+        check_counters(h);
+        if (used > 0u) {
+            data += used;
+            len -= used;
+        }
+        if (rc == XF_PARSE_MORE) {
+            return produced;
+        }
+    }
+}
+
+/* ---- stream builder ------------------------------------------------------- */
+
+#define MAX_STREAM (2u << 20)
+
+typedef struct stream {
+    uint8_t *buf;
+    size_t len;
+    size_t nframes; /* frames the generator meant to send */
+    size_t *foff;
+    size_t *flen;
+} stream;
+
+static void stream_init(stream *s)
+{
+    memset(s, 0, sizeof(*s));
+    s->buf = (uint8_t *)malloc(MAX_STREAM);
+    s->foff = (size_t *)malloc(MAX_FRAMES * sizeof(size_t));
+    s->flen = (size_t *)malloc(MAX_FRAMES * sizeof(size_t));
+    assert_non_null(s->buf);
+    assert_non_null(s->foff);
+    assert_non_null(s->flen);
+}
+
+static void stream_free(stream *s)
+{
+    free(s->buf);
+    free(s->foff);
+    free(s->flen);
+}
+
+static void put(stream *s, const uint8_t *p, size_t n)
+{
+    assert_true(s->len + n <= MAX_STREAM);
+    memcpy(s->buf + s->len, p, n);
+    s->len += n;
+}
+
+static void put1(stream *s, uint8_t b) { put(s, &b, 1); }
+
+/* A valid frame: random content, spec header, length and CRC. */
+static size_t make_frame(test_rng *r, xf_direction dir, size_t params_len, uint8_t *out)
+{
+    size_t len = 72u + params_len;
+    rng_fill(r, out, len);
+    ref_finish_packet(out, len, dir);
+    return len;
+}
+
+static size_t random_frame(test_rng *r, xf_direction dir, uint8_t *out)
+{
+    uint32_t k = rng_below(r, 10);
+    size_t plen = (k < 4) ? 0 : (k < 7) ? 1 : (k < 9) ? rng_below(r, 13) : rng_below(r, XF_PARAMS_MAX + 1u);
+    return make_frame(r, dir, plen, out);
+}
+
+static void put_frame(stream *s, const uint8_t *f, size_t n)
+{
+    assert_true(s->nframes < MAX_FRAMES);
+    s->foff[s->nframes] = s->len;
+    s->flen[s->nframes] = n;
+    s->nframes++;
+    put(s, f, n);
+}
+
+/* One piece of junk between frames. */
+static void put_junk(stream *s, test_rng *r, xf_direction dir)
+{
+    uint8_t h0 = (dir == XF_DIR_HOST) ? 0xA8 : 0x8A;
+    uint8_t h1 = (dir == XF_DIR_HOST) ? 0xE5 : 0x5E;
+    uint8_t tmp[256];
+    size_t n, i;
+    switch (rng_below(r, 9)) {
+    case 0: /* noise, rich in first header bytes */
+        n = 1u + rng_below(r, 40);
+        for (i = 0; i < n; i++) {
+            put1(s, (rng_below(r, 6) == 0) ? h0 : rng_u8(r));
+        }
+        break;
+    case 1: /* stray header bytes */
+        switch (rng_below(r, 4)) {
+        case 0: put1(s, h0); break;
+        case 1: put1(s, h0); put1(s, h1); break;
+        case 2: put1(s, h0); put1(s, h0); put1(s, h1); put1(s, 0x48); break;
+        default: put1(s, h1); put1(s, h0); break;
+        }
+        break;
+    case 2: /* a header with a length below 72 */
+        put1(s, h0);
+        put1(s, h1);
+        le_put(tmp, rng_below(r, 72), 2);
+        put(s, tmp, 2);
+        break;
+    case 3: /* a header with a length above 255 */
+        put1(s, h0);
+        put1(s, h1);
+        le_put(tmp, 256u + rng_below(r, 65536u - 256u), 2);
+        put(s, tmp, 2);
+        break;
+    case 4: /* a valid-looking length (0x00FF, 0x0050 or any in [72, 255]) and a few bytes */
+        put1(s, h0);
+        put1(s, h1);
+        i = rng_below(r, 3);
+        le_put(tmp, (i == 0) ? 0xFFu : (i == 1) ? 0x50u : 72u + rng_below(r, 184), 2);
+        put(s, tmp, 2);
+        n = rng_below(r, 12);
+        rng_fill(r, tmp, n);
+        put(s, tmp, n);
+        break;
+    case 5: /* a false start: a frame cut short, before its CRC (cut after
+             * the CRC's first byte, it is intact whenever the next byte
+             * equals the CRC's second: 1 in 256) */
+        n = random_frame(r, dir, tmp);
+        put(s, tmp, 1u + rng_below(r, (uint32_t)n - 2u));
+        break;
+    case 6: /* a whole frame with one bit flipped */
+        n = random_frame(r, dir, tmp);
+        i = rng_below(r, (uint32_t)n * 8u);
+        tmp[i / 8u] ^= (uint8_t)(1u << (i % 8u));
+        put(s, tmp, n);
+        break;
+    case 7: /* a frame of the other direction */
+        n = random_frame(r, (dir == XF_DIR_HOST) ? XF_DIR_GCU : XF_DIR_HOST, tmp);
+        put(s, tmp, n);
+        break;
+    default: /* a frame hidden behind a nested pair of false candidates */
+        put1(s, h0);
+        put1(s, h1);
+        put1(s, 0x50);
+        put1(s, 0x00);
+        put1(s, h0);
+        put1(s, h1);
+        put1(s, 0x4C);
+        put1(s, 0x00);
+        break;
+    }
+}
+
+static void build_stream(stream *s, test_rng *r, xf_direction dir, size_t frames)
+{
+    size_t i, k;
+    uint8_t f[256];
+    for (i = 0; i < frames; i++) {
+        size_t junk = (rng_below(r, 3) == 0) ? 0 : rng_below(r, 4);
+        for (k = 0; k < junk; k++) {
+            put_junk(s, r, dir);
+        }
+        put_frame(s, f, random_frame(r, dir, f));
+    }
+    /* Enough trailing bytes (with no header byte) for any pending bogus
+     * length to complete and fail, so everything is decided at the end. */
+    for (k = 0; k < 300; k++) {
+        put1(s, 0x00);
+    }
+}
+
+/* ---- the reference scan --------------------------------------------------- */
+
+typedef struct ref_out {
+    size_t n;
+    size_t *off;
+    size_t *len;
+} ref_out;
+
+static void ref_scan(const uint8_t *b, size_t n, xf_direction dir, ref_out *o)
+{
+    uint8_t h0 = (dir == XF_DIR_HOST) ? 0xA8 : 0x8A;
+    uint8_t h1 = (dir == XF_DIR_HOST) ? 0xE5 : 0x5E;
+    size_t pos = 0;
+    o->n = 0;
+    while (pos + 4u <= n) {
+        size_t len = (size_t)b[pos + 2] | ((size_t)b[pos + 3] << 8);
+        if (b[pos] == h0 && b[pos + 1] == h1 && len >= 72u && len <= XF_PACKET_MAX_LEN && pos + len <= n &&
+            ref_crc16(b + pos, len - 2u) == (uint16_t)((b[pos + len - 2u] << 8) | b[pos + len - 1u])) {
+            assert_true(o->n < MAX_FRAMES);
+            o->off[o->n] = pos;
+            o->len[o->n] = len;
+            o->n++;
+            pos += len;
+        } else {
+            pos++;
+        }
+    }
+}
+
+/* Compare what a harness collected with the reference frames. */
+static void check_output(const harness *h, const stream *s, const ref_out *o)
+{
+    size_t i, at = 0;
+    if (h->nframes != o->n) {
+        print_error("parser returned %zu frames, reference scan found %zu\n", h->nframes, o->n);
+    }
+    for (i = 0; i < h->nframes && i < o->n; i++) {
+        if (h->lens[i] != o->len[i] || memcmp(h->out + at, s->buf + o->off[i], o->len[i]) != 0) {
+            print_error("frame %zu (stream offset %zu, %zu bytes) differs\n", i, o->off[i], o->len[i]);
+            test_hexdump("got", h->out + at, h->lens[i]);
+            test_hexdump("expected", s->buf + o->off[i], o->len[i]);
+            fail();
+        }
+        at += h->lens[i];
+    }
+    assert_int_equal(h->nframes, o->n);
+}
+
+typedef enum feed_mode { FEED_WHOLE, FEED_BYTES, FEED_CHUNKS, FEED_SMALL_CHUNKS } feed_mode;
+
+/* Build a stream from @p seed whose meant frames are all intact. Junk can,
+ * by chance, form an intact frame that swallows a meant one (a false
+ * candidate whose CRC matches, about 1 in 65536; the parser is right to
+ * return it): the reference scan tells, and the stream is then rebuilt
+ * from the next seed. Returns the seed used. */
+static uint64_t build_clean_stream(stream *s, ref_out *o, test_rng *r, uint64_t seed, xf_direction dir, size_t frames)
+{
+    int attempt;
+    for (attempt = 0; attempt < 20; attempt++, seed += 0x9E3779B9ull) {
+        size_t i, k;
+        int clean = 1;
+        s->len = 0;
+        s->nframes = 0;
+        rng_seed(r, seed);
+        build_stream(s, r, dir, frames);
+        ref_scan(s->buf, s->len, dir, o);
+        for (i = 0, k = 0; i < s->nframes && clean; i++) {
+            while (k < o->n && o->off[k] < s->foff[i]) {
+                k++;
+            }
+            clean = k < o->n && o->off[k] == s->foff[i] && o->len[k] == s->flen[i];
+        }
+        if (clean) {
+            return seed;
+        }
+        print_message("seed %llu: junk swallowed a frame by chance; next seed\n", (unsigned long long)seed);
+    }
+    fail_msg("no clean stream in 20 seeds: the generator is broken");
+    return 0;
+}
+
+/* Returns how many frames came out of the parser's wrap-round copy. */
+static size_t run_stream(uint64_t seed, xf_direction dir, size_t frames, feed_mode mode)
+{
+    stream s;
+    harness h;
+    ref_out o;
+    test_rng r;
+    size_t i, wrapped;
+    stream_init(&s);
+    o.off = (size_t *)malloc(MAX_FRAMES * sizeof(size_t));
+    o.len = (size_t *)malloc(MAX_FRAMES * sizeof(size_t));
+    assert_non_null(o.off);
+    assert_non_null(o.len);
+    /* the reference finds every frame the generator meant */
+    build_clean_stream(&s, &o, &r, seed, dir, frames);
+
+    harness_init(&h, dir);
+    switch (mode) {
+    case FEED_WHOLE:
+        harness_feed(&h, s.buf, s.len);
+        break;
+    case FEED_BYTES:
+        for (i = 0; i < s.len; i++) {
+            harness_feed(&h, s.buf + i, 1);
+        }
+        break;
+    case FEED_CHUNKS:
+    case FEED_SMALL_CHUNKS:
+        for (i = 0; i < s.len;) {
+            size_t n = (mode == FEED_CHUNKS) ? rng_below(&r, 301) : rng_below(&r, 9);
+            if (n > s.len - i) {
+                n = s.len - i;
+            }
+            harness_feed(&h, (n > 0) ? s.buf + i : NULL, n); /* empty chunks too */
+            i += n;
+        }
+        break;
+    }
+    /* a final empty call changes nothing */
+    assert_int_equal(harness_feed(&h, NULL, 0), 0);
+
+    check_output(&h, &s, &o);
+    assert_int_equal(h.p.stats.bytes_in, s.len);
+    assert_int_equal(xf_parser_pending(&h.p), 0);
+    assert_int_equal(h.p.stats.bytes_skipped, s.len - h.frame_bytes);
+    /* the junk did exercise the error paths */
+    assert_true(h.p.stats.crc_errors > 0u);
+    assert_true(h.p.stats.length_errors > 0u);
+    wrapped = h.wrapped;
+
+    harness_free(&h);
+    free(o.off);
+    free(o.len);
+    stream_free(&s);
+    return wrapped;
+}
+
+/* Each test also checks that some frame spanned the end of the parser's
+ * ring (white-box: frames returned from its scratch copy), so the wrap
+ * path is known to have run. */
+static void test_random_stream_whole(void **state)
+{
+    size_t wrapped = 0;
+    (void)state;
+    wrapped += run_stream(0xA11CE5EEDull, XF_DIR_GCU, 3000, FEED_WHOLE);
+    wrapped += run_stream(0x5EED0002ull, XF_DIR_HOST, 3000, FEED_WHOLE);
+    assert_true(wrapped > 0u);
+}
+
+static void test_random_stream_byte_at_a_time(void **state)
+{
+    size_t wrapped = 0;
+    (void)state;
+    wrapped += run_stream(0xB17E5ull, XF_DIR_GCU, 1500, FEED_BYTES);
+    wrapped += run_stream(0xB17E6ull, XF_DIR_HOST, 1500, FEED_BYTES);
+    assert_true(wrapped > 0u);
+}
+
+/* XFGCU_SOAK=n in the environment runs n seeds instead of 4 (a longer
+ * search for parser bugs; the default keeps the suite fast). */
+static void test_random_stream_random_chunks(void **state)
+{
+    uint64_t seed, seeds = 4;
+    size_t wrapped = 0;
+    const char *soak = getenv("XFGCU_SOAK");
+    (void)state;
+    if (soak != NULL && atoi(soak) > 0) {
+        seeds = (uint64_t)atoi(soak);
+    }
+    for (seed = 1; seed <= seeds; seed++) {
+        wrapped += run_stream(0xC4C4000ull + seed, (seed & 1u) ? XF_DIR_GCU : XF_DIR_HOST, 1500, FEED_CHUNKS);
+        wrapped += run_stream(0xD5D5000ull + seed, (seed & 1u) ? XF_DIR_HOST : XF_DIR_GCU, 1000, FEED_SMALL_CHUNKS);
+    }
+    assert_true(wrapped > 0u);
+}
+
+/* ---- deterministic cases -------------------------------------------------- */
+
+static void test_appendix_one_byte_at_a_time(void **state)
+{
+    xf_parser p;
+    xf_frame f;
+    size_t i, used;
+    (void)state;
+    assert_err(xf_parser_init(&p, XF_DIR_HOST), XF_OK);
+    for (i = 0; i < 72; i++) {
+        int rc = xf_parser_feed(&p, appendix1_packet + i, 1, &used, &f);
+        assert_int_equal(used, 1);
+        if (i < 71) {
+            assert_int_equal(rc, XF_PARSE_MORE);
+            assert_int_equal(xf_parser_pending(&p), i + 1u);
+        } else {
+            assert_int_equal(rc, XF_PARSE_FRAME);
+            assert_int_equal(f.len, 72);
+            assert_bytes_equal(f.data, appendix1_packet, 72);
+        }
+    }
+    assert_int_equal(xf_parser_pending(&p), 0);
+    assert_int_equal(p.stats.frames, 1);
+    assert_int_equal(p.stats.bytes_in, 72);
+    assert_int_equal(p.stats.bytes_skipped, 0);
+    assert_int_equal(xf_parser_feed(&p, NULL, 0, &used, &f), XF_PARSE_MORE);
+    assert_int_equal(used, 0);
+}
+
+/* Back-to-back frames in one buffer: each call stops right after a frame. */
+static void test_consumed_stops_at_frame(void **state)
+{
+    test_rng r;
+    uint8_t buf[600];
+    size_t a, b, c, used = 0;
+    xf_parser p;
+    xf_frame f;
+    (void)state;
+    rng_seed(&r, 42);
+    a = make_frame(&r, XF_DIR_GCU, 1, buf);
+    b = make_frame(&r, XF_DIR_GCU, 0, buf + a);
+    c = make_frame(&r, XF_DIR_GCU, XF_PARAMS_MAX, buf + a + b);
+    assert_err(xf_parser_init(&p, XF_DIR_GCU), XF_OK);
+    assert_int_equal(xf_parser_feed(&p, buf, a + b + c, &used, &f), XF_PARSE_FRAME);
+    assert_int_equal(used, a);
+    assert_int_equal(f.len, a);
+    assert_bytes_equal(f.data, buf, a);
+    assert_int_equal(xf_parser_feed(&p, buf + a, b + c, &used, &f), XF_PARSE_FRAME);
+    assert_int_equal(used, b);
+    assert_bytes_equal(f.data, buf + a, b);
+    assert_int_equal(xf_parser_feed(&p, buf + a + b, c, &used, &f), XF_PARSE_FRAME);
+    assert_int_equal(used, c);
+    assert_int_equal(f.len, XF_PACKET_MAX_LEN);
+    assert_bytes_equal(f.data, buf + a + b, c);
+    assert_int_equal(xf_parser_feed(&p, buf, 0, &used, &f), XF_PARSE_MORE);
+    assert_int_equal(p.stats.crc_errors, 0);
+    assert_int_equal(p.stats.length_errors, 0);
+    assert_int_equal(p.stats.bytes_skipped, 0);
+}
+
+/* Host parser ignores GCU frames and the reverse. */
+static void test_direction_filter(void **state)
+{
+    test_rng r;
+    uint8_t gcu[3][256], host[256];
+    size_t gl[3], hl, i;
+    harness h;
+    (void)state;
+    rng_seed(&r, 7);
+    for (i = 0; i < 3; i++) {
+        gl[i] = random_frame(&r, XF_DIR_GCU, gcu[i]);
+    }
+    hl = make_frame(&r, XF_DIR_HOST, 5, host);
+
+    harness_init(&h, XF_DIR_HOST);
+    for (i = 0; i < 3; i++) {
+        assert_int_equal(harness_feed(&h, gcu[i], gl[i]), 0);
+    }
+    assert_int_equal(harness_feed(&h, host, hl), 1);
+    assert_bytes_equal(h.out, host, hl);
+    assert_int_equal(h.p.stats.bytes_skipped, gl[0] + gl[1] + gl[2]);
+    harness_free(&h);
+
+    harness_init(&h, XF_DIR_GCU);
+    assert_int_equal(harness_feed(&h, host, hl), 0);
+    assert_int_equal(harness_feed(&h, appendix1_packet, 72), 0);
+    assert_int_equal(harness_feed(&h, gcu[1], gl[1]), 1);
+    assert_bytes_equal(h.out, gcu[1], gl[1]);
+    harness_free(&h);
+}
+
+/* A header followed by an impossible length is dropped at once: the frame
+ * right after it is not delayed. */
+static void test_bad_lengths_do_not_delay(void **state)
+{
+    static const struct {
+        uint16_t len;
+        uint32_t errors;
+    } cases[] = {{0, 1}, {1, 1}, {71, 1}, {256, 1}, {0x0100, 1}, {0x1000, 1}, {0xFFFF, 1},
+                 /* 8A 5E 8A 5E: the length bytes are the next header: two length errors */
+                 {0x5E8A, 2}};
+    test_rng r;
+    uint8_t buf[300];
+    size_t i, n;
+    (void)state;
+    rng_seed(&r, 99);
+    for (i = 0; i < ARRAY_LEN(cases); i++) {
+        harness h;
+        buf[0] = 0x8A;
+        buf[1] = 0x5E;
+        le_put(buf + 2, cases[i].len, 2);
+        n = 4u + make_frame(&r, XF_DIR_GCU, 1, buf + 4);
+        harness_init(&h, XF_DIR_GCU);
+        assert_int_equal(harness_feed(&h, buf, n), 1);
+        assert_bytes_equal(h.out, buf + 4, n - 4u);
+        assert_int_equal(h.p.stats.length_errors, cases[i].errors);
+        assert_int_equal(h.p.stats.bytes_skipped, 4);
+        assert_int_equal(h.p.stats.crc_errors, 0);
+        harness_free(&h);
+    }
+}
+
+/* Nested false candidates: 8A 5E 50 00 (80 bytes), inside it 8A 5E 4C 00
+ * (76 bytes), inside that the real 72-byte frame. Both false candidates are
+ * complete exactly when the frame is; the frame comes out of the rescan. */
+static void test_nested_false_candidates(void **state)
+{
+    static const uint8_t pre[8] = {0x8A, 0x5E, 0x50, 0x00, 0x8A, 0x5E, 0x4C, 0x00};
+    test_rng r;
+    uint8_t buf[200];
+    harness h;
+    (void)state;
+    rng_seed(&r, 1234);
+    memcpy(buf, pre, 8);
+    make_frame(&r, XF_DIR_GCU, 0, buf + 8);
+    harness_init(&h, XF_DIR_GCU);
+    assert_int_equal(harness_feed(&h, buf, 79), 0); /* one byte short of the outer candidate */
+    assert_int_equal(harness_feed(&h, buf + 79, 1), 1);
+    assert_bytes_equal(h.out, buf + 8, 72);
+    assert_int_equal(h.p.stats.crc_errors, 2);
+    assert_int_equal(h.p.stats.bytes_skipped, 8);
+    assert_int_equal(xf_parser_pending(&h.p), 0);
+    harness_free(&h);
+}
+
+/* A frame right after a candidate whose CRC fails is found in the bytes
+ * already held (rescan), for a corrupted frame, a truncated one and a
+ * header with a valid-looking length. */
+static void test_rescan_after_crc_failure(void **state)
+{
+    test_rng r;
+    uint8_t bad[256], good[256], buf[600];
+    size_t bl, gl, cut;
+    harness h;
+    (void)state;
+    rng_seed(&r, 555);
+    gl = make_frame(&r, XF_DIR_GCU, 1, good);
+
+    /* a whole frame with a flipped bit, then the good one */
+    bl = make_frame(&r, XF_DIR_GCU, 1, bad);
+    bad[30] ^= 0x04;
+    memcpy(buf, bad, bl);
+    memcpy(buf + bl, good, gl);
+    harness_init(&h, XF_DIR_GCU);
+    assert_int_equal(harness_feed(&h, buf, bl + gl), 1);
+    assert_bytes_equal(h.out, good, gl);
+    assert_int_equal(h.p.stats.crc_errors, 1);
+    harness_free(&h);
+
+    /* truncated frames (false starts) of every length, then the good one */
+    for (cut = 1; cut < 72; cut++) {
+        make_frame(&r, XF_DIR_GCU, 0, bad);
+        memcpy(buf, bad, cut);
+        memcpy(buf + cut, good, gl);
+        memcpy(buf + cut + gl, good, gl); /* and a second copy right after */
+        harness_init(&h, XF_DIR_GCU);
+        harness_feed(&h, buf, cut + 2u * gl);
+        if (h.nframes != 2) {
+            print_error("false start of %zu bytes: %zu frames\n", cut, h.nframes);
+            fail();
+        }
+        assert_bytes_equal(h.out, good, gl);
+        assert_bytes_equal(h.out + gl, good, gl);
+        harness_free(&h);
+    }
+
+    /* 8A 5E 50 00 then two frames: the first lies inside the false
+     * candidate's 80 bytes, the second starts inside it and ends later */
+    buf[0] = 0x8A;
+    buf[1] = 0x5E;
+    buf[2] = 0x50;
+    buf[3] = 0x00;
+    memcpy(buf + 4, good, gl);
+    bl = make_frame(&r, XF_DIR_GCU, 0, buf + 4 + gl);
+    harness_init(&h, XF_DIR_GCU);
+    assert_int_equal(harness_feed(&h, buf, 4u + gl + bl), 2);
+    assert_bytes_equal(h.out, good, gl);
+    assert_bytes_equal(h.out + gl, buf + 4 + gl, bl);
+    assert_int_equal(h.p.stats.bytes_skipped, 4);
+    harness_free(&h);
+}
+
+/* A header whose length was corrupted (0x00FF, 0x0050, 0x00C8) does not
+ * hold back the intact frames behind it (xf_parser.h: the frame that ends
+ * sooner is checked as soon as it is complete): each frame comes out on
+ * its own last byte. */
+static void test_bogus_length_does_not_delay(void **state)
+{
+    static const uint16_t lens[] = {0x00FF, 0x0050, 0x00C8, 0x0049};
+    test_rng r;
+    uint8_t buf[1024];
+    size_t li, i, k, n, off[4];
+    (void)state;
+    rng_seed(&r, 0xB0B);
+    for (li = 0; li < ARRAY_LEN(lens); li++) {
+        harness h;
+        buf[0] = 0x8A;
+        buf[1] = 0x5E;
+        le_put(buf + 2, lens[li], 2);
+        n = 4;
+        for (i = 0; i < 4; i++) {
+            off[i] = n;
+            n += make_frame(&r, XF_DIR_GCU, 0, buf + n);
+        }
+        harness_init(&h, XF_DIR_GCU);
+        for (k = 0, i = 0; k < n; k++) {
+            size_t got = harness_feed(&h, buf + k, 1);
+            int frame_ends_here = (i < 4 && k + 1u == off[i] + 72u);
+            if ((size_t)frame_ends_here != got) {
+                print_error("length 0x%04X: byte %zu gave %zu frame(s)\n", lens[li], k, got);
+                fail();
+            }
+            i += got;
+        }
+        assert_int_equal(h.nframes, 4);
+        for (i = 0; i < 4; i++) {
+            assert_bytes_equal(h.out + 72u * i, buf + off[i], 72);
+        }
+        assert_int_equal(h.p.stats.bytes_skipped, 4);
+        assert_int_equal(xf_parser_pending(&h.p), 0);
+        harness_free(&h);
+    }
+}
+
+/* Two overlapping bogus lengths (8A 5E FF 00 8A 5E FF 00 by default: the
+ * largest valid length, XF_PACKET_MAX_LEN): the frames
+ * behind them come out, whole and in order, once the false candidates are
+ * complete; with these offsets one of them straddles the end of the
+ * parser's 256-byte ring (white-box check that the wrap path ran). */
+static void test_bogus_lengths_and_ring_wrap(void **state)
+{
+    static const uint8_t pre[8] = {0x8A, 0x5E, XF_PACKET_MAX_LEN, 0x00, 0x8A, 0x5E, XF_PACKET_MAX_LEN, 0x00};
+    test_rng r;
+    uint8_t buf[1024];
+    size_t off[6], i, n = 8, chunk;
+    (void)state;
+    rng_seed(&r, 0xFF);
+    memcpy(buf, pre, 8);
+    for (i = 0; i < 6; i++) {
+        off[i] = n;
+        n += make_frame(&r, XF_DIR_GCU, 0, buf + n);
+    }
+    for (chunk = 1; chunk <= 500; chunk = chunk * 3u + 1u) {
+        harness h;
+        size_t k;
+        harness_init(&h, XF_DIR_GCU);
+        for (k = 0; k < n; k += chunk) {
+            harness_feed(&h, buf + k, (k + chunk <= n) ? chunk : n - k);
+        }
+        assert_int_equal(h.nframes, 6);
+        for (i = 0; i < 6; i++) {
+            assert_bytes_equal(h.out + 72u * i, buf + off[i], 72);
+        }
+        assert_true(h.wrapped > 0u);
+        assert_true(h.p.stats.crc_errors >= 1u);
+        assert_int_equal(h.p.stats.bytes_skipped, 8);
+        assert_int_equal(xf_parser_pending(&h.p), 0);
+        harness_free(&h);
+    }
+}
+
+/* The longest frame (255 bytes, 183 parameter bytes by default), clean and
+ * after a false candidate (so that it is found by the rescan and spans the
+ * ring's end). */
+static void test_max_length_frame(void **state)
+{
+    enum { MAXLEN = XF_PACKET_MAX_LEN, TOTAL = 4 + XF_PACKET_MAX_LEN + 72 };
+    xf_gcu_packet g;
+    uint8_t frame[MAXLEN], buf[TOTAL];
+    size_t n = 0, i;
+    harness h;
+    (void)state;
+    memset(&g, 0, sizeof(g));
+    g.version = 2;
+    g.order = 0x42;
+    g.params_len = (uint8_t)XF_PARAMS_MAX;
+    for (i = 0; i < XF_PARAMS_MAX; i++) {
+        g.params[i] = (uint8_t)(0x8A ^ i); /* includes 8A 5E-looking bytes */
+    }
+    assert_err(xf_gcu_pack(&g, frame, sizeof(frame), &n), XF_OK);
+    assert_int_equal(n, MAXLEN);
+
+    harness_init(&h, XF_DIR_GCU);
+    assert_int_equal(harness_feed(&h, frame, MAXLEN), 1);
+    assert_bytes_equal(h.out, frame, MAXLEN);
+    harness_free(&h);
+
+    /* 8A 5E 48 00 (72) + the longest frame + a 72-byte frame */
+    buf[0] = 0x8A;
+    buf[1] = 0x5E;
+    buf[2] = 0x48;
+    buf[3] = 0x00;
+    memcpy(buf + 4, frame, MAXLEN);
+    {
+        test_rng r;
+        rng_seed(&r, 3);
+        make_frame(&r, XF_DIR_GCU, 0, buf + 4 + MAXLEN);
+    }
+    for (i = 1; i <= 7; i += 3) {
+        size_t k;
+        harness_init(&h, XF_DIR_GCU);
+        for (k = 0; k < TOTAL; k += i) {
+            harness_feed(&h, buf + k, (k + i <= TOTAL) ? i : TOTAL - k);
+        }
+        assert_int_equal(h.nframes, 2);
+        assert_bytes_equal(h.out, frame, MAXLEN);
+        assert_bytes_equal(h.out + MAXLEN, buf + 4 + MAXLEN, 72);
+        if (4u + MAXLEN > XF_PARSER_RING) {
+            assert_true(h.wrapped > 0u); /* it started at ring index 4 */
+        }
+        harness_free(&h);
+    }
+}
+
+/* xf_parser_reset drops what is held (counted as skipped), keeps the
+ * direction and the counters. */
+static void test_reset(void **state)
+{
+    test_rng r;
+    uint8_t f1[256], f2[256];
+    size_t l1, l2;
+    uint32_t skipped;
+    harness h;
+    (void)state;
+    rng_seed(&r, 2024);
+    l1 = make_frame(&r, XF_DIR_HOST, 0, f1);
+    l2 = make_frame(&r, XF_DIR_HOST, 3, f2);
+    harness_init(&h, XF_DIR_HOST);
+    assert_int_equal(harness_feed(&h, f1, l1), 1);
+    assert_int_equal(harness_feed(&h, f2, 40), 0);
+    assert_int_equal(xf_parser_pending(&h.p), 40);
+    skipped = h.p.stats.bytes_skipped;
+    xf_parser_reset(&h.p);
+    assert_int_equal(xf_parser_pending(&h.p), 0);
+    assert_int_equal(h.p.stats.bytes_skipped, skipped + 40u);
+    assert_int_equal(h.p.stats.frames, 1);
+    assert_int_equal(h.p.stats.bytes_in, l1 + 40u);
+    check_counters(&h);
+    /* the rest of the cut frame is not a frame; the next whole one is */
+    harness_feed(&h, f2 + 40, l2 - 40u);
+    assert_int_equal(h.nframes, 1);
+    assert_int_equal(harness_feed(&h, f1, l1), 1);
+    assert_int_equal(harness_feed(&h, f2, l2), 1);
+    assert_bytes_equal(h.out + l1, f1, l1);
+    assert_bytes_equal(h.out + 2u * l1, f2, l2);
+    /* reset in memo mode (after a CRC failure) too */
+    f1[10] ^= 1;
+    harness_feed(&h, f1, l1);
+    harness_feed(&h, f2, 30);
+    xf_parser_reset(&h.p);
+    check_counters(&h);
+    f1[10] ^= 1;
+    assert_int_equal(harness_feed(&h, f1, l1), 1);
+    /* still a host parser */
+    {
+        uint8_t g[256];
+        size_t gl = make_frame(&r, XF_DIR_GCU, 0, g);
+        assert_int_equal(harness_feed(&h, g, gl), 0);
+    }
+    xf_parser_reset(NULL); /* must not crash */
+    assert_int_equal(xf_parser_pending(NULL), 0);
+    harness_free(&h);
+}
+
+/* Worst case input: the largest valid length (255) every four bytes. Every
+ * candidate fails, none hides the real frame at the end. */
+static void test_adversarial_lengths(void **state)
+{
+    stream s;
+    harness h;
+    test_rng r;
+    uint8_t f[256];
+    size_t i, fl;
+    (void)state;
+    stream_init(&s);
+    rng_seed(&r, 0xAD);
+    for (i = 0; i < 16384; i++) {
+        static const uint8_t cand[4] = {0x8A, 0x5E, XF_PACKET_MAX_LEN, 0x00};
+        put(&s, cand, 4);
+    }
+    fl = make_frame(&r, XF_DIR_GCU, 1, f);
+    put(&s, f, fl);
+    for (i = 0; i < 300; i++) {
+        put1(&s, 0);
+    }
+    harness_init(&h, XF_DIR_GCU);
+    for (i = 0; i < s.len; i += 1000) {
+        harness_feed(&h, s.buf + i, (i + 1000 <= s.len) ? 1000 : s.len - i);
+    }
+    assert_int_equal(h.nframes, 1);
+    assert_bytes_equal(h.out, f, fl);
+    assert_true(h.p.stats.crc_errors >= 16000u); /* (nearly) every false candidate was checked */
+    harness_free(&h);
+    stream_free(&s);
+}
+
+static void test_parser_args(void **state)
+{
+    xf_parser p;
+    xf_frame f;
+    size_t used = 77;
+    uint8_t b[4] = {0};
+    (void)state;
+    assert_err(xf_parser_init(NULL, XF_DIR_GCU), XF_ERR_ARG);
+    assert_err(xf_parser_init(&p, (xf_direction)2), XF_ERR_ARG);
+    assert_err(xf_parser_init(&p, XF_DIR_GCU), XF_OK);
+    assert_err(xf_parser_feed(NULL, b, 4, &used, &f), XF_ERR_ARG);
+    assert_err(xf_parser_feed(&p, b, 4, &used, NULL), XF_ERR_ARG);
+    assert_err(xf_parser_feed(&p, NULL, 4, &used, &f), XF_ERR_ARG);
+    assert_int_equal(p.stats.bytes_in, 0);
+    /* allowed: no data, no consumed pointer */
+    assert_int_equal(xf_parser_feed(&p, NULL, 0, &used, &f), XF_PARSE_MORE);
+    assert_int_equal(used, 0);
+    assert_int_equal(xf_parser_feed(&p, b, 4, NULL, &f), XF_PARSE_MORE);
+    assert_int_equal(p.stats.bytes_in, 4);
+    assert_int_equal(p.stats.bytes_skipped, 4);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_appendix_one_byte_at_a_time),
+        cmocka_unit_test(test_consumed_stops_at_frame),
+        cmocka_unit_test(test_direction_filter),
+        cmocka_unit_test(test_bad_lengths_do_not_delay),
+        cmocka_unit_test(test_nested_false_candidates),
+        cmocka_unit_test(test_rescan_after_crc_failure),
+        cmocka_unit_test(test_bogus_length_does_not_delay),
+        cmocka_unit_test(test_bogus_lengths_and_ring_wrap),
+        cmocka_unit_test(test_max_length_frame),
+        cmocka_unit_test(test_reset),
+        cmocka_unit_test(test_adversarial_lengths),
+        cmocka_unit_test(test_parser_args),
+        cmocka_unit_test(test_random_stream_whole),
+        cmocka_unit_test(test_random_stream_byte_at_a_time),
+        cmocka_unit_test(test_random_stream_random_chunks),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
