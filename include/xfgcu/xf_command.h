@@ -153,7 +153,8 @@ typedef struct xf_feedback {
  */
 XF_API xf_err xf_feedback_decode(uint8_t order, const uint8_t *fb, size_t len, xf_feedback *out);
 
-/** The state byte a GCU sends for @p result (GCU side: the simulator). */
+/** The state byte a GCU sends for @p result (GCU side: the simulator). XF_RESULT_OPERATING is for
+ *  calibration only: for a camera-mask order 0x02 would read back as "camera 2 failed". */
 XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed_cameras);
 
 #if XF_EMIT_DEFINITIONS

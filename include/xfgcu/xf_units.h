@@ -175,12 +175,16 @@ XF_API xf_err xf_gnss_to_unix_ms(int16_t week, uint32_t ms, int leap_seconds, in
 
 XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *week, uint32_t *ms)
 {
-    int64_t gps_ms;
+    int64_t epoch_ms, gps_ms;
     if (week == NULL || ms == NULL) {
         return XF_ERR_ARG;
     }
-    gps_ms = unix_ms - (XF_GPS_EPOCH_UNIX - (int64_t)leap_seconds) * 1000;
-    if (gps_ms < 0 || gps_ms / (int64_t)XF_WEEK_MS > 32767) {
+    epoch_ms = (XF_GPS_EPOCH_UNIX - (int64_t)leap_seconds) * 1000;
+    if (unix_ms < epoch_ms) {
+        return XF_ERR_RANGE; /* compared before subtracting: no overflow for any input */
+    }
+    gps_ms = unix_ms - epoch_ms;
+    if (gps_ms / (int64_t)XF_WEEK_MS > 32767) {
         return XF_ERR_RANGE;
     }
     *week = (int16_t)(gps_ms / (int64_t)XF_WEEK_MS);
