@@ -27,6 +27,8 @@
 
 /** Print "xfgcu: <message>\n" to stderr; returns XFGCU_EXIT_USAGE so callers can `return cli_fail(...)`. */
 int cli_fail(const char *fmt, ...) CLI_PRINTF(1, 2);
+/** Same line; returns XFGCU_EXIT_LINK (link error or timeout). */
+int cli_fail_link(const char *fmt, ...) CLI_PRINTF(1, 2);
 /** Print "xfgcu: note: <message>\n" to stderr (not a failure). */
 void cli_note(const char *fmt, ...) CLI_PRINTF(1, 2);
 
@@ -46,9 +48,9 @@ typedef struct cli_link {
     const char *tcp;      /**< --tcp HOST[:PORT], or NULL */
     long baud;            /**< --baud, default 115200 */
     long gcu_port;        /**< --gcu-port, 0 = the link's default */
-    long local_port;      /**< --local-port, default 2338 */
+    long local_port;      /**< --local-port, default 2338; 0 = any free port */
     uint8_t protocol;     /**< --protocol, default 1 */
-    double rate_hz;       /**< --rate, default 50 */
+    long rate_hz;         /**< --rate, 1..200, default 50 */
     long timeout_ms;      /**< --timeout, default 1000 */
 } cli_link;
 
@@ -57,7 +59,25 @@ typedef int (*cli_run_fn)(const cli_link *link, int argc, char **argv);
 
 int cmd_decode(const cli_link *link, int argc, char **argv);
 int cmd_encode(const cli_link *link, int argc, char **argv);
+int cmd_send(const cli_link *link, int argc, char **argv);
+int cmd_point(const cli_link *link, int argc, char **argv);
+int cmd_rate(const cli_link *link, int argc, char **argv);
+int cmd_monitor(const cli_link *link, int argc, char **argv);
+int cmd_sim(const cli_link *link, int argc, char **argv);
+int cmd_demo(const cli_link *link, int argc, char **argv);
+int cmd_record(const cli_link *link, int argc, char **argv);
+int cmd_replay(const cli_link *link, int argc, char **argv);
 void help_decode(FILE *out);
 void help_encode(FILE *out);
+void help_send(FILE *out);
+void help_point(FILE *out);
+void help_rate(FILE *out);
+void help_monitor(FILE *out);
+void help_sim(FILE *out);
+void help_demo(FILE *out);
+void help_record(FILE *out);
+void help_replay(FILE *out);
+/** The link options, as `xfgcu --help` lists them (for the online commands' help). */
+void help_link_options(FILE *out);
 
 #endif /* XFGCU_CLI_H */

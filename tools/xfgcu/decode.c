@@ -235,7 +235,6 @@ typedef struct found {
 typedef struct stream {
     xf_parser parser[2]; /* indexed by xf_direction */
     size_t fed;          /* bytes given to each parser */
-    size_t real_end;     /* at the end: bytes of real input (zero padding follows) */
     found queue[QUEUE_MAX];
     size_t queued;
     size_t printed;
@@ -248,9 +247,6 @@ static void emit(stream *s, const found *f)
     char where[48];
     if (s->rc != XFGCU_EXIT_OK) {
         return;
-    }
-    if (s->real_end > 0u && f->start + f->len > s->real_end) {
-        return; /* completed by the end-of-stream padding: not in the input */
     }
     snprintf(where, sizeof(where), "stdin offset %zu", f->start);
     s->rc = print_packet(f->bytes, f->len, f->dir, where, s->json, s->printed);
@@ -319,18 +315,18 @@ static void feed(stream *s, const uint8_t *data, size_t n)
     }
 }
 
-/* The parsers wait for as many bytes as a length field announces, so a
- * false header near the end would hide the packets after it; zero bytes
- * (never a header) complete every candidate, and emit() drops anything
- * that reaches into them. */
+/* End of input: each parser gives up the candidates that can no longer
+ * complete (a false header near the end announces bytes that never come)
+ * and returns the intact frames behind them. */
 static void finish(stream *s)
 {
-    static const uint8_t zeros[STREAM_CHUNK];
-    size_t rounds;
-    s->real_end = s->fed;
-    for (rounds = 0; rounds < 8u && (xf_parser_pending(&s->parser[0]) > 0u || xf_parser_pending(&s->parser[1]) > 0u);
-         rounds++) {
-        feed(s, zeros, sizeof(zeros));
+    xf_frame frame;
+    int d;
+    for (d = 0; d < 2; d++) {
+        while (xf_parser_flush(&s->parser[d], &frame) == XF_PARSE_FRAME) {
+            /* the frame ends where the bytes still held begin */
+            enqueue(s, s->fed - xf_parser_pending(&s->parser[d]) - frame.len, (xf_direction)d, &frame);
+        }
     }
     flush(s, (size_t)-1);
 }
@@ -385,7 +381,7 @@ static int decode_stdin(int json)
     if (rc == XFGCU_EXIT_OK && bad) {
         rc = hex_error(&fault);
     } else if (rc == XFGCU_EXIT_OK && s->printed == 0u) {
-        rc = cli_fail("decode: no valid packet in the %zu bytes read from stdin", s->real_end);
+        rc = cli_fail("decode: no valid packet in the %zu bytes read from stdin", s->fed);
     }
     free(s);
     return rc;

@@ -5,9 +5,8 @@
  *     xfgcu --help | --version | COMMAND --help
  *
  * Link options are parsed and validated here, before COMMAND, for every
- * command (cli.md); the offline commands ignore them. The online commands
- * have their row already, with no entry point until the client layer
- * exists: they say so and fail instead of pretending.
+ * command (cli.md); the offline commands ignore them, the online ones
+ * open the link they name (online.c).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -17,15 +16,30 @@
 #include "cli.h"
 #include "cmdargs.h"
 
+static void vfail(const char *fmt, va_list ap)
+{
+    fflush(stdout); /* what was printed before the failure comes first */
+    fputs("xfgcu: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+}
+
 int cli_fail(const char *fmt, ...)
 {
     va_list ap;
-    fputs("xfgcu: ", stderr);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vfail(fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
     return XFGCU_EXIT_USAGE;
+}
+
+int cli_fail_link(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfail(fmt, ap);
+    va_end(ap);
+    return XFGCU_EXIT_LINK;
 }
 
 void cli_note(const char *fmt, ...)
@@ -44,7 +58,7 @@ typedef struct command_entry {
     const char *name;
     const char *usage; /* arguments after the name */
     const char *what;  /* one line */
-    cli_run_fn run;    /* NULL: needs the client layer, not built yet */
+    cli_run_fn run;
     void (*help)(FILE *out);
 } command_entry;
 
@@ -52,14 +66,15 @@ static const command_entry commands[] = {
     {"decode", "[--json] [HEX ...]", "decode packets given in hex (stdin when no HEX)", cmd_decode, help_decode},
     {"encode", "[--protocol N] --json OBJECT | COMMAND [ARGS]", "build a packet and print it in hex", cmd_encode,
      help_encode},
-    {"send", "COMMAND [ARGS]", "run a command on the GCU and print its result", NULL, NULL},
-    {"point", "--pitch DEG --yaw DEG [--roll DEG]", "point the gimbal (Euler angle control)", NULL, NULL},
-    {"rate", "--pitch DPS --yaw DPS --duration S", "turn the gimbal at a rate (head lock)", NULL, NULL},
-    {"monitor", "[--json] [--count N] [--duration S]", "live telemetry", NULL, NULL},
-    {"sim", "[--serial PATH | --pty | --udp [PORT] | --tcp [PORT]]", "a simulated GCU", NULL, NULL},
-    {"demo", "", "simulator and client over loopback: a short tour", NULL, NULL},
-    {"record", "FILE", "capture both directions with timestamps", NULL, NULL},
-    {"replay", "FILE", "decode a capture", NULL, NULL},
+    {"send", "COMMAND [ARGS]", "run a command on the GCU and print its result", cmd_send, help_send},
+    {"point", "--pitch DEG --yaw DEG [--roll DEG]", "point the gimbal (Euler angle control)", cmd_point, help_point},
+    {"rate", "--pitch DPS --yaw DPS --duration S", "turn the gimbal at a rate (head lock)", cmd_rate, help_rate},
+    {"monitor", "[--json] [--count N] [--duration S]", "live telemetry", cmd_monitor, help_monitor},
+    {"sim", "[--serial PATH | --pty | --udp [PORT] | --tcp [PORT]]", "a simulated GCU", cmd_sim, help_sim},
+    {"demo", "", "simulator and client over loopback: a short tour", cmd_demo, help_demo},
+    {"record", "FILE [--duration S] [--count N] [COMMAND [ARGS]]", "capture both directions with timestamps",
+     cmd_record, help_record},
+    {"replay", "FILE [--json] [--brief]", "decode a capture", cmd_replay, help_replay},
 };
 
 #define N_COMMANDS (sizeof(commands) / sizeof(commands[0]))
@@ -86,18 +101,27 @@ static void print_help(FILE *out)
     for (i = 0; i < N_COMMANDS; i++) {
         char left[96];
         snprintf(left, sizeof(left), "%s %s", commands[i].name, commands[i].usage);
-        fprintf(out, "  %-58s %s%s\n", left, commands[i].what, commands[i].run == NULL ? " (not built yet)" : "");
+        fprintf(out, "  %-58s %s\n", left, commands[i].what);
     }
-    fputs("\nlink options (before COMMAND; exactly one of --serial, --udp, --tcp for the online commands):\n"
+    fputs("\n", out);
+    help_link_options(out);
+    fputs("\nFirst time? Run 'xfgcu demo': a simulated gimbal and a short tour, no hardware needed.\n"
+          "'xfgcu COMMAND --help' tells more about each command.\n",
+          out);
+}
+
+void help_link_options(FILE *out)
+{
+    fputs("link options (before COMMAND; exactly one of --serial, --udp, --tcp for the online commands):\n"
           "  --serial PATH         serial device, e.g. /dev/ttyUSB0\n"
           "  --baud N              115200 (default), 250000, 500000 or 1000000\n"
           "  --udp HOST            the GCU's address for UDP\n"
           "  --gcu-port N          the GCU's UDP port (2337) or TCP port (2332)\n"
-          "  --local-port N        local UDP port to receive on (2338)\n"
+          "  --local-port N        local UDP port to receive on (2338; 0 = any free port)\n"
           "  --tcp HOST[:PORT]     connect as TCP client\n"
           "  --protocol 1|2        version byte sent (1)\n"
-          "  --rate HZ             packets per second (50)\n"
-          "  --timeout MS          how long a command waits for its feedback (1000)\n"
+          "  --rate HZ             packets per second, 1..200 (50; the vendor recommends 30..50)\n"
+          "  --timeout MS          how long to wait for the first reply and for a command's feedback (1000)\n"
           "\nexit status: 0 success, 1 the GCU answered with failure, 2 usage error or bad input,\n"
           "3 link error or timeout.\n",
           out);
@@ -149,16 +173,6 @@ static int parse_host(const char *opt, const char *text, int port_allowed)
     return XFGCU_EXIT_OK;
 }
 
-static int parse_rate(const char *text, double *hz)
-{
-    if (text == NULL) {
-        return cli_fail("--rate needs a value: packets per second");
-    }
-    if (cli_parse_real(text, hz) != 0 || *hz <= 0.0 || *hz > 1000.0) {
-        return cli_fail("--rate %s: must be a number of packets per second in (0, 1000]", text);
-    }
-    return XFGCU_EXIT_OK;
-}
 
 /* One link option at argv[*i]; returns -1 when argv[*i] is none. */
 static int take_link_option(cli_link *l, int argc, char **argv, int *i)
@@ -183,13 +197,13 @@ static int take_link_option(cli_link *l, int argc, char **argv, int *i)
         return parse_long_in("--gcu-port", v, 1, 65535, "a port 1..65535", &l->gcu_port);
     }
     if (cli_take_option(argc, argv, i, "--local-port", &v)) {
-        return parse_long_in("--local-port", v, 1, 65535, "a port 1..65535", &l->local_port);
+        return parse_long_in("--local-port", v, 0, 65535, "a port 0..65535 (0: any free port)", &l->local_port);
     }
     if (cli_take_option(argc, argv, i, "--protocol", &v)) {
         return cli_parse_protocol(v, &l->protocol);
     }
     if (cli_take_option(argc, argv, i, "--rate", &v)) {
-        return parse_rate(v, &l->rate_hz);
+        return parse_long_in("--rate", v, 1, 200, "packets per second, 1..200", &l->rate_hz);
     }
     if (cli_take_option(argc, argv, i, "--timeout", &v)) {
         return parse_long_in("--timeout", v, 1, 3600000L, "milliseconds, 1..3600000", &l->timeout_ms);
@@ -203,7 +217,7 @@ static void link_defaults(cli_link *l)
     l->baud = 115200L;
     l->local_port = 2338L;
     l->protocol = XF_PROTOCOL_V1;
-    l->rate_hz = 50.0;
+    l->rate_hz = 50L;
     l->timeout_ms = 1000L;
 }
 
@@ -227,25 +241,15 @@ static int unknown_command(const char *name)
     return cli_fail("unknown command '%s' (try 'xfgcu --help')", name);
 }
 
-static int not_built(const command_entry *c, int argc, char **argv)
-{
-    if (argc > 1 && strcmp(argv[1], "--help") == 0) {
-        printf("usage: xfgcu [LINK OPTIONS] %s %s\n\n%s.\n"
-               "This command is not built yet: it needs the client layer.\n",
-               c->name, c->usage, c->what);
-        return XFGCU_EXIT_OK;
-    }
-    return cli_fail("'%s' needs the client layer, not built yet", c->name);
-}
-
 static int dispatch(const cli_link *link, int argc, char **argv)
 {
     const command_entry *c = find_command(argv[0]);
     if (c == NULL) {
         return unknown_command(argv[0]);
     }
-    if (c->run == NULL) {
-        return not_built(c, argc, argv);
+    if (argc > 1 && strcmp(argv[1], "--help") == 0) {
+        c->help(stdout);
+        return XFGCU_EXIT_OK;
     }
     return c->run(link, argc, argv);
 }

@@ -1,0 +1,251 @@
+/*
+ * cmd_record.c - `xfgcu [LINK] record FILE [--duration S] [--count N] [COMMAND [ARGS]]`.
+ *
+ * The link is wrapped in a tap (xf_tap.h) that hands every chunk read or
+ * written, with its time, to the capture writer (xf_capture.h), so FILE
+ * holds the bytes exactly as the link moved them, both ways, in the text
+ * format of docs/capture-format.md. Meanwhile the client keeps the link
+ * going with null packets, or runs COMMAND the protocol's way (as send).
+ */
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "cmdargs.h"
+#include "online.h"
+#include "xfgcu/xf_capture.h"
+
+#define NULLS_AFTER 3u
+#define DRAIN_MS 100u
+
+void help_record(FILE *out)
+{
+    fputs("usage: xfgcu [LINK OPTIONS] record FILE [--duration S] [--count N] [COMMAND [ARGS]]\n\n"
+          "Capture every byte the link moves, both ways, with timestamps, into FILE (a text format,\n"
+          "one chunk per line: docs/capture-format.md), while null packets keep the link going.\n"
+          "`xfgcu replay FILE` decodes it.\n\n"
+          "  --duration S   stop after S seconds (0.1..31536000)\n"
+          "  --count N      stop after N packets from the GCU (1..1000000000)\n"
+          "  COMMAND        also run a command, as `xfgcu send COMMAND [ARGS]` does, and print its\n"
+          "                 result; without --duration or --count the capture then ends with it\n"
+          "Otherwise it runs until Ctrl-C. Prints a one-line summary (chunks, bytes, packets).\n\n",
+          out);
+    help_link_options(out);
+    fputs("\nexample: xfgcu --tcp 192.168.144.108 record shutter.cap shutter\n", out);
+}
+
+typedef struct record {
+    online *o;
+    char desc[320]; /* the link's, kept for the summary */
+    const char *file;
+    FILE *f;
+    xf_capture_writer w;
+    int begun;
+    long count;
+    double duration;
+    int has_count, has_duration, help;
+    const cmd_spec *spec;
+    int cargc;
+    char **cargv;
+    uint32_t sent, received;
+} record;
+
+/* ---- arguments ---------------------------------------------------------------------- */
+
+static int take_arg(record *r, int argc, char **argv, int *i)
+{
+    int rc;
+    if (r->spec != NULL) { /* everything after COMMAND is the command's */
+        r->cargv[r->cargc++] = argv[*i];
+        return XFGCU_EXIT_OK;
+    }
+    rc = cli_opt_real("record", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000",
+                      &r->duration, &r->has_duration);
+    if (rc < 0) {
+        rc = cli_opt_long("record", argc, argv, i, "--count", 1, 1000000000L, "a number of packets, 1..1000000000",
+                          &r->count, &r->has_count);
+    }
+    if (rc >= 0) {
+        return rc;
+    }
+    if (strcmp(argv[*i], "--help") == 0) {
+        r->help = 1;
+    } else if (argv[*i][0] == '-' && argv[*i][1] != '\0') {
+        return cli_unexpected("record", argv[*i]);
+    } else if (r->file == NULL) {
+        r->file = argv[*i];
+    } else if ((r->spec = cmdargs_find(argv[*i])) == NULL) {
+        return cli_fail("record: unknown command '%s' (see 'xfgcu send --help'); FILE is '%s'", argv[*i], r->file);
+    } else {
+        r->cargv[r->cargc++] = argv[*i];
+    }
+    return XFGCU_EXIT_OK;
+}
+
+static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_command *cmd)
+{
+    int i, rc = XFGCU_EXIT_OK;
+    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
+        rc = take_arg(r, argc, argv, &i);
+    }
+    if (rc != XFGCU_EXIT_OK || r->help) {
+        return rc;
+    }
+    if (r->file == NULL) {
+        return cli_fail("record: missing FILE (where the capture goes)");
+    }
+    return (r->spec != NULL) ? cmdargs_parse(r->spec, "record", r->cargc, r->cargv, version, cmd) : XFGCU_EXIT_OK;
+}
+
+/* ---- callbacks ------------------------------------------------------------------------ */
+
+static void on_chunk(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
+{
+    record *r = (record *)user;
+    if (!r->begun) {
+        r->begun = 1;
+        (void)xf_capture_begin(&r->w, r->f, r->o->desc); /* the link is known once a byte moves */
+    }
+    xf_capture_chunk(&r->w, dir, data, len, now_ms);
+}
+
+static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
+{
+    record *r = (record *)user;
+    (void)data;
+    (void)len;
+    (void)now_ms;
+    if (dir == XF_DIR_HOST) {
+        r->sent++;
+    } else {
+        r->received++;
+    }
+}
+
+/* ---- running ---------------------------------------------------------------------------- */
+
+static int done(const record *r, uint32_t elapsed)
+{
+    return cli_stop_requested() || (r->has_count && r->received >= (uint32_t)r->count) ||
+           (r->has_duration && cli_seconds(elapsed) >= r->duration);
+}
+
+static int run_command(record *r, const xf_command *cmd)
+{
+    xf_cmd_result res;
+    char text[64], what[64];
+    int rc = online_run(r->o, cmd, &res, NULL, NULL);
+    if (rc != XFGCU_EXIT_OK) {
+        return rc;
+    }
+    online_result_text(&res, text, sizeof(text));
+    printf("%s\n", text);
+    fflush(stdout);
+    if (!r->has_count && !r->has_duration) {
+        online_linger(r->o, NULLS_AFTER);
+    }
+    snprintf(what, sizeof(what), "record %s", cmdargs_name(r->spec));
+    return online_result_exit(r->o, what, &res);
+}
+
+/* The reply to the last packet sent is on its way: let it into the capture. */
+static void drain(record *r)
+{
+    uint32_t start = xf_posix_now_ms();
+    while (r->received < r->sent && xf_ms_since(xf_posix_now_ms(), start) < DRAIN_MS) {
+        online_poll(r->o, 5);
+    }
+}
+
+static int capture(record *r, const cli_link *link, const xf_command *cmd, uint32_t *elapsed)
+{
+    online_hooks hooks;
+    uint32_t start = xf_posix_now_ms();
+    int rc;
+    memset(&hooks, 0, sizeof(hooks));
+    hooks.tap = on_chunk;
+    hooks.on_bytes = on_bytes;
+    hooks.user = r;
+    rc = online_open(r->o, link, "record", &hooks);
+    if (rc == XFGCU_EXIT_OK && r->spec != NULL) {
+        rc = run_command(r, cmd);
+    }
+    if (rc == XFGCU_EXIT_OK && (r->spec == NULL || r->has_count || r->has_duration)) {
+        while (!done(r, xf_ms_since(xf_posix_now_ms(), start))) {
+            online_poll(r->o, 50);
+        }
+    }
+    *elapsed = xf_ms_since(xf_posix_now_ms(), start);
+    if (rc != XFGCU_EXIT_LINK) {
+        drain(r);
+    }
+    return rc;
+}
+
+static int finish_file(record *r, int rc, uint32_t elapsed)
+{
+    int err = r->w.error;
+    if (!r->begun) {
+        (void)xf_capture_begin(&r->w, r->f, r->desc);
+    }
+    if (fclose(r->f) != 0 && err == 0) {
+        err = errno;
+    }
+    if (err != 0) {
+        return cli_fail("record: cannot write %s: %s", r->file, strerror(err));
+    }
+    printf("recorded %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
+           r->desc, (unsigned)r->w.chunks, (unsigned)r->w.bytes, (unsigned)r->sent, (unsigned)r->received,
+           r->file);
+    return rc;
+}
+
+static int run_record(record *r, const cli_link *link, const xf_command *cmd)
+{
+    uint32_t elapsed = 0;
+    int rc;
+    r->f = fopen(r->file, "w");
+    if (r->f == NULL) {
+        return cli_fail("record: cannot create %s: %s", r->file, strerror(errno));
+    }
+    r->o = online_new();
+    if (r->o == NULL) {
+        fclose(r->f);
+        return XFGCU_EXIT_USAGE;
+    }
+    cli_signals_init();
+    rc = capture(r, link, cmd, &elapsed);
+    snprintf(r->desc, sizeof(r->desc), "%s", r->o->desc);
+    online_free(r->o); /* closes the link: nothing more is tapped */
+    r->o = NULL;
+    if (rc == XFGCU_EXIT_OK || rc == XFGCU_EXIT_FAILED || r->begun) {
+        return finish_file(r, rc, elapsed);
+    }
+    fclose(r->f);
+    remove(r->file); /* the link never moved a byte: no capture to keep */
+    return rc;
+}
+
+int cmd_record(const cli_link *link, int argc, char **argv)
+{
+    record r;
+    xf_command cmd;
+    int rc;
+    memset(&r, 0, sizeof(r));
+    r.cargv = calloc((size_t)argc + 1u, sizeof(*r.cargv));
+    if (r.cargv == NULL) {
+        return cli_fail("record: out of memory");
+    }
+    rc = parse_args(&r, argc, argv, link->protocol, &cmd);
+    if (rc == XFGCU_EXIT_OK && r.help) {
+        help_record(stdout);
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = online_check_link(link, "record");
+        if (rc == XFGCU_EXIT_OK) {
+            rc = run_record(&r, link, &cmd);
+        }
+    }
+    free(r.cargv);
+    return rc;
+}

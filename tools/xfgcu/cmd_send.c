@@ -1,0 +1,137 @@
+/*
+ * cmd_send.c - `xfgcu [LINK] send COMMAND [ARGS]`.
+ *
+ * The command runs the protocol's way (the client does it): null packets,
+ * the command in every packet until a reply carries its execution state,
+ * then null packets again. The result goes to stdout as one line ("ok",
+ * "failed cameras 0x02", "failed", "timeout", "link lost"), preceded by
+ * "operating" lines while a calibration runs; a failure also prints its
+ * one line on stderr. Exit 0 ok, 1 failed, 3 timeout or link lost.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "cmdargs.h"
+#include "online.h"
+
+#define NULLS_AFTER 3u /* null packets sent after the result, before closing */
+
+void help_send(FILE *out)
+{
+    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol 1|2]\n"
+          "       xfgcu send COMMAND --help\n\n"
+          "Run one command on the GCU the way the protocol wants: null packets, then the command in\n"
+          "every packet until a reply carries its execution state, then null packets again.\n"
+          "Prints the result on stdout:\n"
+          "  ok                       the GCU executed it (exit 0)\n"
+          "  failed cameras 0x02      it failed on the cameras of the mask (orders that report one; exit 1)\n"
+          "  failed                   it failed (exit 1)\n"
+          "  operating                calibration in progress (then the final state)\n"
+          "  timeout                  no execution state within --timeout ms (exit 3)\n"
+          "  link lost                the link went down before the answer (exit 3)\n\n"
+          "commands (the same names and arguments as `xfgcu encode`):\n",
+          out);
+    cmdargs_list(out);
+    fputs("\n  --cameras MASK: a number (1, 0x03), a list of cameras (1,2 = 0x03) or all (0xFF).\n\n", out);
+    help_link_options(out);
+    fputs("\nexample: xfgcu --tcp 192.168.144.108 send zoom-to --rate 5.5\n", out);
+}
+
+typedef struct send_args {
+    uint8_t version;
+    int help;
+    const cmd_spec *spec;
+    int cargc; /* the command's name and arguments, --protocol and --help taken out */
+    char **cargv;
+} send_args;
+
+static int take_arg(send_args *a, int argc, char **argv, int *i)
+{
+    const char *v = NULL;
+    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
+        return cli_parse_protocol(v, &a->version);
+    }
+    if (strcmp(argv[*i], "--help") == 0) {
+        a->help = 1;
+    } else if (a->spec != NULL) {
+        a->cargv[a->cargc++] = argv[*i];
+    } else if (argv[*i][0] == '-') {
+        return cli_fail("send: unknown option '%s' (see 'xfgcu send --help')", argv[*i]);
+    } else if ((a->spec = cmdargs_find(argv[*i])) == NULL) {
+        return cli_fail("send: unknown command '%s' (see 'xfgcu send --help')", argv[*i]);
+    } else {
+        a->cargv[a->cargc++] = argv[*i];
+    }
+    return XFGCU_EXIT_OK;
+}
+
+static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_ms)
+{
+    (void)user;
+    (void)r;
+    if (operating_ms == 0u) {
+        printf("operating\n");
+    } else {
+        printf("operating (%.0f s)\n", cli_seconds(operating_ms));
+    }
+    fflush(stdout);
+}
+
+static int run_send(const cli_link *link, const xf_command *cmd, const char *name)
+{
+    online *o = online_new();
+    xf_cmd_result r;
+    char text[64], what[64];
+    int rc = (o != NULL) ? online_open(o, link, "send", NULL) : XFGCU_EXIT_USAGE;
+    if (rc == XFGCU_EXIT_OK) {
+        rc = online_run(o, cmd, &r, on_operating, NULL);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        online_result_text(&r, text, sizeof(text));
+        printf("%s\n", text);
+        fflush(stdout);
+        if (r.status != XF_CMD_LINK_LOST) {
+            online_linger(o, NULLS_AFTER);
+        }
+        snprintf(what, sizeof(what), "send %s", name);
+        rc = online_result_exit(o, what, &r);
+    }
+    online_free(o);
+    return rc;
+}
+
+int cmd_send(const cli_link *link, int argc, char **argv)
+{
+    send_args a;
+    cli_link l = *link;
+    xf_command cmd;
+    int i, rc = XFGCU_EXIT_OK;
+    memset(&a, 0, sizeof(a));
+    a.version = link->protocol;
+    a.cargv = calloc((size_t)argc + 1u, sizeof(*a.cargv));
+    if (a.cargv == NULL) {
+        return cli_fail("send: out of memory");
+    }
+    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
+        rc = take_arg(&a, argc, argv, &i);
+    }
+    if (rc == XFGCU_EXIT_OK && a.help) {
+        if (a.spec != NULL) {
+            cmdargs_help(a.spec, "send", stdout);
+        } else {
+            help_send(stdout);
+        }
+    } else if (rc == XFGCU_EXIT_OK && a.spec == NULL) {
+        rc = cli_fail("send: which command? (see 'xfgcu send --help')");
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = cmdargs_parse(a.spec, "send", a.cargc, a.cargv, a.version, &cmd);
+        if (rc == XFGCU_EXIT_OK) {
+            l.protocol = a.version;
+            cli_signals_init();
+            rc = run_send(&l, &cmd, cmdargs_name(a.spec));
+        }
+    }
+    free(a.cargv);
+    return rc;
+}

@@ -1,0 +1,367 @@
+/*
+ * cmd_sim.c - `xfgcu sim [--serial PATH | --pty | --udp [PORT] | --tcp [PORT]]`.
+ *
+ * The library's simulated GCU (xf_sim) on the GCU's end of a link. When
+ * it is ready it prints exactly one line on stdout, flushed, for scripts
+ * and tests to read:
+ *
+ *     xfgcu sim: listening on tcp 127.0.0.1:2332
+ *     xfgcu sim: listening on udp 127.0.0.1:2337
+ *     xfgcu sim: listening on pty /dev/pts/5 [link PATH]
+ *     xfgcu sim: listening on serial /dev/ttyUSB0 at 115200 baud
+ *
+ * then runs until SIGINT or SIGTERM (exit 0), or --duration, printing
+ * nothing more unless --verbose.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "cmdargs.h"
+#include "online.h"
+#include "xfgcu/xf_sim.h"
+
+void help_sim(FILE *out)
+{
+    fputs("usage: xfgcu sim [--serial PATH | --pty [--link PATH] | --udp [PORT] | --tcp [PORT]] [OPTIONS]\n\n"
+          "A simulated GCU that follows the protocol: it answers only correct packets, keeps the\n"
+          "once-rule, gives feedback, moves its attitude by mode, zooms, ranges and tracks.\n"
+          "When ready it prints one line, e.g. \"xfgcu sim: listening on tcp 127.0.0.1:2332\",\n"
+          "then runs until Ctrl-C or SIGTERM (exit 0).\n\n"
+          "link (one; default --tcp 2332):\n"
+          "  --tcp [PORT]          TCP server for one client, like the GCU (default port 2332; 0 = any free)\n"
+          "  --udp [PORT]          UDP on the GCU's port (default 2337; 0 = any free); answers the sender\n"
+          "  --pty                 a new pseudo-terminal; connect with --serial and the path printed\n"
+          "  --link PATH           with --pty: also a symbolic link PATH to it\n"
+          "  --serial PATH         a real serial port (the GCU's end of a cable)\n"
+          "  --baud N              with --serial: 115200 (default), 250000, 500000 or 1000000\n"
+          "  --bind ADDR           address to listen on for --tcp and --udp (default 127.0.0.1)\n\n"
+          "behaviour:\n"
+          "  --protocol 1|2        version of the replies (default 1; V0.2 adds thermal and camera status)\n"
+          "  --fail ORDER=STATE    executions of ORDER answer STATE: shutter=1, zoom-in=0x02 (camera 2\n"
+          "                        failed), 0x20=1; repeatable\n"
+          "  --drop PERMILLE       drop this share of replies at random, 0..1000\n"
+          "  --delay MS            hold each reply MS ms, 0..10000\n"
+          "  --calibration-ms MS   how long calibration answers \"operating\", 0..600000 (default 1500)\n"
+          "  --duration S          stop by itself after S seconds\n"
+          "  --verbose             print each order it executes\n\n"
+          "example: xfgcu sim --udp 0 &   then   xfgcu --udp 127.0.0.1 --gcu-port PORT --local-port 0 monitor\n",
+          out);
+}
+
+typedef enum sim_kind { SIM_TCP, SIM_UDP, SIM_PTY, SIM_SERIAL } sim_kind;
+
+typedef struct sim_args {
+    int kind, has_kind;
+    long port;
+    const char *serial, *bind, *link;
+    long baud;
+    uint8_t version;
+    uint8_t fail[256];
+    long drop, delay, calibration_ms;
+    int has_baud, has_drop, has_delay, has_calibration;
+    double duration;
+    int has_duration, verbose, help;
+} sim_args;
+
+/* ---- arguments ------------------------------------------------------------------------- */
+
+/* --udp [PORT] / --tcp [PORT]: the port is optional, taken when the next argument is a number. */
+static int take_kind(sim_args *a, int argc, char **argv, int *i)
+{
+    static const char *const names[] = {"--tcp", "--udp", "--pty", "--serial"};
+    const char *arg = argv[*i];
+    int k;
+    for (k = 0; k < 4; k++) {
+        size_t n = strlen(names[k]);
+        if (strncmp(arg, names[k], n) == 0 && (arg[n] == '\0' || arg[n] == '=')) {
+            break;
+        }
+    }
+    if (k == 4) {
+        return -1;
+    }
+    if (a->has_kind) {
+        return cli_fail("sim: give only one of --tcp, --udp, --pty, --serial");
+    }
+    a->has_kind = 1;
+    a->kind = k;
+    if (k == SIM_SERIAL) {
+        const char *v = NULL;
+        (void)cli_take_option(argc, argv, i, "--serial", &v);
+        a->serial = v;
+        return (v == NULL || v[0] == '\0') ? cli_fail("sim: --serial needs a value: a device path") : XFGCU_EXIT_OK;
+    }
+    if (k == SIM_PTY) {
+        return (arg[4] == '=') ? cli_fail("sim: --pty takes no value") : XFGCU_EXIT_OK;
+    }
+    a->port = (k == SIM_TCP) ? (long)XF_GCU_TCP_PORT : (long)XF_GCU_UDP_PORT;
+    if (arg[4] == '=') {
+        return cli_long_in("sim", names[k], arg + 5, 0, 65535, "a port 0..65535 (0: any free port)", &a->port);
+    }
+    if (*i + 1 < argc && argv[*i + 1][0] != '-') {
+        (*i)++;
+        return cli_long_in("sim", names[k], argv[*i], 0, 65535, "a port 0..65535 (0: any free port)", &a->port);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* --fail ORDER=STATE */
+static int take_fail(sim_args *a, const char *text)
+{
+    char name[64];
+    const char *eq = (text != NULL) ? strchr(text, '=') : NULL;
+    long long order = -1, state = -1;
+    uint8_t o8;
+    if (eq == NULL || (size_t)(eq - text) >= sizeof(name) || eq == text) {
+        return cli_fail("sim: --fail %s: expected ORDER=STATE, e.g. shutter=1 or zoom-in=0x02",
+                        text != NULL ? text : "needs a value");
+    }
+    memcpy(name, text, (size_t)(eq - text));
+    name[eq - text] = '\0';
+    if (xf_order_from_name(name, &o8) == XF_OK) {
+        order = o8;
+    } else if (cli_parse_int(name, &order) != 0 || order < 0 || order > 255) {
+        return cli_fail("sim: --fail %s: '%s' is not an order (a name like zoom-in, or a number 0..255)", text, name);
+    }
+    if (cli_parse_int(eq + 1, &state) != 0 || state < 0 || state > 255) {
+        return cli_fail("sim: --fail %s: STATE must be 0..255 (1 failure, or a mask of failed cameras)", text);
+    }
+    a->fail[order] = (uint8_t)state;
+    return XFGCU_EXIT_OK;
+}
+
+static int take_text(const char **to, const char *opt, const char *meta, const char *v)
+{
+    if (v == NULL || v[0] == '\0') {
+        return cli_fail("sim: %s needs a value: %s", opt, meta);
+    }
+    *to = v;
+    return XFGCU_EXIT_OK;
+}
+
+static int take_value_option(sim_args *a, int argc, char **argv, int *i)
+{
+    const char *v = NULL;
+    int rc = cli_opt_long("sim", argc, argv, i, "--drop", 0, 1000, "per mille, 0..1000", &a->drop, &a->has_drop);
+    if (rc < 0) {
+        rc = cli_opt_long("sim", argc, argv, i, "--delay", 0, 10000, "milliseconds, 0..10000", &a->delay,
+                          &a->has_delay);
+    }
+    if (rc < 0) {
+        rc = cli_opt_long("sim", argc, argv, i, "--calibration-ms", 0, 600000, "milliseconds, 0..600000",
+                          &a->calibration_ms, &a->has_calibration);
+    }
+    if (rc < 0) {
+        rc = cli_opt_real("sim", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000",
+                          &a->duration, &a->has_duration);
+    }
+    if (rc < 0) {
+        rc = cli_opt_long("sim", argc, argv, i, "--baud", 1, 100000000L, "115200, 250000, 500000 or 1000000",
+                          &a->baud, &a->has_baud);
+        if (rc == XFGCU_EXIT_OK && !xf_serial_baud_ok((uint32_t)a->baud)) {
+            rc = cli_fail("sim: --baud %ld: must be 115200, 250000, 500000 or 1000000", a->baud);
+        }
+    }
+    if (rc >= 0) {
+        return rc;
+    }
+    if (cli_take_option(argc, argv, i, "--fail", &v)) {
+        return take_fail(a, v);
+    }
+    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
+        return cli_parse_protocol(v, &a->version);
+    }
+    if (cli_take_option(argc, argv, i, "--bind", &v)) {
+        return take_text(&a->bind, "--bind", "ADDR", v);
+    }
+    if (cli_take_option(argc, argv, i, "--link", &v)) {
+        return take_text(&a->link, "--link", "PATH", v);
+    }
+    return -1;
+}
+
+static int take_arg(sim_args *a, int argc, char **argv, int *i)
+{
+    int rc = take_kind(a, argc, argv, i);
+    if (rc < 0) {
+        rc = take_value_option(a, argc, argv, i);
+    }
+    if (rc < 0 && strcmp(argv[*i], "--verbose") == 0) {
+        a->verbose = 1;
+        rc = XFGCU_EXIT_OK;
+    }
+    if (rc < 0 && strcmp(argv[*i], "--help") == 0) {
+        a->help = 1;
+        rc = XFGCU_EXIT_OK;
+    }
+    return (rc < 0) ? cli_unexpected("sim", argv[*i]) : rc;
+}
+
+static int check_args(const sim_args *a)
+{
+    if (a->link != NULL && a->kind != SIM_PTY) {
+        return cli_fail("sim: --link %s goes only with --pty", a->link);
+    }
+    if (a->bind != NULL && a->kind != SIM_TCP && a->kind != SIM_UDP) {
+        return cli_fail("sim: --bind %s goes only with --tcp or --udp", a->bind);
+    }
+    if (a->has_baud && a->kind != SIM_SERIAL) {
+        return cli_fail("sim: --baud goes only with --serial");
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* ---- running --------------------------------------------------------------------------- */
+
+typedef struct sim_run {
+    xf_simlink link;
+    xf_serial serial;
+    xf_sim sim;
+    xf_hal hal;
+    int opened;
+    uint32_t executed[256]; /* seen so far, for --verbose */
+} sim_run;
+
+static int open_gcu_link(sim_run *s, const sim_args *a)
+{
+    xf_err err;
+    const char *text;
+    char what[320];
+    switch ((sim_kind)a->kind) {
+    case SIM_SERIAL:
+        snprintf(what, sizeof(what), "--serial %s", a->serial);
+        err = xf_serial_open(&s->serial, a->serial, (uint32_t)a->baud);
+        xf_serial_hal(&s->serial, &s->hal);
+        text = s->serial.error.text;
+        break;
+    case SIM_PTY:
+        snprintf(what, sizeof(what), "--pty");
+        err = xf_simlink_open_pty(&s->link, a->link);
+        xf_simlink_hal(&s->link, &s->hal);
+        text = s->link.error.text;
+        break;
+    default:
+        snprintf(what, sizeof(what), "--%s %ld", a->kind == SIM_TCP ? "tcp" : "udp", a->port);
+        err = (a->kind == SIM_TCP) ? xf_simlink_open_tcp(&s->link, a->bind, (uint16_t)a->port)
+                                   : xf_simlink_open_udp(&s->link, a->bind, (uint16_t)a->port);
+        xf_simlink_hal(&s->link, &s->hal);
+        text = s->link.error.text;
+        break;
+    }
+    if (err != XF_OK) {
+        return cli_fail_link("sim %s: %s", what, text[0] != '\0' ? text : xf_strerror(err));
+    }
+    s->opened = 1;
+    return XFGCU_EXIT_OK;
+}
+
+static void print_ready(const sim_run *s, const sim_args *a)
+{
+    switch ((sim_kind)a->kind) {
+    case SIM_SERIAL: printf("xfgcu sim: listening on serial %s at %ld baud\n", a->serial, a->baud); break;
+    case SIM_PTY:
+        printf("xfgcu sim: listening on pty %s%s%s\n", s->link.pty_path, a->link ? " link " : "", a->link ? a->link : "");
+        break;
+    default:
+        printf(strchr(s->link.bind_host, ':') != NULL ? "xfgcu sim: listening on %s [%s]:%u\n"
+                                                      : "xfgcu sim: listening on %s %s:%u\n",
+               a->kind == SIM_TCP ? "tcp" : "udp", s->link.bind_host, (unsigned)s->link.port);
+        break;
+    }
+    fflush(stdout);
+}
+
+static int start_sim(sim_run *s, const sim_args *a)
+{
+    xf_sim_config sc;
+    int k;
+    xf_sim_config_init(&sc);
+    sc.version = a->version;
+    if (a->has_calibration) {
+        sc.calibration_ms = (uint32_t)a->calibration_ms;
+    }
+    if (xf_sim_init(&s->sim, &sc) != XF_OK || xf_sim_attach(&s->sim, &s->hal) != XF_OK) {
+        return cli_fail("sim: cannot start the simulator");
+    }
+    for (k = 0; k < 256; k++) {
+        xf_sim_set_failure(&s->sim, (uint8_t)k, a->fail[k]);
+    }
+    s->sim.fault.drop_permille = (uint16_t)a->drop;
+    s->sim.fault.delay_ms = (uint32_t)a->delay;
+    return XFGCU_EXIT_OK;
+}
+
+static void report_executed(sim_run *s, uint32_t elapsed)
+{
+    int k;
+    for (k = 0; k < 256; k++) {
+        if (s->sim.stats.executed[k] != s->executed[k]) {
+            const char *name = xf_order_name((uint8_t)k);
+            s->executed[k] = s->sim.stats.executed[k];
+            printf("xfgcu sim: %.3f s: executed %s (0x%02X), state 0x%02X\n", cli_seconds(elapsed),
+                   name ? name : "unknown order", (unsigned)k,
+                   s->sim.fb_order == k ? s->sim.fb_state : 0u);
+            fflush(stdout);
+        }
+    }
+}
+
+static void run_sim(sim_run *s, const sim_args *a)
+{
+    xf_sim *sims[1];
+    uint32_t start = xf_posix_now_ms(), elapsed = 0;
+    sims[0] = &s->sim;
+    while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration)) {
+        (void)xf_posix_poll(NULL, 0, sims, 1, 50);
+        elapsed = xf_ms_since(xf_posix_now_ms(), start);
+        if (a->verbose) {
+            report_executed(s, elapsed);
+        }
+    }
+}
+
+static void close_gcu_link(sim_run *s, const sim_args *a)
+{
+    if (a->kind == SIM_SERIAL) {
+        xf_serial_close(&s->serial);
+    } else {
+        xf_simlink_close(&s->link);
+    }
+}
+
+int cmd_sim(const cli_link *link, int argc, char **argv)
+{
+    sim_args a;
+    sim_run *s;
+    int i, rc = XFGCU_EXIT_OK;
+    memset(&a, 0, sizeof(a));
+    a.port = (long)XF_GCU_TCP_PORT;
+    a.version = link->protocol;
+    a.baud = link->baud;
+    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
+        rc = take_arg(&a, argc, argv, &i);
+    }
+    if (rc == XFGCU_EXIT_OK && a.help) {
+        help_sim(stdout);
+        return XFGCU_EXIT_OK;
+    }
+    if (rc != XFGCU_EXIT_OK || (rc = check_args(&a)) != XFGCU_EXIT_OK) {
+        return rc;
+    }
+    s = calloc(1, sizeof(*s));
+    if (s == NULL) {
+        return cli_fail("sim: out of memory");
+    }
+    cli_signals_init();
+    rc = open_gcu_link(s, &a);
+    if (rc == XFGCU_EXIT_OK && (rc = start_sim(s, &a)) == XFGCU_EXIT_OK) {
+        print_ready(s, &a);
+        run_sim(s, &a);
+    }
+    if (s->opened) {
+        close_gcu_link(s, &a);
+    }
+    free(s);
+    return rc;
+}

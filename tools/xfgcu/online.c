@@ -1,0 +1,423 @@
+/*
+ * online.c - the link of the options, a client on it, and running one
+ * command the protocol's way (see online.h).
+ */
+#define _POSIX_C_SOURCE 200809L /* sigaction */
+
+#include "online.h"
+
+#include "cmdargs.h"
+
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- signals ------------------------------------------------------------------ */
+
+static volatile sig_atomic_t stop_flag = 0;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_flag = 1;
+}
+
+void cli_signals_init(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof(sa));
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0; /* no SA_RESTART: poll() returns at once */
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    sa.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &sa, NULL); /* a peer that went away is an error code, not a death */
+}
+
+int cli_stop_requested(void) { return stop_flag != 0; }
+
+/* ---- helpers ------------------------------------------------------------------ */
+
+int cli_real_in(const char *context, const char *opt, const char *text, double lo, double hi, const char *what,
+                double *out)
+{
+    if (text == NULL) {
+        return cli_fail("%s: %s needs a value: %s", context, opt, what);
+    }
+    if (cli_parse_real(text, out) != 0 || *out < lo || *out > hi) {
+        return cli_fail("%s: %s %s: must be %s", context, opt, text, what);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what,
+                long *out)
+{
+    long long v;
+    if (text == NULL) {
+        return cli_fail("%s: %s needs a value: %s", context, opt, what);
+    }
+    if (cli_parse_int(text, &v) != 0 || v < lo || v > hi) {
+        return cli_fail("%s: %s %s: must be %s", context, opt, text, what);
+    }
+    *out = (long)v;
+    return XFGCU_EXIT_OK;
+}
+
+int cli_opt_real(const char *context, int argc, char **argv, int *i, const char *name, double lo, double hi,
+                 const char *what, double *out, int *given)
+{
+    const char *v = NULL;
+    if (!cli_take_option(argc, argv, i, name, &v)) {
+        return -1;
+    }
+    if (*given) {
+        return cli_fail("%s: %s given twice", context, name);
+    }
+    *given = 1;
+    return cli_real_in(context, name, v, lo, hi, what, out);
+}
+
+int cli_opt_long(const char *context, int argc, char **argv, int *i, const char *name, long lo, long hi,
+                 const char *what, long *out, int *given)
+{
+    const char *v = NULL;
+    if (!cli_take_option(argc, argv, i, name, &v)) {
+        return -1;
+    }
+    if (*given) {
+        return cli_fail("%s: %s given twice", context, name);
+    }
+    *given = 1;
+    return cli_long_in(context, name, v, lo, hi, what, out);
+}
+
+int cli_unexpected(const char *context, const char *arg)
+{
+    if (arg[0] == '-') {
+        return cli_fail("%s: unknown option '%s' (see 'xfgcu %s --help')", context, arg, context);
+    }
+    return cli_fail("%s: unexpected argument '%s' (see 'xfgcu %s --help')", context, arg, context);
+}
+
+double cli_seconds(uint32_t ms) { return (double)ms / 1000.0; }
+
+double cli_wrap180(double deg) { return xf_units_wrap360(deg, -180.0); }
+
+/* ---- opening ------------------------------------------------------------------ */
+
+int online_check_link(const cli_link *opt, const char *context)
+{
+    if (opt->serial == NULL && opt->udp == NULL && opt->tcp == NULL) {
+        return cli_fail("%s needs a link: give --serial PATH, --udp HOST or --tcp HOST[:PORT] before '%s'", context,
+                        context);
+    }
+    return XFGCU_EXIT_OK;
+}
+
+online *online_new(void)
+{
+    online *o = calloc(1, sizeof(*o));
+    if (o == NULL) {
+        cli_fail("out of memory");
+    }
+    return o;
+}
+
+void online_free(online *o)
+{
+    if (o == NULL) {
+        return;
+    }
+    if (o->opened) {
+        switch (o->kind) {
+        case ONLINE_SERIAL: xf_serial_close(&o->serial); break;
+        case ONLINE_UDP: xf_udp_close(&o->udp); break;
+        case ONLINE_TCP: xf_tcp_close(&o->tcp); break;
+        }
+    }
+    free(o);
+}
+
+/* "HOST", "HOST:PORT", "[V6]:PORT" or a bare IPv6 address (several colons, no port). */
+static void split_host_port(const char *text, char *host, size_t cap, long *port)
+{
+    const char *colon = strrchr(text, ':');
+    size_t n = strlen(text);
+    *port = 0;
+    if (colon != NULL && (strchr(text, ':') == colon || colon[-1] == ']')) {
+        long long v = 0;
+        n = (size_t)(colon - text);
+        if (cli_parse_int(colon + 1, &v) == 0) {
+            *port = (long)v; /* checked by main */
+        }
+    }
+    if (n >= 2u && text[0] == '[' && text[n - 1u] == ']') {
+        text++;
+        n -= 2u;
+    }
+    if (n >= cap) {
+        n = cap - 1u;
+    }
+    memcpy(host, text, n);
+    host[n] = '\0';
+}
+
+static int open_failed(const online *o, const char *why) { return cli_fail_link("%s: %s", o->option, why); }
+
+static int open_serial(online *o)
+{
+    snprintf(o->option, sizeof(o->option), "--serial %s", o->opt->serial);
+    snprintf(o->desc, sizeof(o->desc), "serial %s at %ld baud", o->opt->serial, o->opt->baud);
+    o->kind = ONLINE_SERIAL;
+    if (xf_serial_open(&o->serial, o->opt->serial, (uint32_t)o->opt->baud) != XF_OK) {
+        return open_failed(o, o->serial.error.text);
+    }
+    o->opened = 1;
+    xf_serial_hal(&o->serial, &o->raw);
+    return XFGCU_EXIT_OK;
+}
+
+static int open_udp(online *o)
+{
+    xf_udp_config uc;
+    xf_udp_config_init(&uc);
+    uc.gcu_host = o->opt->udp;
+    uc.gcu_port = (uint16_t)(o->opt->gcu_port != 0 ? o->opt->gcu_port : (long)XF_GCU_UDP_PORT);
+    uc.local_port = (uint16_t)o->opt->local_port;
+    snprintf(o->option, sizeof(o->option), "--udp %s", o->opt->udp);
+    snprintf(o->desc, sizeof(o->desc), "udp %s:%u", o->opt->udp, (unsigned)uc.gcu_port);
+    o->kind = ONLINE_UDP;
+    if (xf_udp_open(&o->udp, &uc) != XF_OK) {
+        return open_failed(o, o->udp.error.text);
+    }
+    o->opened = 1;
+    xf_udp_hal(&o->udp, &o->raw);
+    return XFGCU_EXIT_OK;
+}
+
+static int open_tcp(online *o)
+{
+    xf_tcp_config tc;
+    char host[256];
+    long port;
+    split_host_port(o->opt->tcp, host, sizeof(host), &port);
+    if (port == 0) {
+        port = (o->opt->gcu_port != 0) ? o->opt->gcu_port : (long)XF_GCU_TCP_PORT;
+    }
+    xf_tcp_config_init(&tc);
+    tc.host = host;
+    tc.port = (uint16_t)port;
+    tc.connect_timeout_ms = (uint32_t)o->opt->timeout_ms;
+    snprintf(o->option, sizeof(o->option), "--tcp %s", o->opt->tcp);
+    snprintf(o->desc, sizeof(o->desc), strchr(host, ':') != NULL ? "tcp [%s]:%ld" : "tcp %s:%ld", host, port);
+    o->kind = ONLINE_TCP;
+    if (xf_tcp_open(&o->tcp, &tc) != XF_OK) {
+        return open_failed(o, o->tcp.error.text);
+    }
+    o->opened = 1;
+    if (xf_tcp_wait(&o->tcp, (uint32_t)o->opt->timeout_ms) != XF_OK) {
+        return open_failed(o, o->tcp.error.text);
+    }
+    xf_tcp_hal(&o->tcp, &o->raw);
+    return XFGCU_EXIT_OK;
+}
+
+static int open_link(online *o)
+{
+    if (o->opt->serial != NULL) {
+        return open_serial(o);
+    }
+    return (o->opt->udp != NULL) ? open_udp(o) : open_tcp(o);
+}
+
+static int start_client(online *o, const online_hooks *hooks)
+{
+    xf_client_config cc;
+    xf_err err;
+    xf_client_config_init(&cc);
+    cc.protocol_version = o->opt->protocol;
+    cc.rate_hz = (uint16_t)o->opt->rate_hz;
+    cc.command_timeout_ms = (uint32_t)o->opt->timeout_ms;
+    if (hooks != NULL) {
+        cc.on_bytes = hooks->on_bytes;
+        cc.on_link = hooks->on_link;
+        cc.user = hooks->user;
+    }
+    o->hal = o->raw;
+    if (hooks != NULL && hooks->tap != NULL) {
+        xf_tap_init(&o->tap, &o->raw, hooks->tap, hooks->user, &o->hal);
+    }
+    err = xf_client_init(&o->client, &o->hal, &cc);
+    if (err == XF_WARN_RATE) {
+        cli_note("--rate %ld: outside the 30-50 packets per second the vendor recommends; going on", o->opt->rate_hz);
+    } else if (err != XF_OK) {
+        return cli_fail("%s: cannot start the client: %s", o->context, xf_strerror(err));
+    }
+    return XFGCU_EXIT_OK;
+}
+
+/* Why the GCU may be silent, from the link's own error, when it has one. */
+static const char *link_error(const online *o)
+{
+    const char *text = (o->kind == ONLINE_SERIAL) ? o->serial.error.text
+                       : (o->kind == ONLINE_UDP)  ? o->udp.error.text
+                                                  : o->tcp.error.text;
+    return o->client.hal_closed && text[0] != '\0' ? text : NULL;
+}
+
+static int wait_first_reply(online *o)
+{
+    uint32_t start = xf_posix_now_ms();
+    uint32_t limit = (uint32_t)o->opt->timeout_ms;
+    const char *why;
+    while (xf_client_link(&o->client) != XF_LINK_UP) {
+        if (cli_stop_requested()) {
+            return cli_fail_link("%s: interrupted while waiting for the GCU on %s", o->context, o->desc);
+        }
+        if (xf_ms_since(xf_posix_now_ms(), start) >= limit) {
+            why = link_error(o);
+            return cli_fail_link("no answer from the GCU on %s within %u ms%s%s", o->desc, (unsigned)limit,
+                                 why ? ": " : "", why ? why : "");
+        }
+        online_poll(o, 20);
+    }
+    o->up_ms = xf_ms_since(xf_posix_now_ms(), start);
+    return XFGCU_EXIT_OK;
+}
+
+int online_open(online *o, const cli_link *opt, const char *context, const online_hooks *hooks)
+{
+    int rc = online_check_link(opt, context);
+    o->opt = opt;
+    o->context = context;
+    if (rc == XFGCU_EXIT_OK) {
+        rc = open_link(o);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = start_client(o, hooks);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = wait_first_reply(o);
+    }
+    return rc;
+}
+
+/* ---- the loop ---------------------------------------------------------------------- */
+
+void online_poll(online *o, int max_wait_ms)
+{
+    xf_client *clients[1];
+    clients[0] = &o->client;
+    (void)xf_posix_poll(clients, 1, NULL, 0, max_wait_ms);
+}
+
+void online_linger(online *o, uint32_t packets)
+{
+    uint32_t start = xf_posix_now_ms();
+    uint32_t target = xf_client_health(&o->client)->packets_sent + packets;
+    uint32_t limit = 200u + packets * 3u * 1000u / (uint32_t)o->opt->rate_hz;
+    while ((int32_t)(xf_client_health(&o->client)->packets_sent - target) < 0 &&
+           xf_ms_since(xf_posix_now_ms(), start) < limit) {
+        online_poll(o, 20);
+    }
+}
+
+/* ---- one command ------------------------------------------------------------------- */
+
+static int final_status(xf_cmd_status st)
+{
+    return st != XF_CMD_QUEUED && st != XF_CMD_SENDING && st != XF_CMD_OPERATING && st != XF_CMD_UNKNOWN;
+}
+
+static void report_progress(uint32_t id, online_progress_fn progress, void *user, uint32_t *since, int *reported)
+{
+    uint32_t now = xf_posix_now_ms();
+    xf_cmd_result r;
+    if (progress == NULL || (*reported && xf_ms_since(now, *since) / 5000u < (uint32_t)*reported)) {
+        return;
+    }
+    if (!*reported) {
+        *since = now;
+    }
+    memset(&r, 0, sizeof(r));
+    r.id = id;
+    r.status = XF_CMD_OPERATING;
+    r.state = XF_STATE_OPERATING;
+    progress(user, &r, xf_ms_since(now, *since));
+    (*reported)++;
+}
+
+int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_progress_fn progress, void *user)
+{
+    uint32_t id = 0, since = 0;
+    int reported = 0;
+    const char *bad = NULL;
+    xf_cmd_status st;
+    xf_err err = xf_client_submit(&o->client, cmd, &id, &bad);
+    memset(result, 0, sizeof(*result));
+    result->order = cmd->order;
+    if (err != XF_OK) {
+        return cli_fail("%s %s: %s%s%s", o->context, xf_order_name(cmd->order), xf_strerror(err), bad ? ": " : "",
+                        bad ? bad : "");
+    }
+    while (!final_status(st = xf_client_command_status(&o->client, id, result))) {
+        if (cli_stop_requested()) {
+            xf_client_cancel_all(&o->client);
+            continue;
+        }
+        if (st == XF_CMD_OPERATING) {
+            report_progress(id, progress, user, &since, &reported);
+        }
+        online_poll(o, 20);
+    }
+    if (st == XF_CMD_UNKNOWN) { /* forgotten: cannot happen with one command at a time */
+        result->status = XF_CMD_TIMEOUT;
+    }
+    return XFGCU_EXIT_OK;
+}
+
+void online_result_text(const xf_cmd_result *r, char *buf, size_t cap)
+{
+    switch ((xf_cmd_status)r->status) {
+    case XF_CMD_OK: snprintf(buf, cap, "ok"); break;
+    case XF_CMD_FAILED:
+        if (r->failed_cameras != 0u) {
+            snprintf(buf, cap, "failed cameras 0x%02X", r->failed_cameras);
+        } else {
+            snprintf(buf, cap, "failed");
+        }
+        break;
+    case XF_CMD_TIMEOUT: snprintf(buf, cap, "timeout"); break;
+    case XF_CMD_LINK_LOST: snprintf(buf, cap, "link lost"); break;
+    case XF_CMD_CANCELLED: snprintf(buf, cap, "interrupted"); break;
+    default: snprintf(buf, cap, "%s", xf_cmd_status_name((xf_cmd_status)r->status)); break;
+    }
+}
+
+int online_result_exit(const online *o, const char *what, const xf_cmd_result *r)
+{
+    char text[64];
+    const char *why;
+    online_result_text(r, text, sizeof(text));
+    switch ((xf_cmd_status)r->status) {
+    case XF_CMD_OK: return XFGCU_EXIT_OK;
+    case XF_CMD_FAILED:
+        cli_fail("%s: the GCU answered %s (state 0x%02X) on %s", what, text, r->state, o->desc);
+        return XFGCU_EXIT_FAILED;
+    case XF_CMD_TIMEOUT:
+        return cli_fail_link("%s: no execution state from the GCU on %s within %ld ms", what, o->desc,
+                             o->opt->timeout_ms);
+    case XF_CMD_CANCELLED: return cli_fail_link("%s: interrupted before the GCU answered on %s", what, o->desc);
+    default:
+        why = link_error(o);
+        return cli_fail_link("%s: link lost on %s%s%s", what, o->desc, why ? ": " : "", why ? why : "");
+    }
+}
+
+void online_attitude_text(const xf_telemetry *t, char *buf, size_t cap)
+{
+    snprintf(buf, cap, "roll %.2f pitch %.2f yaw %.2f deg", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
+             (double)t->cam_yaw_deg);
+}

@@ -1,0 +1,128 @@
+/*
+ * online.h - what the commands that talk to a GCU share: opening the link
+ * the link options name (--serial, --udp or --tcp), a client on it, the
+ * wait for the first reply, running one command the protocol's way, and
+ * the SIGINT/SIGTERM flag.
+ *
+ * Exit codes (cli.h): a missing link option is a usage error (2); a link
+ * that cannot be opened or a GCU that does not answer within --timeout is
+ * a link error (3), reported with the operating system's reason.
+ */
+#ifndef XFGCU_ONLINE_H
+#define XFGCU_ONLINE_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "cli.h"
+#include "xfgcu/xf_client.h"
+#include "xfgcu/xf_posix.h"
+#include "xfgcu/xf_tap.h"
+
+/* ---- signals ----------------------------------------------------------------- */
+
+/** Catch SIGINT and SIGTERM into a flag (sigaction, no work in the handler); SIGPIPE is ignored. */
+void cli_signals_init(void);
+/** Has SIGINT or SIGTERM arrived? */
+int cli_stop_requested(void);
+
+/* ---- small shared helpers ------------------------------------------------------ */
+
+/** Parse "--name VALUE" as a real in [lo, hi]; @p what says what it is. Prints errors. @return an exit code. */
+int cli_real_in(const char *context, const char *opt, const char *text, double lo, double hi, const char *what,
+                double *out);
+/** Same for an integer. */
+int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what,
+                long *out);
+/**
+ * Is argv[*i] option @p name ("--name V" or "--name=V")? If not, -1. If so,
+ * its value parsed as a real in [lo, hi] into *out, *given set (a second
+ * time is an error), and an exit code.
+ */
+int cli_opt_real(const char *context, int argc, char **argv, int *i, const char *name, double lo, double hi,
+                 const char *what, double *out, int *given);
+/** Same for an integer. */
+int cli_opt_long(const char *context, int argc, char **argv, int *i, const char *name, long lo, long hi,
+                 const char *what, long *out, int *given);
+/** The usual error for an argument nobody takes. */
+int cli_unexpected(const char *context, const char *arg);
+/** Milliseconds to seconds for humans: "1.25 s". */
+double cli_seconds(uint32_t ms);
+/** Wrap degrees into [-180, 180). */
+double cli_wrap180(double deg);
+
+/* ---- a client on the link of the options ---------------------------------------- */
+
+/** Callbacks a command wants; all may be NULL. */
+typedef struct online_hooks {
+    xf_on_bytes_fn on_bytes; /**< every packet sent and received */
+    xf_on_link_fn on_link;
+    xf_tap_fn tap;           /**< every chunk the link moved, both ways (record) */
+    void *user;              /**< for on_bytes, on_link and tap */
+} online_hooks;
+
+typedef enum online_kind { ONLINE_SERIAL, ONLINE_UDP, ONLINE_TCP } online_kind;
+
+typedef struct online {
+    const cli_link *opt;
+    const char *context; /* the command's name, for messages */
+    online_kind kind;
+    char desc[320];      /* "tcp 127.0.0.1:2332": where, for messages and captures */
+    char option[300];    /* "--tcp 127.0.0.1:2332": the option that named the link */
+    xf_serial serial;
+    xf_udp udp;
+    xf_tcp tcp;
+    int opened;
+    xf_hal raw;          /* the link's own hal */
+    xf_tap tap;
+    xf_hal hal;          /* what the client uses: raw, or tapped */
+    xf_client client;
+    uint32_t up_ms;      /* how long the first reply took */
+} online;
+
+/** The link options name a link? Prints the usage error if not. @return an exit code. */
+int online_check_link(const cli_link *opt, const char *context);
+
+/**
+ * Open the link, start a client on it (with --protocol, --rate, --timeout)
+ * and wait for the first valid reply within --timeout. @p o must be zeroed
+ * storage (online_new() gives one). Prints any error. @return an exit code.
+ */
+int online_open(online *o, const cli_link *opt, const char *context, const online_hooks *hooks);
+
+/** Zeroed storage for a session (it is large); NULL when out of memory, after printing why. */
+online *online_new(void);
+/** Close the link and free @p o (may be NULL). */
+void online_free(online *o);
+
+/** One round of the loop: wait at most @p max_wait_ms for the link or the next packet, then step the client. */
+void online_poll(online *o, int max_wait_ms);
+
+/** Keep the loop going (null packets, or whatever control is set) until @p packets more were sent. */
+void online_linger(online *o, uint32_t packets);
+
+/** Prints progress of a command (operating) as it runs; NULL for none. */
+typedef void (*online_progress_fn)(void *user, const xf_cmd_result *r, uint32_t operating_ms);
+
+/**
+ * Run @p cmd the protocol's way: submit it, keep the loop going until its
+ * result is final (ok, failed, timeout, link lost) or a signal arrives
+ * (status XF_CMD_CANCELLED). @p progress is called when the GCU says
+ * "operating", then about every 5 s while it still is.
+ * @return XFGCU_EXIT_OK with *result set, or a usage error (the command
+ *   does not fit the protocol version).
+ */
+int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_progress_fn progress, void *user);
+
+/** The result as one word or phrase for stdout: "ok", "failed cameras 0x02", "failed", "timeout", "link lost". */
+void online_result_text(const xf_cmd_result *r, char *buf, size_t cap);
+/**
+ * The exit code of a finished command, printing the one stderr line of a
+ * failure ("send zoom-in: the GCU answered failed cameras 0x02 on tcp ...").
+ */
+int online_result_exit(const online *o, const char *what, const xf_cmd_result *r);
+
+/** The telemetry's attitude as "roll 0.00 pitch -30.00 yaw 45.00 deg". */
+void online_attitude_text(const xf_telemetry *t, char *buf, size_t cap);
+
+#endif /* XFGCU_ONLINE_H */
