@@ -1,6 +1,7 @@
 /*
  * test_cli_args.c - the program's shape: help, version, link options,
- * unknown commands and options, and the online commands not built yet.
+ * unknown commands and options, and the arguments of the online commands
+ * (checked before any link is opened).
  * Every failure is exit 2 with one "xfgcu: ..." line naming the culprit.
  */
 #include <setjmp.h>
@@ -142,6 +143,12 @@ static void test_other_link_options(void **state)
     r = run_tool(NULL, "--local-port", "65536", "decode", APPENDIX1_HEX, NULL);
     assert_failure(&r, 2, "--local-port 65536", NULL);
     tool_result_free(&r);
+    r = run_tool(NULL, "--local-port", "0", "decode", APPENDIX1_HEX, NULL); /* any free port */
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--rate", "201", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--rate 201", "1..200", NULL);
+    tool_result_free(&r);
     r = run_tool(NULL, "--tcp", "gimbal:99999", "decode", APPENDIX1_HEX, NULL);
     assert_failure(&r, 2, "--tcp", "99999", NULL);
     tool_result_free(&r);
@@ -161,19 +168,115 @@ static void test_other_link_options(void **state)
     tool_result_free(&r);
 }
 
-static void test_online_commands_not_built(void **state)
+static void test_online_commands_help(void **state)
 {
     static const char *const names[] = {"send", "point", "rate", "monitor", "sim", "demo", "record", "replay"};
     size_t i;
     (void)state;
     for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
         char want[64];
-        tool_result r = run_tool(NULL, "--udp", "127.0.0.1", names[i], "shutter", NULL);
-        snprintf(want, sizeof(want), "'%s' needs the client layer, not built yet", names[i]);
+        tool_result r = run_tool(NULL, names[i], "--help", NULL);
+        snprintf(want, sizeof(want), "usage: xfgcu ");
+        assert_ok_containing(&r, want);
+        assert_ok_containing(&r, names[i]);
+        tool_result_free(&r);
+    }
+    {
+        tool_result r = run_tool(NULL, "send", "zoom-to", "--help", NULL);
+        assert_ok_containing(&r, "usage: xfgcu send [--protocol 1|2] zoom-to (--rate R | --fraction N)");
+        tool_result_free(&r);
+        r = run_tool(NULL, "--tcp", "127.0.0.1", "point", "--pitch", "1", "--help", NULL);
+        assert_ok_containing(&r, "usage: xfgcu [LINK OPTIONS] point");
+        tool_result_free(&r);
+    }
+}
+
+static void test_online_commands_need_a_link(void **state)
+{
+    static const char *const names[] = {"send", "point", "rate", "monitor", "record"};
+    static const char *const args[][7] = {{"shutter"},
+                                          {"--pitch", "0", "--yaw", "0"},
+                                          {"--pitch", "0", "--yaw", "0", "--duration", "1"},
+                                          {"--json"},
+                                          {"/tmp/xfgcu-never-written.cap"}};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
+        const char *argv[8];
+        int n = 0;
+        char want[128];
+        tool_result r;
+        argv[n++] = names[i];
+        while (n < 8 && args[i][n - 1] != NULL) {
+            argv[n] = args[i][n - 1];
+            n++;
+        }
+        r = run_tool_argv(n, argv, NULL);
+        snprintf(want, sizeof(want), "%s needs a link: give --serial PATH, --udp HOST or --tcp HOST[:PORT]", names[i]);
         assert_failure(&r, 2, want, NULL);
         tool_result_free(&r);
-        r = run_tool(NULL, names[i], "--help", NULL);
-        assert_ok_containing(&r, "not built yet");
+    }
+}
+
+/* Bad arguments of each online command: exit 2 and one line naming the argument, before any link is opened
+ * (the links named here do not exist). */
+static void test_online_bad_arguments(void **state)
+{
+    static const struct {
+        const char *args[10];
+        const char *needle;
+    } cases[] = {
+        {{"--tcp", "127.0.0.1:9", "send", NULL}, "send: which command?"},
+        {{"--tcp", "127.0.0.1:9", "send", "frobnicate", NULL}, "send: unknown command 'frobnicate'"},
+        {{"--tcp", "127.0.0.1:9", "send", "--bogus", NULL}, "send: unknown option '--bogus'"},
+        {{"--tcp", "127.0.0.1:9", "send", "zoom-to", "--rate", "0.5", NULL}, "send zoom-to: --rate 0.5 is out of range"},
+        {{"--tcp", "127.0.0.1:9", "send", "track", "--start", NULL}, "send track: --start needs --box"},
+        {{"--tcp", "127.0.0.1:9", "send", "shutter", "--protocol", "3", NULL}, "--protocol 3"},
+        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "10", NULL}, "point: missing --yaw DEG"},
+        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "200", "--yaw", "0", NULL}, "point: --pitch 200: must be degrees"},
+        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "1", "--pitch", "2", "--yaw", "0", NULL}, "--pitch given twice"},
+        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "x", "--yaw", "0", NULL}, "point: --pitch x"},
+        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "0", "--yaw", "0", "--wait", "0", NULL}, "point: --wait 0"},
+        {{"--tcp", "127.0.0.1:9", "rate", "--pitch", "0", "--yaw", "10", NULL}, "rate: missing --duration S"},
+        {{"--tcp", "127.0.0.1:9", "rate", "--pitch", "0", "--yaw", "151", "--duration", "1", NULL},
+         "rate: --yaw 151: must be deg/s, -150..150"},
+        {{"--tcp", "127.0.0.1:9", "rate", "--pitch", "0", "--yaw", "1", "--duration", "0", NULL}, "rate: --duration 0"},
+        {{"--tcp", "127.0.0.1:9", "rate", "--spin", NULL}, "rate: unknown option '--spin'"},
+        {{"--tcp", "127.0.0.1:9", "monitor", "--count", "0", NULL}, "monitor: --count 0"},
+        {{"--tcp", "127.0.0.1:9", "monitor", "--duration", NULL}, "monitor: --duration needs a value"},
+        {{"--tcp", "127.0.0.1:9", "monitor", "extra", NULL}, "monitor: unexpected argument 'extra'"},
+        {{"--tcp", "127.0.0.1:9", "record", NULL}, "record: missing FILE"},
+        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "--count", "x", NULL}, "record: --count x"},
+        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "frobnicate", NULL}, "record: unknown command 'frobnicate'"},
+        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "zoom-to", NULL}, "record zoom-to: give --rate R or --fraction N"},
+        {{"replay", NULL}, "replay: missing FILE"},
+        {{"replay", "a.cap", "b.cap", NULL}, "replay: unexpected argument 'b.cap'"},
+        {{"replay", "--json", "--brief", "a.cap", NULL}, "--json and --brief exclude each other"},
+        {{"replay", "/tmp/xfgcu-no-such-capture", NULL}, "replay: cannot open /tmp/xfgcu-no-such-capture"},
+        {{"sim", "--tcp", "70000", NULL}, "sim: --tcp 70000: must be a port"},
+        {{"sim", "--udp", "--tcp", NULL}, "sim: give only one of"},
+        {{"sim", "--fail", "zoom-in", NULL}, "sim: --fail zoom-in: expected ORDER=STATE"},
+        {{"sim", "--fail", "frobnicate=1", NULL}, "'frobnicate' is not an order"},
+        {{"sim", "--fail", "shutter=256", NULL}, "STATE must be 0..255"},
+        {{"sim", "--drop", "1001", NULL}, "sim: --drop 1001"},
+        {{"sim", "--delay", "-1", NULL}, "sim: --delay -1"},
+        {{"sim", "--link", "/tmp/gcu", NULL}, "sim: --link /tmp/gcu goes only with --pty"},
+        {{"sim", "--serial", NULL}, "sim: --serial needs a value"},
+        {{"sim", "--protocol", "3", NULL}, "--protocol 3"},
+        {{"sim", "--bogus", NULL}, "sim: unknown option '--bogus'"},
+        {{"demo", "now", NULL}, "demo: unexpected argument 'now'"},
+        {{"--rate", "500", "send", "shutter", NULL}, "--rate 500"},
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+        int n = 0;
+        tool_result r;
+        while (cases[i].args[n] != NULL) {
+            n++;
+        }
+        r = run_tool_argv(n, cases[i].args, NULL);
+        assert_failure(&r, 2, cases[i].needle, NULL);
         tool_result_free(&r);
     }
 }
@@ -189,7 +292,9 @@ int main(void)
         cmocka_unit_test(test_baud),
         cmocka_unit_test(test_protocol_option),
         cmocka_unit_test(test_other_link_options),
-        cmocka_unit_test(test_online_commands_not_built),
+        cmocka_unit_test(test_online_commands_help),
+        cmocka_unit_test(test_online_commands_need_a_link),
+        cmocka_unit_test(test_online_bad_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

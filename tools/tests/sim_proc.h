@@ -1,0 +1,44 @@
+/*
+ * sim_proc.h - `xfgcu sim` as a background process for the tests of the
+ * online commands: started with posix_spawn, its ready line read from a
+ * pipe, stopped with SIGTERM (then SIGKILL) and reaped. Every simulator
+ * started is also remembered, and killed at exit if a test left it, and
+ * each runs with --duration so that none outlives a crashed test.
+ */
+#ifndef XFGCU_SIM_PROC_H
+#define XFGCU_SIM_PROC_H
+
+#include <sys/types.h>
+
+typedef enum sim_link { SIM_TCP, SIM_UDP, SIM_PTY } sim_link;
+
+typedef struct sim_proc {
+    pid_t pid;       /* 0: not running */
+    int out_fd;      /* its stdout (kept open: it may print with --verbose) */
+    sim_link link;
+    char line[256];  /* the ready line */
+    char port[8];    /* TCP / UDP */
+    char path[128];  /* pty */
+} sim_proc;
+
+/**
+ * Start `xfgcu sim` on @p link (port 0: any free one) with @p extra
+ * arguments (NULL-terminated list, may be empty) and wait for its ready
+ * line (5 s at most; a failure fails the test).
+ */
+void sim_start(sim_proc *s, sim_link link, ...);
+
+/** Stop it (SIGTERM, then SIGKILL after 5 s) and reap it; returns its exit status (128 + signal if killed). */
+int sim_stop(sim_proc *s);
+
+/** The link options that reach it: "--tcp 127.0.0.1:PORT", UDP with --gcu-port and --local-port 0, or --serial PATH. */
+int sim_link_args(const sim_proc *s, const char **args);
+
+/** cmocka setup/teardown: state is a zeroed sim_proc, started on TCP, UDP, a pty, or not at all. */
+int sim_setup_tcp(void **state);
+int sim_setup_udp(void **state);
+int sim_setup_pty(void **state);
+int sim_setup_none(void **state);
+int sim_teardown(void **state);
+
+#endif /* XFGCU_SIM_PROC_H */

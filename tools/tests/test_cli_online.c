@@ -1,0 +1,460 @@
+/*
+ * test_cli_online.c - the commands that talk to a GCU, against `xfgcu sim`
+ * running in the background on each link (TCP, UDP, a pseudo-terminal):
+ * send (ok, failed with a camera mask, calibration's "operating"), no GCU
+ * at all, monitor --json and plain, point and rate moving the simulated
+ * gimbal, and record then replay.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+#include <cmocka.h>
+#include <jansson.h>
+
+#include "run_tool.h"
+#include "sim_proc.h"
+
+/* ---- helpers ---------------------------------------------------------------------- */
+
+/* Run xfgcu with the link options of @p s, then the arguments (NULL-terminated). */
+static tool_result run_on(const sim_proc *s, ...)
+{
+    const char *args[48];
+    int n = sim_link_args(s, args);
+    va_list ap;
+    const char *a;
+    va_start(ap, s);
+    while ((a = va_arg(ap, const char *)) != NULL) {
+        assert_true(n < 48);
+        args[n++] = a;
+    }
+    va_end(ap);
+    return run_tool_argv(n, args, NULL);
+}
+
+static void expect(const tool_result *r, int status, const char *out)
+{
+    if (r->status != status || strcmp(r->out, out) != 0) {
+        print_error("status %d (want %d)\nstdout: \"%s\" (want \"%s\")\nstderr: %s\n", r->status, status, r->out, out,
+                    r->err);
+        fail();
+    }
+}
+
+static json_t *parse_json_line(const char *line, size_t len)
+{
+    json_error_t e;
+    json_t *obj = json_loadb(line, len, 0, &e);
+    if (obj == NULL) {
+        print_error("not JSON (%s): %.*s\n", e.text, (int)len, line);
+        fail();
+    }
+    return obj;
+}
+
+static json_int_t int_key(const json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!json_is_integer(v)) {
+        print_error("key %s is missing or not an integer\n", key);
+        fail();
+    }
+    return json_integer_value(v);
+}
+
+/* Every line of @p text is a GCU packet object with the decode --json keys; returns how many. */
+static size_t check_gcu_lines(const char *text, uint8_t version)
+{
+    static const char *const keys[] = {"version",     "length",       "order",         "gimbal_mode",
+                                       "pod_status",  "cam_roll",     "cam_pitch",     "cam_yaw",
+                                       "rate_x",      "sub_header",   "gimbal_code",   "target_distance",
+                                       "zoom_cam1",   "zoom_cam2",    "target_latitude", "rel_angle_z"};
+    size_t n = 0, k;
+    const char *p = text;
+    while (*p != '\0') {
+        size_t len = strcspn(p, "\n");
+        json_t *obj = parse_json_line(p, len);
+        assert_string_equal(json_string_value(json_object_get(obj, "direction")), "gcu");
+        assert_non_null(json_object_get(obj, "params"));
+        for (k = 0; k < sizeof(keys) / sizeof(keys[0]); k++) {
+            (void)int_key(obj, keys[k]);
+        }
+        assert_int_equal(int_key(obj, "version"), version);
+        if (version >= 2u) {
+            (void)int_key(obj, "thermal_status");
+            (void)int_key(obj, "camera_status");
+            (void)int_key(obj, "time_zone");
+        }
+        json_decref(obj);
+        n++;
+        p += len + (p[len] == '\n');
+    }
+    return n;
+}
+
+/* The attitude the simulator reports now (raw 0.01 deg), through monitor --json --count 1. */
+static void attitude(const sim_proc *s, long *pitch, long *yaw)
+{
+    tool_result r = run_on(s, "monitor", "--json", "--count", "1", NULL);
+    json_t *obj;
+    assert_int_equal(r.status, 0);
+    assert_int_equal(count_lines(r.out), 1);
+    obj = parse_json_line(r.out, strcspn(r.out, "\n"));
+    *pitch = (long)int_key(obj, "cam_pitch");
+    *yaw = (long)int_key(obj, "cam_yaw");
+    json_decref(obj);
+    tool_result_free(&r);
+}
+
+/* ---- send --------------------------------------------------------------------------- */
+
+static void test_send_ok(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r = run_on(s, "send", "shutter", NULL);
+    expect(&r, 0, "ok\n");
+    assert_int_equal(r.err_len, 0);
+    tool_result_free(&r);
+    r = run_on(s, "send", "zoom-to", "--rate", "5.5", NULL);
+    expect(&r, 0, "ok\n");
+    tool_result_free(&r);
+    r = run_on(s, "send", "shutter", "--cameras", "all", NULL);
+    expect(&r, 0, "ok\n");
+    tool_result_free(&r);
+}
+
+static void test_send_failed_mask(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r;
+    sim_start(s, SIM_TCP, "--fail", "zoom-in=0x02", "--fail", "shutter=1", NULL);
+    r = run_on(s, "send", "zoom-in", NULL);
+    expect(&r, 1, "failed cameras 0x02\n");
+    assert_int_equal(count_lines(r.err), 1);
+    assert_non_null(strstr(r.err, "xfgcu: send zoom-in: the GCU answered failed cameras 0x02"));
+    tool_result_free(&r);
+    r = run_on(s, "send", "shutter", NULL);
+    expect(&r, 1, "failed\n");
+    assert_int_equal(count_lines(r.err), 1);
+    tool_result_free(&r);
+    r = run_on(s, "send", "focus", NULL); /* the others still work */
+    expect(&r, 0, "ok\n");
+    tool_result_free(&r);
+}
+
+static void test_send_calibration(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r;
+    sim_start(s, SIM_UDP, "--calibration-ms", "300", NULL);
+    r = run_on(s, "send", "calibration", NULL);
+    expect(&r, 0, "operating\nok\n");
+    tool_result_free(&r);
+}
+
+static void test_send_v2(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r;
+    sim_start(s, SIM_TCP, "--protocol", "2", NULL);
+    r = run_on(s, "--protocol", "2", "send", "digital-zoom", "--on", NULL);
+    expect(&r, 0, "ok\n");
+    tool_result_free(&r);
+    r = run_on(s, "monitor", "--json", "--count", "3", NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(check_gcu_lines(r.out, 2), 3);
+    tool_result_free(&r);
+}
+
+/* ---- no GCU -------------------------------------------------------------------------- */
+
+/* A local port that refuses connections (bound, not listening) or swallows datagrams, held while in use. */
+static int hold_port(int type, char *port, size_t cap)
+{
+    struct sockaddr_in a;
+    socklen_t len = sizeof(a);
+    int fd = socket(AF_INET, type, 0);
+    assert_true(fd >= 0);
+    memset(&a, 0, sizeof(a));
+    a.sin_family = AF_INET;
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
+    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
+    snprintf(port, cap, "%u", (unsigned)ntohs(a.sin_port));
+    return fd;
+}
+
+static void test_no_gcu(void **state)
+{
+    char port[8], tcp[32];
+    int fd = hold_port(SOCK_STREAM, port, sizeof(port));
+    tool_result r;
+    (void)state;
+    snprintf(tcp, sizeof(tcp), "127.0.0.1:%s", port);
+    r = run_tool(NULL, "--tcp", tcp, "--timeout", "300", "send", "shutter", NULL);
+    assert_failure(&r, 3, "--tcp 127.0.0.1:", "connect to 127.0.0.1:", NULL);
+    tool_result_free(&r);
+    close(fd);
+    fd = hold_port(SOCK_DGRAM, port, sizeof(port));
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--gcu-port", port, "--local-port", "0", "--timeout", "300", "monitor",
+                 NULL);
+    assert_failure(&r, 3, "no answer from the GCU on udp 127.0.0.1:", "within 300 ms", NULL);
+    tool_result_free(&r);
+    close(fd);
+    r = run_tool(NULL, "--serial", "/dev/xfgcu-no-such-device", "send", "shutter", NULL);
+    assert_failure(&r, 3, "--serial /dev/xfgcu-no-such-device", "No such file or directory", NULL);
+    tool_result_free(&r);
+}
+
+static void test_sim_port_taken(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r = run_tool(NULL, "sim", "--tcp", s->port, "--duration", "5", NULL);
+    assert_failure(&r, 3, "sim --tcp", s->port, NULL);
+    tool_result_free(&r);
+}
+
+/* ---- monitor ------------------------------------------------------------------------- */
+
+static void test_monitor_json(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r = run_on(s, "monitor", "--json", "--count", "5", NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(r.err_len, 0);
+    assert_int_equal(check_gcu_lines(r.out, 1), 5);
+    tool_result_free(&r);
+}
+
+static void test_monitor_plain(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r = run_on(s, "monitor", "--duration", "1.5", NULL); /* not a terminal: one line per second */
+    assert_int_equal(r.status, 0);
+    assert_true(count_lines(r.out) >= 1 && count_lines(r.out) <= 3);
+    assert_non_null(strstr(r.out, "link up"));
+    assert_non_null(strstr(r.out, "mode head_lock"));
+    assert_null(strstr(r.out, "\033[")); /* no terminal codes into a pipe */
+    tool_result_free(&r);
+}
+
+/* ---- point and rate ------------------------------------------------------------------ */
+
+static void test_point(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r = run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL);
+    long pitch, yaw;
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "reached roll 0.00 pitch -30."));
+    tool_result_free(&r);
+    attitude(s, &pitch, &yaw);
+    assert_true(labs(pitch + 3000) <= 50 && labs(yaw - 4500) <= 50);
+    r = run_on(s, "point", "--pitch", "10", "--yaw", "-90", NULL); /* -90 is 270 */
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    attitude(s, &pitch, &yaw);
+    assert_true(labs(pitch - 1000) <= 50 && labs(yaw - 27000) <= 50);
+}
+
+static void test_point_unreachable(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r = run_on(s, "point", "--pitch", "120", "--yaw", "0", "--wait", "0.5", NULL); /* the sim stops at 90 */
+    assert_failure(&r, 3, "point: not there in time", NULL);
+    tool_result_free(&r);
+}
+
+static void test_rate(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    long pitch0, yaw0, pitch1, yaw1, moved;
+    tool_result r;
+    attitude(s, &pitch0, &yaw0);
+    r = run_on(s, "rate", "--pitch", "-10", "--yaw", "30", "--duration", "1", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "turned 1."));
+    tool_result_free(&r);
+    attitude(s, &pitch1, &yaw1);
+    moved = ((yaw1 - yaw0) % 36000 + 36000) % 36000;
+    assert_true(labs(moved - 3000) <= 400);          /* 30 deg/s for 1 s */
+    assert_true(labs((pitch1 - pitch0) + 1000) <= 200); /* -10 deg/s */
+    attitude(s, &pitch0, &yaw0);                      /* and it holds still after */
+    assert_true(labs(yaw0 - yaw1) <= 20);
+}
+
+/* ---- record and replay ----------------------------------------------------------------- */
+
+static void temp_name(char *buf, size_t cap, const char *what)
+{
+    snprintf(buf, cap, "/tmp/xfgcu-test-%ld-%s.cap", (long)getpid(), what);
+}
+
+static void count_directions(const char *jsonl, size_t *host, size_t *gcu, int *shutter)
+{
+    const char *p = jsonl;
+    *host = *gcu = 0;
+    *shutter = 0;
+    while (*p != '\0') {
+        size_t len = strcspn(p, "\n");
+        json_t *obj = parse_json_line(p, len);
+        const char *dir = json_string_value(json_object_get(obj, "direction"));
+        assert_true(json_is_number(json_object_get(obj, "t")));
+        assert_non_null(dir);
+        if (strcmp(dir, "host") == 0) {
+            (*host)++;
+        } else {
+            (*gcu)++;
+            *shutter |= (int_key(obj, "order") == 0x20 && strcmp(json_string_value(json_object_get(obj, "params")), "00") == 0);
+        }
+        json_decref(obj);
+        p += len + (p[len] == '\n');
+    }
+}
+
+static void test_record_replay(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char file[128];
+    size_t host, gcu;
+    int shutter;
+    tool_result r;
+    temp_name(file, sizeof(file), "duration");
+    r = run_on(s, "record", file, "--duration", "1", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "recorded 1."));
+    assert_non_null(strstr(r.out, " chunks, "));
+    tool_result_free(&r);
+    r = run_tool(NULL, "replay", file, "--json", NULL);
+    assert_int_equal(r.status, 0);
+    count_directions(r.out, &host, &gcu, &shutter);
+    assert_true(host >= 40 && gcu >= 40 && host - gcu <= 2); /* 50 packets per second, each answered */
+    tool_result_free(&r);
+    r = run_tool(NULL, "replay", file, "--brief", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, " > host "));
+    assert_non_null(strstr(r.out, " < gcu "));
+    assert_non_null(strstr(r.out, " packets: "));
+    tool_result_free(&r);
+    r = run_tool(NULL, "replay", file, NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "gcu packet (t 0."));
+    tool_result_free(&r);
+    unlink(file);
+}
+
+static void test_record_command(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char file[128];
+    size_t host, gcu;
+    int shutter;
+    tool_result r;
+    temp_name(file, sizeof(file), "shutter");
+    r = run_on(s, "record", file, "shutter", NULL);
+    assert_int_equal(r.status, 0);
+    assert_true(strncmp(r.out, "ok\nrecorded ", 12) == 0);
+    tool_result_free(&r);
+    r = run_tool(NULL, "replay", file, "--json", NULL);
+    assert_int_equal(r.status, 0);
+    count_directions(r.out, &host, &gcu, &shutter);
+    assert_true(host >= 3 && gcu == host && shutter);
+    tool_result_free(&r);
+    unlink(file);
+}
+
+static void test_replay_malformed(void **state)
+{
+    char file[128];
+    FILE *f;
+    tool_result r;
+    (void)state;
+    temp_name(file, sizeof(file), "bad");
+    f = fopen(file, "w");
+    assert_non_null(f);
+    fputs("# xfgcu capture 1\n0.000 > A8 E5\n0.001 < 8A 5E 4\n", f);
+    fclose(f);
+    r = run_tool(NULL, "replay", file, "--json", NULL);
+    assert_failure(&r, 2, "line 3", file, NULL);
+    tool_result_free(&r);
+    f = fopen(file, "w");
+    assert_non_null(f);
+    fputs("not a capture\n", f);
+    fclose(f);
+    r = run_tool(NULL, "replay", file, NULL);
+    assert_failure(&r, 2, "line 1", "not an xfgcu capture", NULL);
+    tool_result_free(&r);
+    unlink(file);
+    r = run_tool(NULL, "replay", file, NULL);
+    assert_failure(&r, 2, "cannot open", NULL);
+    tool_result_free(&r);
+}
+
+static void test_replay_split_chunks(void **state)
+{
+    /* a packet split over two chunks, noise, and a false header at the end (flushed) */
+    char file[128], line[400];
+    uint8_t pkt[72];
+    size_t i;
+    FILE *f;
+    tool_result r;
+    (void)state;
+    memcpy(pkt, appendix1, sizeof(pkt));
+    temp_name(file, sizeof(file), "split");
+    f = fopen(file, "w");
+    assert_non_null(f);
+    fputs("# xfgcu capture 1\n# link test\n0.000 > 00 11", f);
+    for (i = 0; i < 30; i++) {
+        fprintf(f, " %02X", pkt[i]);
+    }
+    fputs("\n0.005 <\n0.010 >", f);
+    for (i = 30; i < 72; i++) {
+        fprintf(f, " %02X", pkt[i]);
+    }
+    fputs(" A8 E5 48\n", f);
+    fclose(f);
+    r = run_tool(NULL, "replay", file, "--json", NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(count_lines(r.out), 1);
+    snprintf(line, sizeof(line), "{\"t\":0.01,\"direction\":\"host\",\"version\":1,\"length\":72,");
+    assert_true(strncmp(r.out, line, strlen(line)) == 0);
+    tool_result_free(&r);
+    unlink(file);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_send_ok, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_ok, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_ok, sim_setup_pty, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_failed_mask, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_calibration, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_v2, sim_setup_none, sim_teardown),
+        cmocka_unit_test(test_no_gcu),
+        cmocka_unit_test_setup_teardown(test_sim_port_taken, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_monitor_json, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_monitor_json, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_monitor_json, sim_setup_pty, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_monitor_plain, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_point, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_point, sim_setup_pty, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_point_unreachable, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_rate, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_record_replay, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_record_command, sim_setup_pty, sim_teardown),
+        cmocka_unit_test(test_replay_malformed),
+        cmocka_unit_test(test_replay_split_chunks),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
