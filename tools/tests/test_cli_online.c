@@ -254,9 +254,11 @@ static void test_point(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
     tool_result r = run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL);
+    double roll_deg = 99, pitch_deg = 99, yaw_deg = 99;
     long pitch, yaw;
     assert_int_equal(r.status, 0);
-    assert_non_null(strstr(r.out, "reached roll 0.00 pitch -30."));
+    assert_int_equal(sscanf(r.out, "reached roll %lf pitch %lf yaw %lf deg in ", &roll_deg, &pitch_deg, &yaw_deg), 3);
+    assert_true(fabs(roll_deg) <= 0.5 && fabs(pitch_deg + 30.0) <= 0.5 && fabs(yaw_deg - 45.0) <= 0.5);
     tool_result_free(&r);
     attitude(s, &pitch, &yaw);
     assert_true(labs(pitch + 3000) <= 50 && labs(yaw - 4500) <= 50);
@@ -368,7 +370,10 @@ static void test_record_command(void **state)
     r = run_tool(NULL, "replay", file, "--json", NULL);
     assert_int_equal(r.status, 0);
     count_directions(r.out, &host, &gcu, &shutter);
-    assert_true(host >= 3 && gcu == host && shutter);
+    if (!(host >= 3 && gcu + 1 >= host && gcu <= host && shutter)) { /* the last reply may be late under load */
+        print_error("%zu host packets, %zu GCU packets, shutter feedback %d\n", host, gcu, shutter);
+        fail();
+    }
     tool_result_free(&r);
     unlink(file);
 }

@@ -323,7 +323,8 @@ static int tour(demo *d)
     }
     printf("\n");
     if (d->failure[0] != '\0') {
-        printf("The tour took %.1f s and something did not behave.\n", cli_seconds(xf_ms_since(xf_posix_now_ms(), d->t0)));
+        printf("%s after %.1f s.\n", cli_stop_requested() ? "Interrupted" : "Something did not behave",
+               cli_seconds(xf_ms_since(xf_posix_now_ms(), d->t0)));
         cli_fail("demo: %s", d->failure);
         return XFGCU_EXIT_FAILED;
     }

@@ -45,6 +45,7 @@ typedef struct monitor {
     double duration;
     int has_count, has_duration;
     uint32_t received;
+    uint32_t start_ms; /* when the link was opened */
     uint8_t link_seen; /* the link state last seen, for notes */
     uint8_t was_up;
 } monitor;
@@ -112,12 +113,15 @@ static void distance_text(const xf_telemetry *t, char *buf, size_t cap)
     }
 }
 
-static void link_text(const online *o, char *buf, size_t cap)
+/* The client counts replies over whole seconds: "-" until the first one is over. */
+static void rate_text(const monitor *m, char *buf, size_t cap)
 {
-    const xf_health *h = xf_client_health(&o->client);
-    snprintf(buf, cap, "%s, %u replies/s, %u missing/s, %u sent, %u received", xf_link_state_name((xf_link_state)h->link),
-             (unsigned)h->reply_rate_hz, (unsigned)h->replies_missing, (unsigned)h->packets_sent,
-             (unsigned)h->replies);
+    const xf_health *h = xf_client_health(&m->o->client);
+    if (xf_ms_since(xf_posix_now_ms(), m->start_ms) < 1000u) {
+        snprintf(buf, cap, "- replies/s, - missing/s");
+    } else {
+        snprintf(buf, cap, "%u replies/s, %u missing/s", (unsigned)h->reply_rate_hz, (unsigned)h->replies_missing);
+    }
 }
 
 static void draw_v2(const xf_telemetry *t)
@@ -134,10 +138,10 @@ static void draw_screen(const monitor *m)
 {
     const xf_telemetry *t = xf_client_telemetry(&m->o->client);
     const xf_health *h = xf_client_health(&m->o->client);
-    char dist[160], link[160];
+    char dist[160], rate[64];
     const char *mode = xf_mode_name(t->gimbal_mode);
     distance_text(t, dist, sizeof(dist));
-    link_text(m->o, link, sizeof(link));
+    rate_text(m, rate, sizeof(rate));
     printf("\033[H\033[2J"); /* cursor home, clear */
     printf("xfgcu monitor: %s   (Ctrl-C to quit)\n\n", m->o->desc);
     printf("gimbal      %s (code %u), hardware %u, firmware %u, protocol %u\n", t->model ? t->model : "unknown model",
@@ -158,7 +162,8 @@ static void draw_screen(const monitor *m)
            yes_no(t->pod_status & XF_POD_NIGHT_VISION_ON, "on", "off"),
            yes_no(t->pod_status & XF_POD_LIGHTING_ON, "on", "off"), t->error_code);
     draw_v2(t);
-    printf("link        %s\n", link);
+    printf("link        %s, %s, %u sent, %u received\n", xf_link_state_name((xf_link_state)h->link), rate,
+           (unsigned)h->packets_sent, (unsigned)h->replies);
     printf("parser      %u CRC errors, %u length errors, %u bytes skipped\n", (unsigned)h->parser.crc_errors,
            (unsigned)h->parser.length_errors, (unsigned)h->parser.bytes_skipped);
     fflush(stdout);
@@ -169,11 +174,11 @@ static void print_line(const monitor *m, uint32_t elapsed)
     const xf_telemetry *t = xf_client_telemetry(&m->o->client);
     const xf_health *h = xf_client_health(&m->o->client);
     const char *mode = xf_mode_name(t->gimbal_mode);
-    char dist[160];
+    char dist[160], rate[64];
     distance_text(t, dist, sizeof(dist));
-    printf("%7.1f s  link %s %u/s missing %u  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
-           cli_seconds(elapsed), xf_link_state_name((xf_link_state)h->link), (unsigned)h->reply_rate_hz,
-           (unsigned)h->replies_missing, mode ? mode : "unknown", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
+    rate_text(m, rate, sizeof(rate));
+    printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
+           cli_seconds(elapsed), xf_link_state_name((xf_link_state)h->link), rate, mode ? mode : "unknown", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
            (double)t->cam_yaw_deg, (double)t->zoom_cam1, (double)t->zoom_cam2, dist,
            yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
     fflush(stdout);
@@ -231,6 +236,7 @@ int cmd_monitor(const cli_link *link, int argc, char **argv)
     hooks.on_link = on_link;
     hooks.user = &m;
     cli_signals_init();
+    m.start_ms = xf_posix_now_ms();
     m.o = online_new();
     rc = (m.o != NULL) ? online_open(m.o, link, "monitor", &hooks) : XFGCU_EXIT_USAGE;
     if (rc == XFGCU_EXIT_OK) {

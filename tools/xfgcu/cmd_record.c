@@ -17,7 +17,7 @@
 #include "xfgcu/xf_capture.h"
 
 #define NULLS_AFTER 3u
-#define DRAIN_MS 100u
+#define DRAIN_MS 250u
 
 void help_record(FILE *out)
 {

@@ -202,6 +202,8 @@ void demo_mark(demo *d) { d->mark = xf_posix_now_ms(); }
 
 /* ---- printing --------------------------------------------------------------------------- */
 
+static void line(const char *prefix, const char *fmt, va_list ap) CLI_PRINTF(2, 0);
+
 static void line(const char *prefix, const char *fmt, va_list ap)
 {
     fputs(prefix, stdout);

@@ -16,6 +16,8 @@
 #include "cli.h"
 #include "cmdargs.h"
 
+static void vfail(const char *fmt, va_list ap) CLI_PRINTF(1, 0);
+
 static void vfail(const char *fmt, va_list ap)
 {
     fflush(stdout); /* what was printed before the failure comes first */
