@@ -331,9 +331,9 @@ static void xf__put_control(xf_client *c, xf_host_packet *pkt)
     m->status |= XF_STATUS_CTRL_VALID;
     if (c->ctrl_kind == XF_CTRL_ANGLES) {
         /* Roll and yaw go round: 240 deg is -120 deg, not a clamped 180. */
-        m->roll_ctrl = xf_ctrl_angle_raw((float)xf_units_wrap360((double)c->ctrl[0], -180.0));
+        m->roll_ctrl = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[0], -180.0f));
         m->pitch_ctrl = xf_ctrl_angle_raw(c->ctrl[1]);
-        m->yaw_ctrl = xf_ctrl_angle_raw((float)xf_units_wrap360((double)c->ctrl[2], -180.0));
+        m->yaw_ctrl = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[2], -180.0f));
         return;
     }
     if (c->cfg.rate_watchdog_ms != 0u && xf_ms_since(c->now_ms, c->ctrl_ms) > c->cfg.rate_watchdog_ms) {

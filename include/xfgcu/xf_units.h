@@ -25,6 +25,10 @@ XF_BEGIN_DECLS
 XF_API int32_t xf_units_round(double v, int32_t lo, int32_t hi);
 /** @p deg wrapped into [lo, lo + 360). */
 XF_API double xf_units_wrap360(double deg, double lo);
+/** Single-precision versions (for int16-range fields): an MCU's FPU does these in hardware,
+ *  and the conversions of attitude, accelerations and velocities use only these. */
+XF_API int32_t xf_units_roundf(float v, int32_t lo, int32_t hi);
+XF_API float xf_units_wrap360f(float deg, float lo);
 
 /* host main frame */
 XF_API int16_t xf_carrier_roll_raw(float deg);   /**< wrapped into [-180, 180), 0.01 deg */
@@ -105,28 +109,61 @@ XF_API double xf_units_wrap360(double deg, double lo)
     return r + lo;
 }
 
+XF_API int32_t xf_units_roundf(float v, int32_t lo, int32_t hi)
+{
+    if (v != v) { /* NaN */
+        v = 0.0f;
+    }
+    if (v <= (float)lo) {
+        return lo;
+    }
+    if (v >= (float)hi) {
+        return hi;
+    }
+    return (int32_t)((v >= 0.0f) ? (v + 0.5f) : (v - 0.5f));
+}
+
+XF_API float xf_units_wrap360f(float deg, float lo)
+{
+    float r;
+    int32_t turns;
+    if (deg != deg || deg > 1e7f || deg < -1e7f) {
+        return lo < 0.0f ? 0.0f : lo; /* NaN or absurd: 0 if it is in range */
+    }
+    r = deg - lo;
+    turns = (int32_t)(r / 360.0f);
+    r -= (float)turns * 360.0f;
+    if (r < 0.0f) {
+        r += 360.0f;
+    }
+    if (r >= 360.0f) {
+        r -= 360.0f;
+    }
+    return r + lo;
+}
+
 XF_API int16_t xf_carrier_roll_raw(float deg)
 {
-    int32_t v = xf_units_round(xf_units_wrap360((double)deg, -180.0) * 100.0, -18000, 18000);
+    int32_t v = xf_units_roundf(xf_units_wrap360f(deg, -180.0f) * 100.0f, -18000, 18000);
     return (int16_t)((v == 18000) ? -18000 : v); /* 179.999 rounds up to 180.00 = -180.00 */
 }
 
-XF_API int16_t xf_carrier_pitch_raw(float deg) { return (int16_t)xf_units_round((double)deg * 100.0, -9000, 9000); }
+XF_API int16_t xf_carrier_pitch_raw(float deg) { return (int16_t)xf_units_roundf(deg * 100.0f, -9000, 9000); }
 
 XF_API uint16_t xf_carrier_yaw_raw(float deg)
 {
-    int32_t v = xf_units_round(xf_units_wrap360((double)deg, 0.0) * 100.0, 0, 36000);
+    int32_t v = xf_units_roundf(xf_units_wrap360f(deg, 0.0f) * 100.0f, 0, 36000);
     return (uint16_t)((v == 36000) ? 0 : v);
 }
 
-XF_API int16_t xf_accel_raw(float mps2) { return (int16_t)xf_units_round((double)mps2 * 100.0, -32768, 32767); }
-XF_API int16_t xf_velocity_raw(float mps) { return (int16_t)xf_units_round((double)mps * 100.0, -32768, 32767); }
-XF_API int16_t xf_ctrl_angle_raw(float deg) { return (int16_t)xf_units_round((double)deg * 100.0, -18000, 18000); }
+XF_API int16_t xf_accel_raw(float mps2) { return (int16_t)xf_units_roundf(mps2 * 100.0f, -32768, 32767); }
+XF_API int16_t xf_velocity_raw(float mps) { return (int16_t)xf_units_roundf(mps * 100.0f, -32768, 32767); }
+XF_API int16_t xf_ctrl_angle_raw(float deg) { return (int16_t)xf_units_roundf(deg * 100.0f, -18000, 18000); }
 
 XF_API int16_t xf_ctrl_rate_raw(float dps, float zoom)
 {
-    double z = (zoom >= 1.0f) ? (double)zoom : 1.0;
-    return (int16_t)xf_units_round((double)dps * 10.0 * z, -1500, 1500);
+    float z = (zoom >= 1.0f) ? zoom : 1.0f;
+    return (int16_t)xf_units_roundf(dps * 10.0f * z, -1500, 1500);
 }
 
 XF_API int32_t xf_deg7_raw(double deg) { return xf_units_round(deg * 1e7, -1800000000, 1800000000); }
@@ -140,12 +177,12 @@ XF_API float xf_gcu_rate_dps(int16_t raw, uint8_t version)
 
 XF_API int16_t xf_gcu_rate_raw(float dps, uint8_t version)
 {
-    double scale = (version >= XF_PROTOCOL_V2) ? 10.0 : 100.0;
-    return (int16_t)xf_units_round((double)dps * scale, -32768, 32767);
+    float scale = (version >= XF_PROTOCOL_V2) ? 10.0f : 100.0f;
+    return (int16_t)xf_units_roundf(dps * scale, -32768, 32767);
 }
 
 XF_API float xf_zoom_x(uint16_t raw) { return (float)raw / 10.0f; }
-XF_API uint16_t xf_zoom_raw(float x) { return (uint16_t)xf_units_round((double)x * 10.0, 0, 65535); }
+XF_API uint16_t xf_zoom_raw(float x) { return (uint16_t)xf_units_roundf(x * 10.0f, 0, 65535); }
 XF_API double xf_deg7(int32_t raw) { return (double)raw / 1e7; }
 
 XF_API int xf_distance_m(int32_t raw, float *m)
@@ -159,7 +196,7 @@ XF_API int xf_distance_m(int32_t raw, float *m)
     return 1;
 }
 
-XF_API int16_t xf_zoom_to_rate_raw(float rate) { return (int16_t)xf_units_round(-(double)rate * 10.0, -32768, -10); }
+XF_API int16_t xf_zoom_to_rate_raw(float rate) { return (int16_t)xf_units_roundf(-rate * 10.0f, -32768, -10); }
 
 XF_API xf_err xf_gnss_to_unix_ms(int16_t week, uint32_t ms, int leap_seconds, int64_t *unix_ms)
 {
@@ -196,14 +233,14 @@ XF_API void xf_axes_to_euler(float ax, float ay, float az, float *roll, float *p
 {
     if (roll != NULL) *roll = ay;
     if (pitch != NULL) *pitch = -ax;
-    if (yaw != NULL) *yaw = (float)xf_units_wrap360((double)az + 90.0, 0.0);
+    if (yaw != NULL) *yaw = xf_units_wrap360f(az + 90.0f, 0.0f);
 }
 
 XF_API void xf_euler_to_axes(float roll, float pitch, float yaw, float *ax, float *ay, float *az)
 {
     if (ax != NULL) *ax = -pitch;
     if (ay != NULL) *ay = roll;
-    if (az != NULL) *az = (float)xf_units_wrap360((double)yaw - 90.0, -180.0);
+    if (az != NULL) *az = xf_units_wrap360f(yaw - 90.0f, -180.0f);
 }
 
 #endif /* XF_EMIT_DEFINITIONS */
