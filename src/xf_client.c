@@ -2,9 +2,8 @@
  * xf_client.c - the host side of the GCU protocol over xf_hal.
  * Portable: no OS, no heap, no globals. See xf_client.h for the contract.
  */
-#include <string.h>
-
 #include "xfgcu/xf_client.h"
+#include "xfgcu/xf_mem.h"
 #include "xfgcu/xf_units.h"
 
 #define XF_CTRL_NONE 0u
@@ -17,7 +16,7 @@ void xf_client_config_init(xf_client_config *cfg)
     if (cfg == NULL) {
         return;
     }
-    memset(cfg, 0, sizeof(*cfg));
+    XF_MEMSET(cfg, 0, sizeof(*cfg));
     cfg->protocol_version = XF_PROTOCOL_V1;
     cfg->rate_hz = 50;
     cfg->carrier_max_age_ms = 200;
@@ -42,7 +41,7 @@ xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *c
     if (cfg->rate_hz == 0u || cfg->rate_hz > 200u || cfg->protocol_version == 0u) {
         return XF_ERR_RANGE;
     }
-    memset(c, 0, sizeof(*c));
+    XF_MEMSET(c, 0, sizeof(*c));
     c->cfg = *cfg;
     c->hal = *hal;
     xf_parser_init(&c->parser, XF_DIR_GCU);
@@ -66,7 +65,7 @@ static void xf__publish(xf_client *c, const xf_cmd_result *r)
 
 static void xf__result_of(const xf_client *c, const xf_cmd_slot *slot, xf_cmd_status st, xf_cmd_result *r)
 {
-    memset(r, 0, sizeof(*r));
+    XF_MEMSET(r, 0, sizeof(*r));
     r->id = slot->id;
     r->order = slot->cmd.order;
     r->status = (uint8_t)st;

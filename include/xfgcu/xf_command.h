@@ -31,9 +31,9 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include <string.h>
 #include "xf_bytes.h"
 #include "xf_config.h"
+#include "xf_mem.h"
 #include "xf_error.h"
 #include "xf_packet.h"
 #include "xf_protocol.h"
@@ -327,7 +327,7 @@ XF_API void xf_command_init(xf_command *cmd, uint8_t order)
 {
     const xf_order_info *info = xf_order_lookup(order);
     if (cmd != NULL) {
-        memset(cmd, 0, sizeof(*cmd));
+        XF_MEMSET(cmd, 0, sizeof(*cmd));
         cmd->order = order;
         cmd->cameras = (info != NULL) ? info->default_cameras : 0u;
     }
@@ -526,7 +526,7 @@ XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len
     if (len != xf_order_params_len(order)) {
         return XF_ERR_PARAMS;
     }
-    memset(&tmp, 0, sizeof(tmp));
+    XF_MEMSET(&tmp, 0, sizeof(tmp));
     tmp.order = order;
     for (i = 0; i < info->nfields; i++) {
         xf_field f = (xf_field)info->fields[i];
@@ -574,7 +574,7 @@ XF_API xf_err xf_feedback_decode(uint8_t order, const uint8_t *fb, size_t len, x
     if (out == NULL || (fb == NULL && len > 0u)) {
         return XF_ERR_ARG;
     }
-    memset(out, 0, sizeof(*out));
+    XF_MEMSET(out, 0, sizeof(*out));
     out->order = order;
     if (len == 0u) {
         return XF_OK; /* no execution state in this reply */

@@ -23,6 +23,12 @@
  *                         so the code exists once in flash.
  *   XF_API                storage class of every function; derived from the
  *                         option above unless you define it yourself.
+ *   XF_NO_LIBC            0 (default): memcpy, memset and memchr from <string.h>.
+ *                         1: freestanding targets without a C library (e.g.
+ *                         riscv64-unknown-elf -nostdlib): small loops of our
+ *                         own, and <string.h> is never included.
+ *   XF_MEMCPY, XF_MEMSET, XF_MEMCHR
+ *                         define to use your own (an optimised or DMA copy).
  */
 #ifndef XF_CONFIG_H
 #define XF_CONFIG_H
@@ -47,6 +53,13 @@
 #endif
 #if (XF_PACKET_MAX_LEN < 84) || (XF_PACKET_MAX_LEN > 255)
 #error "XF_PACKET_MAX_LEN must be in [84, 255]: 84 is the longest packet of the protocol, 255 its limit"
+#endif
+
+#ifndef XF_NO_LIBC
+#define XF_NO_LIBC 0
+#endif
+#if (XF_NO_LIBC != 0) && (XF_NO_LIBC != 1)
+#error "XF_NO_LIBC must be 0 or 1"
 #endif
 
 #ifndef XF_API

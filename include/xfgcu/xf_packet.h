@@ -12,9 +12,9 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include <string.h>
 #include "xf_bytes.h"
 #include "xf_config.h"
+#include "xf_mem.h"
 #include "xf_crc.h"
 #include "xf_error.h"
 #include "xf_protocol.h"
@@ -161,7 +161,7 @@ static inline void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const u
     uint16_t crc;
     buf[XF_OFF_ORDER] = order;
     if (params_len > 0u) {
-        memcpy(buf + XF_OFF_PARAMS, params, params_len);
+        XF_MEMCPY(buf + XF_OFF_PARAMS, params, params_len);
     }
     crc = xf_crc16(buf, len - 2u);
     buf[len - 2u] = (uint8_t)(crc >> 8); /* the CRC is big-endian */
@@ -232,7 +232,7 @@ XF_API size_t xf_gcu_packet_size(const xf_gcu_packet *pkt)
 XF_API void xf_host_packet_init(xf_host_packet *pkt, uint8_t version)
 {
     if (pkt != NULL) {
-        memset(pkt, 0, sizeof(*pkt));
+        XF_MEMSET(pkt, 0, sizeof(*pkt));
         pkt->version = version;
         pkt->main.sub_request = XF_SUB_HEADER;
     }
@@ -270,7 +270,7 @@ XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, 
     xf_put_s16le(buf + 26, m->vel_east);
     xf_put_s16le(buf + 28, m->vel_up);
     buf[30] = m->sub_request;
-    memcpy(buf + 31, m->reserved_main, sizeof(m->reserved_main));
+    XF_MEMCPY(buf + 31, m->reserved_main, sizeof(m->reserved_main));
     buf[37] = s->sub_header;
     xf_put_s32le(buf + 38, s->longitude);
     xf_put_s32le(buf + 42, s->latitude);
@@ -279,7 +279,7 @@ XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, 
     xf_put_u32le(buf + 51, s->gnss_ms);
     xf_put_s16le(buf + 55, s->gnss_week);
     xf_put_s32le(buf + 57, s->relative_height);
-    memcpy(buf + 61, s->reserved_sub, sizeof(s->reserved_sub));
+    XF_MEMCPY(buf + 61, s->reserved_sub, sizeof(s->reserved_sub));
     xf__put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
     if (out_len != NULL) {
         *out_len = len;
@@ -318,7 +318,7 @@ XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, si
     xf_put_s16le(buf + 24, m->rate_x);
     xf_put_s16le(buf + 26, m->rate_y);
     xf_put_s16le(buf + 28, m->rate_z);
-    memcpy(buf + 30, m->reserved_main, sizeof(m->reserved_main));
+    XF_MEMCPY(buf + 30, m->reserved_main, sizeof(m->reserved_main));
     buf[37] = s->sub_header;
     buf[38] = s->hw_version;
     buf[39] = s->fw_version;
@@ -333,7 +333,7 @@ XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, si
     buf[63] = s->thermal_status;
     xf_put_u16le(buf + 64, s->camera_status);
     buf[66] = (uint8_t)s->time_zone;
-    memcpy(buf + 67, s->reserved_sub, sizeof(s->reserved_sub));
+    XF_MEMCPY(buf + 67, s->reserved_sub, sizeof(s->reserved_sub));
     xf__put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
     if (out_len != NULL) {
         *out_len = len;
@@ -370,7 +370,7 @@ XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt
     m->vel_east = xf_get_s16le(buf + 26);
     m->vel_up = xf_get_s16le(buf + 28);
     m->sub_request = buf[30];
-    memcpy(m->reserved_main, buf + 31, sizeof(m->reserved_main));
+    XF_MEMCPY(m->reserved_main, buf + 31, sizeof(m->reserved_main));
     s->sub_header = buf[37];
     s->longitude = xf_get_s32le(buf + 38);
     s->latitude = xf_get_s32le(buf + 42);
@@ -379,10 +379,10 @@ XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt
     s->gnss_ms = xf_get_u32le(buf + 51);
     s->gnss_week = xf_get_s16le(buf + 55);
     s->relative_height = xf_get_s32le(buf + 57);
-    memcpy(s->reserved_sub, buf + 61, sizeof(s->reserved_sub));
+    XF_MEMCPY(s->reserved_sub, buf + 61, sizeof(s->reserved_sub));
     pkt->order = buf[XF_OFF_ORDER];
     pkt->params_len = (uint8_t)(len - XF_PACKET_MIN_LEN);
-    memcpy(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
+    XF_MEMCPY(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
     return XF_OK;
 }
 
@@ -414,7 +414,7 @@ XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
     m->rate_x = xf_get_s16le(buf + 24);
     m->rate_y = xf_get_s16le(buf + 26);
     m->rate_z = xf_get_s16le(buf + 28);
-    memcpy(m->reserved_main, buf + 30, sizeof(m->reserved_main));
+    XF_MEMCPY(m->reserved_main, buf + 30, sizeof(m->reserved_main));
     s->sub_header = buf[37];
     s->hw_version = buf[38];
     s->fw_version = buf[39];
@@ -429,10 +429,10 @@ XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
     s->thermal_status = buf[63];
     s->camera_status = xf_get_u16le(buf + 64);
     s->time_zone = xf_u8_to_s8(buf[66]);
-    memcpy(s->reserved_sub, buf + 67, sizeof(s->reserved_sub));
+    XF_MEMCPY(s->reserved_sub, buf + 67, sizeof(s->reserved_sub));
     pkt->order = buf[XF_OFF_ORDER];
     pkt->params_len = (uint8_t)(len - XF_PACKET_MIN_LEN);
-    memcpy(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
+    XF_MEMCPY(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
     return XF_OK;
 }
 

@@ -31,8 +31,8 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include <string.h>
 #include "xf_config.h"
+#include "xf_mem.h"
 #include "xf_crc.h"
 #include "xf_error.h"
 #include "xf_protocol.h"
@@ -124,7 +124,7 @@ XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir)
     if (p == NULL || (dir != XF_DIR_HOST && dir != XF_DIR_GCU)) {
         return XF_ERR_ARG;
     }
-    memset(p, 0, sizeof(*p));
+    XF_MEMSET(p, 0, sizeof(*p));
     p->look = 1;
     p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
     p->h1 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
@@ -189,8 +189,8 @@ static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
     } else {
         size_t i0 = p->end & XF__RMASK;
         size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
-        memcpy(p->ring + i0, data, first);
-        memcpy(p->ring, data + first, n - first);
+        XF_MEMCPY(p->ring + i0, data, first);
+        XF_MEMCPY(p->ring, data + first, n - first);
     }
     p->end += (uint32_t)n;
 }
@@ -227,8 +227,8 @@ static inline void xf__emit(xf_parser *p, uint32_t pos, size_t len, xf_frame *fr
         frame->data = p->ring + i0;
     } else {
         size_t first = XF_PARSER_RING - i0;
-        memcpy(p->scratch, p->ring + i0, first);
-        memcpy(p->scratch + first, p->ring, len - first);
+        XF_MEMCPY(p->scratch, p->ring + i0, first);
+        XF_MEMCPY(p->scratch + first, p->ring, len - first);
         frame->data = p->scratch;
     }
     frame->len = len;
@@ -397,7 +397,7 @@ XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t 
         }
         if (need == 0u) {
             /* Nothing held: jump over noise to the next possible header. */
-            const uint8_t *hit = (const uint8_t *)memchr(data + used, p->h0, len - used);
+            const uint8_t *hit = (const uint8_t *)XF_MEMCHR(data + used, p->h0, len - used);
             size_t skip = (hit != NULL) ? (size_t)(hit - (data + used)) : (len - used);
             p->stats.bytes_skipped += (uint32_t)skip;
             p->stats.bytes_in += (uint32_t)skip;

@@ -1,0 +1,64 @@
+/*
+ * xf_mem.h - the three byte-block functions the codec and client use,
+ * from <string.h> or, with XF_NO_LIBC, from small loops of our own.
+ */
+#ifndef XF_MEM_H
+#define XF_MEM_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "xf_config.h"
+
+#if XF_NO_LIBC
+static inline void *xf__memcpy(void *dst, const void *src, size_t n)
+{
+    uint8_t *d = (uint8_t *)dst;
+    const uint8_t *s = (const uint8_t *)src;
+    while (n-- > 0u) {
+        *d++ = *s++;
+    }
+    return dst;
+}
+
+static inline void *xf__memset(void *dst, int v, size_t n)
+{
+    uint8_t *d = (uint8_t *)dst;
+    while (n-- > 0u) {
+        *d++ = (uint8_t)v;
+    }
+    return dst;
+}
+
+static inline void *xf__memchr(const void *src, int v, size_t n)
+{
+    const uint8_t *s = (const uint8_t *)src;
+    for (; n > 0u; n--, s++) {
+        if (*s == (uint8_t)v) {
+            return (void *)(uintptr_t)s;
+        }
+    }
+    return NULL;
+}
+#ifndef XF_MEMCPY
+#define XF_MEMCPY xf__memcpy
+#endif
+#ifndef XF_MEMSET
+#define XF_MEMSET xf__memset
+#endif
+#ifndef XF_MEMCHR
+#define XF_MEMCHR xf__memchr
+#endif
+#else
+#include <string.h>
+#ifndef XF_MEMCPY
+#define XF_MEMCPY memcpy
+#endif
+#ifndef XF_MEMSET
+#define XF_MEMSET memset
+#endif
+#ifndef XF_MEMCHR
+#define XF_MEMCHR memchr
+#endif
+#endif
+
+#endif /* XF_MEM_H */
