@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # Install the Debian packages xfgcu needs, if any is missing.
 #   scripts/setup.sh            what building, the demo and the tests need
-#   scripts/setup.sh --dev      + the test suite's extras (clang, valgrind, cross compilers)
+#   scripts/setup.sh --dev      + the test suite's extras (clang, valgrind, cross compilers, and a
+#                               big-endian s390x toolchain with its libraries for qemu-user)
 set -euo pipefail
 
 pkgs=(build-essential cmake pkg-config libjansson-dev libserialport-dev)
+dev=0
 if [ "${1:-}" = "--dev" ]; then
-  pkgs+=(libcmocka-dev clang libclang-rt-14-dev valgrind gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf socat)
+  dev=1
+  pkgs+=(libcmocka-dev clang clang-tidy clang-format cppcheck libclang-rt-14-dev valgrind g++
+         gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf socat
+         gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user libcmocka-dev:s390x libserialport-dev:s390x)
 fi
 
 missing=()
@@ -23,5 +28,9 @@ if [ "$(id -u)" -ne 0 ]; then
   fi
 fi
 export DEBIAN_FRONTEND=noninteractive
+# The big-endian test libraries are Debian's s390x packages, installed side by side (multiarch).
+if [ "$dev" = 1 ] && ! dpkg --print-foreign-architectures | grep -qx s390x; then
+  "${sudo_cmd[@]}" dpkg --add-architecture s390x
+fi
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
