@@ -179,6 +179,19 @@ static void xf__tcp_accept(xf_simlink *l)
     }
 }
 
+/* UDP while disconnected: what the host sends now is lost, as with a GCU
+ * that is gone (not kept in the socket to be answered when it is back). */
+static void xf__udp_discard(xf_simlink *l)
+{
+    uint8_t buf[512];
+    int i;
+    for (i = 0; i < 256; i++) {
+        if (recv(l->fd, buf, sizeof(buf), 0) < 0 && errno != EINTR) {
+            return; /* EAGAIN: nothing more */
+        }
+    }
+}
+
 /* ---- disconnect fault ------------------------------------------------------------------ */
 
 void xf_simlink_disconnect(xf_simlink *l, uint32_t ms)
@@ -192,6 +205,12 @@ void xf_simlink_disconnect(xf_simlink *l, uint32_t ms)
     if (l->kind == XF_SIMLINK_PTY) {
         xf__close_fd(&l->slave_fd);
         xf__close_fd(&l->fd); /* the host's side hangs up */
+        if (l->link_path[0] != '\0') {
+            /* Nothing behind the path while down, like an unplugged adapter:
+             * the freed /dev/pts number may be reused by another program's
+             * pty, and a host reopening the path must not end up on it. */
+            unlink(l->link_path);
+        }
     } else if (l->kind == XF_SIMLINK_TCP) {
         xf__close_fd(&l->client_fd);
     }
@@ -207,6 +226,9 @@ static int xf__simlink_up(xf_simlink *l)
         return 0;
     }
     l->down = 0;
+    if (l->kind == XF_SIMLINK_UDP && l->fd >= 0) {
+        xf__udp_discard(l); /* sent while down, unread: lost too */
+    }
     if (l->kind == XF_SIMLINK_PTY && xf__pty_create(l) != XF_OK) {
         l->down = 1;
         l->up_at = xf_posix_now_ms() + 100u;
@@ -225,6 +247,8 @@ static xf_err xf__simlink_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_
     if (!xf__simlink_up(l)) {
         if (l->kind == XF_SIMLINK_TCP) {
             xf__tcp_accept(l); /* refuse while down */
+        } else if (l->kind == XF_SIMLINK_UDP && l->fd >= 0) {
+            xf__udp_discard(l);
         }
         return XF_ERR_CLOSED;
     }

@@ -203,8 +203,10 @@ xf_err xf_simlink_open_tcp(xf_simlink *l, const char *host, uint16_t port);
 void xf_simlink_hal(xf_simlink *l, xf_hal *hal);
 /**
  * Fault injection: drop the host now and come back after @p ms: the pty
- * hangs up (a new pty, the symlink repointed), the TCP connection is
- * closed and new ones refused meanwhile, UDP goes silent.
+ * hangs up (its symlink removed meanwhile, then a new pty behind it), the
+ * TCP connection is closed and new ones refused meanwhile, UDP goes silent.
+ * What the host sends meanwhile is lost, as with a GCU that is gone: it is
+ * never answered (or executed) when the link comes back.
  */
 void xf_simlink_disconnect(xf_simlink *l, uint32_t ms);
 void xf_simlink_close(xf_simlink *l);
