@@ -16,12 +16,12 @@ xf_err xf_posix_poll(struct xf_client *const *clients, size_t n_clients, struct 
     nfds_t n = 0;
     size_t i;
     uint32_t now = xf_posix_now_ms();
-    int wait = max_wait_ms;
+    int wait = max_wait_ms; /* < 0: no limit of the caller's; deadlines still bound it */
     for (i = 0; i < n_clients; i++) {
         /* Wake for the earliest packet due. */
         int32_t due = (int32_t)(xf_client_next_deadline(clients[i]) - now);
         int fd = xf_hal_fd(&clients[i]->hal);
-        if (due < wait) {
+        if (wait < 0 || due < wait) {
             wait = (due < 0) ? 0 : (int)due;
         }
         if (fd >= 0 && n < XF_POLL_MAX) {
@@ -40,7 +40,7 @@ xf_err xf_posix_poll(struct xf_client *const *clients, size_t n_clients, struct 
             n++;
         }
     }
-    if (n_sims > 0u && wait > 5) {
+    if (n_sims > 0u && (wait < 0 || wait > 5)) {
         wait = 5; /* simulators move their gimbal between packets, and TCP servers accept */
     }
     if (poll(pfd, n, wait) < 0 && errno != EINTR) {

@@ -217,9 +217,10 @@ struct xf_client;
 struct xf_sim;
 
 /**
- * One round of a poll loop: wait (at most @p max_wait_ms) until a link of
- * any client or simulator is readable or a client's next packet is due,
- * then step every client and simulator. Call it in a loop; the clients
+ * One round of a poll loop: wait (at most @p max_wait_ms; negative: no
+ * limit of the caller's) until a link of any client or simulator is
+ * readable or a client's next packet is due (with simulators, at most
+ * 5 ms), then step every client and simulator. Call it in a loop; the clients
  * stay independent (no shared state). Returns XF_OK or XF_ERR_IO (poll).
  */
 xf_err xf_posix_poll(struct xf_client *const *clients, size_t n_clients, struct xf_sim *const *sims, size_t n_sims,
