@@ -22,7 +22,7 @@ int main(int argc, char **argv)
     static xf_client clients[MAX_GIMBALS];
     xf_client *cp[MAX_GIMBALS];
     xf_sim *sp[MAX_GIMBALS];
-    int n = (argc > 1) ? atoi(argv[1]) : 4;
+    long n = (argc > 1) ? strtol(argv[1], NULL, 10) : 4;
     int i, up = 0;
     uint32_t start;
 
@@ -67,6 +67,6 @@ int main(int argc, char **argv)
         printf("gimbal %2d: link %-5s pitch %7.2f yaw %7.2f, %u Hz\n", i, xf_link_state_name(xf_client_link(&clients[i])),
                (double)t->cam_pitch_deg, (double)t->cam_yaw_deg, xf_client_health(&clients[i])->reply_rate_hz);
     }
-    printf("%d of %d gimbals up\n", up, n);
+    printf("%d of %ld gimbals up\n", up, n);
     return up == n ? 0 : 3;
 }

@@ -39,9 +39,13 @@ void xf_capture_chunk(void *writer, xf_direction dir, const uint8_t *data, size_
     }
     t = xf_ms_since(now_ms, w->start_ms);
     while (off < len) {
-        size_t n = (len - off > XF_CAPTURE_MAX_CHUNK) ? XF_CAPTURE_MAX_CHUNK : len - off;
+        size_t n = len - off; /* at least 1: off < len */
         size_t i;
-        int bad = fprintf(w->f, "%u.%03u %c", (unsigned)(t / 1000u), (unsigned)(t % 1000u),
+        int bad;
+        if (n > XF_CAPTURE_MAX_CHUNK) {
+            n = XF_CAPTURE_MAX_CHUNK;
+        }
+        bad = fprintf(w->f, "%u.%03u %c", (unsigned)(t / 1000u), (unsigned)(t % 1000u),
                           dir == XF_DIR_HOST ? '>' : '<') < 0;
         for (i = 0; i < n && !bad; i++) {
             bad = fprintf(w->f, " %02X", data[off + i]) < 0;

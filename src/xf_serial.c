@@ -36,17 +36,17 @@ int xf_serial_baud_ok(uint32_t baud)
 static int xf__is_pty(const char *path)
 {
     char real[PATH_MAX];
-    struct stat st;
     if (realpath(path, real) != NULL && strncmp(real, "/dev/pts/", 9) == 0) {
         return 1;
     }
 #if defined(__linux__)
-    /* Pty slaves have majors 136..143 on Linux, wherever their node lives. */
-    if (stat(path, &st) == 0 && S_ISCHR(st.st_mode) && major(st.st_rdev) >= 136u && major(st.st_rdev) <= 143u) {
-        return 1;
+    {
+        /* Pty slaves have majors 136..143 on Linux, wherever their node lives. */
+        struct stat st;
+        if (stat(path, &st) == 0 && S_ISCHR(st.st_mode) && major(st.st_rdev) >= 136u && major(st.st_rdev) <= 143u) {
+            return 1;
+        }
     }
-#else
-    (void)st;
 #endif
     return 0;
 }

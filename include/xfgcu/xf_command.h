@@ -483,7 +483,11 @@ XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t 
 {
     const xf_order_info *info;
     size_t i, n, off = 0;
-    xf_err err = xf_command_check(cmd, version, bad_field);
+    xf_err err;
+    if (cmd == NULL) {
+        return XF_ERR_ARG;
+    }
+    err = xf_command_check(cmd, version, bad_field);
     if (err != XF_OK) {
         return err;
     }

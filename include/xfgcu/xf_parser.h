@@ -292,8 +292,7 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
             continue;
         }
         if ((uint32_t)(pend - p->look) <= len) {
-            p->look_done = 1; /* the first candidate ends no sooner: leave it to the rescan */
-            break;
+            break; /* the first candidate ends no sooner: leave it to the rescan */
         }
         if ((size_t)(p->end - p->look) < len) {
             *need = len - (size_t)(p->end - p->look);

@@ -206,8 +206,11 @@ int cmd_replay(const cli_link *link, int argc, char **argv)
 {
     replay *r = calloc(1, sizeof(*r));
     FILE *in;
-    int i, rc = (r != NULL) ? XFGCU_EXIT_OK : cli_fail("replay: out of memory");
+    int i, rc = XFGCU_EXIT_OK;
     (void)link; /* offline */
+    if (r == NULL) {
+        return cli_fail("replay: out of memory");
+    }
     for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
         rc = take_arg(r, argv[i]);
     }

@@ -55,16 +55,16 @@ static void append(char *buf, size_t cap, const char *s)
 /* Names of the set bits; bits without a name are shown as a mask. */
 static void bits_text(unsigned v, unsigned ignore, const bit_name *names, char *buf, size_t cap)
 {
-    unsigned named = ignore;
+    unsigned known = ignore;
     char rest[32];
     for (; names->name != NULL; names++) {
-        named |= names->mask;
+        known |= names->mask;
         if ((v & names->mask) != 0u) {
             append(buf, cap, names->name);
         }
     }
-    if ((v & ~named) != 0u) {
-        snprintf(rest, sizeof(rest), "reserved bits 0x%X", v & ~named);
+    if ((v & ~known) != 0u) {
+        snprintf(rest, sizeof(rest), "reserved bits 0x%X", v & ~known);
         append(buf, cap, rest);
     }
 }
