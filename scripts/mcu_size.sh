@@ -1,25 +1,58 @@
 #!/usr/bin/env bash
-# Compile the codec for a Cortex-M4 (as one TU, XF_SEPARATE_IMPLEMENTATION, and header-only)
-# with the strict flags, and print its size. Fails on any warning.
+# Cross builds and their sizes: the Cortex-M4 firmware example (cortex-m4 preset), the codec
+# compiled alone with the strict flags of the codec issue, and the RISC-V preset (no C library).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=build/mcu
 mkdir -p "$out"
-flags=(-mcpu=cortex-m4 -mthumb -Os -std=c99 -pedantic-errors -Wall -Wextra -Wconversion -Wshadow -Wundef -Werror
-       -ffunction-sections -fdata-sections -Iinclude)
-arm-none-eabi-gcc "${flags[@]}" -c src/xf_codec.c -o "$out/xf_codec.o"
-arm-none-eabi-gcc "${flags[@]}" -mfloat-abi=hard -mfpu=fpv4-sp-d16 -c src/xf_codec.c -o "$out/xf_codec_hf.o"
-arm-none-eabi-gcc "${flags[@]}" -DXF_CRC_TABLE_256=1 -c src/xf_codec.c -o "$out/xf_codec_crc256.o"
-arm-none-eabi-gcc "${flags[@]}" -DXF_PACKET_MAX_LEN=84 -c src/xf_codec.c -o "$out/xf_codec_max84.o"
-# header-only use from an ordinary TU
-printf '#include "xfgcu/xfgcu.h"\nint xf_mcu_probe(const uint8_t *b, size_t n);\nint xf_mcu_probe(const uint8_t *b, size_t n) { return (int)xf_packet_check(b, n, XF_DIR_GCU); }\n' > "$out/probe.c"
-arm-none-eabi-gcc "${flags[@]}" -c "$out/probe.c" -o "$out/probe.o"
-echo "codec for Cortex-M4 (-Os, whole codec incl. unit helpers; a firmware links only what it calls):"
-arm-none-eabi-size "$out/xf_codec.o" "$out/xf_codec_hf.o" "$out/xf_codec_crc256.o" "$out/xf_codec_max84.o"
-# sizeof(xf_parser) on the target: the size of a sized symbol, read from the object file
-printf '#include "xfgcu/xfgcu.h"\nchar xf_parser_size_probe[sizeof(xf_parser)];\n' > "$out/parser_size.c"
+
+flags=(-mcpu=cortex-m4 -mthumb -Os -std=c99 -pedantic-errors -Wall -Wextra -Wconversion -Werror -Iinclude)
+arm-none-eabi-gcc "${flags[@]}" -DXF_SEPARATE_IMPLEMENTATION -c src/xf_codec.c -o "$out/xf_codec.o"
+echo "the codec compiled once for a Cortex-M4 (-Os; every function, before --gc-sections):"
+arm-none-eabi-size "$out/xf_codec.o"
+
+# sizeof(xf_parser) and sizeof(xf_client) on the target, read from sized symbols
+printf '#include "xfgcu/xf_client.h"\nchar xf_parser_size[sizeof(xf_parser)];\nchar xf_client_size[sizeof(xf_client)];\n' > "$out/sizes.c"
 for max in 255 84; do
-  arm-none-eabi-gcc "${flags[@]}" -DXF_PACKET_MAX_LEN=$max -c "$out/parser_size.c" -o "$out/parser_size.o"
-  hex=$(arm-none-eabi-nm -S "$out/parser_size.o" | awk '/xf_parser_size_probe/ {print $2}')
-  echo "RAM of one xf_parser with XF_PACKET_MAX_LEN=$max: $((16#$hex)) bytes"
+  arm-none-eabi-gcc "${flags[@]}" -DXF_PACKET_MAX_LEN=$max -c "$out/sizes.c" -o "$out/sizes.o"
+  p=$(arm-none-eabi-nm -S "$out/sizes.o" | awk '/xf_parser_size/ {print $2}')
+  c=$(arm-none-eabi-nm -S "$out/sizes.o" | awk '/xf_client_size/ {print $2}')
+  echo "RAM with XF_PACKET_MAX_LEN=$max: xf_parser $((16#$p)) bytes, xf_client (parser included) $((16#$c)) bytes"
 done
+
+echo
+echo "cortex-m4 preset: firmware example (client at 50 Hz over a UART interrupt HAL, -Os, --gc-sections)"
+cmake --preset cortex-m4 >/dev/null
+cmake --build --preset cortex-m4 >/dev/null
+elf=build/cortex-m4/examples/mcu/xfgcu_mcu_demo.elf
+arm-none-eabi-size "$elf"
+echo "of which the codec and client (input sections kept from xf_codec.c and xf_client.c):"
+python3 - build/cortex-m4/examples/mcu/xfgcu_mcu_demo.map "$elf" <<'PY'
+import re, subprocess, sys
+flash = 0
+in_map = False
+pending = None
+for line in open(sys.argv[1]):
+    if line.startswith("Linker script and memory map"):
+        in_map = True  # before it: the sections --gc-sections discarded
+        continue
+    if not in_map:
+        continue
+    m = re.match(r"^ (\.(?:text|rodata|data)\S*)\s*$", line)
+    if m:
+        pending = m.group(1)
+        continue
+    m = re.match(r"^ (\.(?:text|rodata|data)\S*)?\s+0x[0-9a-f]+\s+0x([0-9a-f]+)\s+(\S+\.obj)", line)
+    if m and (m.group(1) or pending) and re.search(r"xf_(client|codec)\.c\.obj", m.group(3)):
+        flash += int(m.group(2), 16)
+    pending = None
+nm = subprocess.run(["arm-none-eabi-nm", "-S", sys.argv[2]], capture_output=True, text=True).stdout
+ram = sum(int(l.split()[1], 16) for l in nm.splitlines() if l.endswith(" g_gimbal"))
+print(f"  flash {flash} bytes; RAM {ram} bytes (the one xf_client, parser included)")
+PY
+
+echo
+echo "riscv preset: codec and client for rv32imac, freestanding, no C library"
+cmake --preset riscv >/dev/null
+cmake --build --preset riscv >/dev/null
+riscv64-unknown-elf-size -t build/riscv/src/libxfgcu_client.a | tail -1

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The whole test suite: what CI runs (.ci/run). Installs what it needs first.
-#   gcc -Werror build + ctest; clang ASan+UBSan build + ctest; MCU compile + size.
+# The whole test suite: what CI runs (.ci/run). Installs what it needs first (Debian packages).
+# Stages: gcc -Werror build + ctest; clang ASan+UBSan build + ctest; compiler matrix; static
+# analysis; MCU builds with sizes; big-endian tests under qemu; package consumers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh --dev
 jobs=$(nproc)
-stage() { printf '\n=== %s\n' "$*"; }
+t0=$(date +%s)
+stage() { printf '\n=== %s  (%ss)\n' "$*" "$(($(date +%s) - t0))"; }
 
 stage "gcc: build with -Werror, run the tests"
 cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc >/dev/null
@@ -13,12 +15,24 @@ cmake --build build/gcc --parallel "$jobs"
 ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"
 
 stage "clang: build with ASan+UBSan, run the tests"
-cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=clang -DXFGCU_SANITIZE=ON >/dev/null
-cmake --build build/asan --parallel "$jobs"
-ctest --test-dir build/asan --output-on-failure --parallel "$jobs"
+cmake --preset debug >/dev/null
+cmake --build --preset debug --parallel "$jobs"
+ctest --preset debug --parallel "$jobs"
 
-stage "MCU: Cortex-M4 compile with strict flags, size"
+stage "compiler matrix: gcc/clang x C99/C11, headers as C++"
+scripts/matrix.sh
+
+stage "static analysis: cppcheck, clang-tidy"
+scripts/lint.sh
+
+stage "MCU: Cortex-M4 firmware and RISC-V builds, sizes"
 scripts/mcu_size.sh
 
-echo
+stage "big-endian: codec and client tests on s390x under qemu-user"
+scripts/bigendian.sh
+
+stage "package: find_package, add_subdirectory, pkg-config consumers"
+scripts/check_package.sh
+
+stage "done"
 echo "all stages passed"
