@@ -1,0 +1,1358 @@
+/*
+ * test_client_logic.c - the client's contract against the simulator over an
+ * in-memory link on a fake clock: deterministic, no sleeping.
+ *
+ * Commands (sent until a reply carries their state, then a null; the
+ * once-rule; the stale-reply guard; feedback late, once, failing; timeouts;
+ * calibration's operating phase; the queue), carrier and GNSS freshness,
+ * control (rates, zoom scaling, watchdog, angles per mode), telemetry and
+ * its timestamps, link health and its callbacks, protocol V2, external
+ * track streaming, the 32-bit clock wrap.
+ */
+#include "client_test.h"
+
+/* ---- helpers -------------------------------------------------------------------- */
+
+/* Maximal runs of consecutive host packets of @p order. */
+static size_t runs_of(const ct_log *log, uint8_t order)
+{
+    size_t i, n = 0;
+    for (i = 0; i < log->n_sent; i++) {
+        if (log->sent_order[i] == order && (i == 0u || log->sent_order[i - 1u] != order)) {
+            n++;
+        }
+    }
+    return n;
+}
+
+/* Host packets of @p order from index @p from on. */
+static size_t sent_count(const ct_log *log, uint8_t order, size_t from)
+{
+    size_t i, n = 0;
+    for (i = from; i < log->n_sent; i++) {
+        n += (log->sent_order[i] == order);
+    }
+    return n;
+}
+
+/* Every run of @p order is followed by a null packet (when anything follows it). */
+static void assert_null_after_runs(const ct_log *log, uint8_t order)
+{
+    size_t i;
+    for (i = 0; i + 1u < log->n_sent; i++) {
+        if (log->sent_order[i] == order && log->sent_order[i + 1u] != order) {
+            if (log->sent_order[i + 1u] != XF_ORDER_NULL) {
+                print_error("packet %u after a run of 0x%02X is 0x%02X, not null\n", (unsigned)(i + 1u), order,
+                            log->sent_order[i + 1u]);
+                fail();
+            }
+        }
+    }
+}
+
+static ct_rig *rig_up(const xf_client_config *cc, const xf_sim_config *sc)
+{
+    ct_rig *r = ct_rig_new(cc, sc);
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    return r;
+}
+
+/* ---- init ---------------------------------------------------------------------- */
+
+static void test_init_rates_and_args(void **state)
+{
+    static const uint16_t warn[] = {1, 20, 29, 51, 60, 200};
+    static const uint16_t ok[] = {30, 40, 50};
+    static const uint16_t bad[] = {0, 201, 300};
+    xf_client c;
+    xf_client_config cfg;
+    xf_hal hal, incomplete;
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    size_t i;
+    (void)state;
+    hal = r->host_hal;
+    for (i = 0; i < sizeof(warn) / sizeof(warn[0]); i++) {
+        xf_client_config_init(&cfg);
+        cfg.rate_hz = warn[i];
+        assert_xf(xf_client_init(&c, &hal, &cfg), XF_WARN_RATE);
+    }
+    for (i = 0; i < sizeof(ok) / sizeof(ok[0]); i++) {
+        xf_client_config_init(&cfg);
+        cfg.rate_hz = ok[i];
+        assert_xf(xf_client_init(&c, &hal, &cfg), XF_OK);
+    }
+    for (i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+        xf_client_config_init(&cfg);
+        cfg.rate_hz = bad[i];
+        assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    }
+    xf_client_config_init(&cfg);
+    cfg.protocol_version = 0;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    assert_xf(xf_client_init(&c, &hal, NULL), XF_OK); /* defaults */
+    assert_int_equal(c.cfg.rate_hz, 50);
+    assert_int_equal(c.cfg.protocol_version, 1);
+    assert_xf(xf_client_init(NULL, &hal, NULL), XF_ERR_ARG);
+    assert_xf(xf_client_init(&c, NULL, NULL), XF_ERR_ARG);
+    incomplete = hal;
+    incomplete.read = NULL;
+    assert_xf(xf_client_init(&c, &incomplete, NULL), XF_ERR_ARG);
+    incomplete = hal;
+    incomplete.now_ms = NULL;
+    assert_xf(xf_client_init(&c, &incomplete, NULL), XF_ERR_ARG);
+    assert_xf(xf_client_step(NULL, 0), XF_ERR_ARG);
+    ct_rig_free(r);
+}
+
+/* A 20 Hz client (XF_WARN_RATE, still accepted) sends 20 packets a second. */
+static void test_rate_20hz_paces_packets(void **state)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.rate_hz = 20;
+    r = ct_rig_new(&cc, NULL);
+    ct_run(r, 1000);
+    assert_int_equal(r->c.health.packets_sent, 20);
+    assert_int_equal(xf_client_next_deadline(&r->c), 1000u + 1u + 1000u);
+    ct_rig_free(r);
+}
+
+/* ---- commands ------------------------------------------------------------------- */
+
+/* Null packets by default, 72 bytes each, one reply each. */
+static void test_null_packets_by_default(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    size_t i;
+    (void)state;
+    ct_run(r, 1000);
+    assert_int_equal(r->log.n_sent, 50);
+    for (i = 0; i < r->log.n_sent; i++) {
+        assert_int_equal(r->log.sent_order[i], XF_ORDER_NULL);
+    }
+    assert_int_equal(r->s.stats.packets_in, 50);
+    assert_int_equal(r->c.health.replies, 50);
+    for (i = 0; i < r->log.n_replies; i++) {
+        assert_int_equal(r->log.reply_len[i], 72);
+    }
+    for (i = 0; i < 256; i++) {
+        assert_int_equal(r->s.stats.executed[i], 0);
+    }
+    ct_rig_free(r);
+}
+
+/* The first case: two shutters in a row run twice, a null between. */
+static void test_two_shutters_null_between(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    xf_cmd_result ra, rb;
+    uint32_t a, b;
+    (void)state;
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    b = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_true(b != a);
+    assert_int_equal(xf_client_pending(&r->c), 2);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_QUEUED);
+    assert_status(xf_client_command_status(&r->c, b, NULL), XF_CMD_QUEUED);
+    ct_run(r, 20);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_OK);
+    assert_status(ct_run_cmd(r, b, 1000, &rb), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, a, &ra), XF_CMD_OK);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_SHUTTER], 2);
+    assert_int_equal(r->s.stats.photos, 2);
+    assert_int_equal(runs_of(&r->log, XF_ORDER_SHUTTER), 2);
+    assert_null_after_runs(&r->log, XF_ORDER_SHUTTER);
+    /* the results: by polling and by callback, in order */
+    assert_int_equal(ra.id, a);
+    assert_int_equal(ra.order, XF_ORDER_SHUTTER);
+    assert_int_equal(ra.state, XF_STATE_SUCCESS);
+    assert_int_equal(ra.packets, 1); /* answered within one period */
+    assert_int_equal(rb.packets, 1);
+    assert_int_equal(r->log.n_results, 2);
+    assert_int_equal(r->log.results[0].id, a);
+    assert_int_equal(r->log.results[1].id, b);
+    assert_int_equal(xf_client_pending(&r->c), 0);
+    ct_rig_free(r);
+}
+
+/* Replies that arrive in small pieces (a slow UART) are put together. */
+static void test_replies_in_pieces(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    uint32_t a, b;
+    (void)state;
+    r->host.chunk = 5; /* 16 reads of 5 bytes a step: a reply spans up to 15 reads */
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    b = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, b, 1000, NULL), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_OK);
+    ct_run(r, 500);
+    assert_int_equal(r->c.health.replies, r->s.stats.replies);
+    assert_int_equal(r->c.health.parser.crc_errors, 0);
+    assert_int_equal(r->s.stats.photos, 2);
+    ct_rig_free(r);
+}
+
+/* A command is repeated in every packet until a reply carries its state;
+ * the GCU runs it once. Here the state comes 3 replies late. */
+static void test_feedback_in_later_reply(void **state)
+{
+    xf_sim_config sc;
+    ct_rig *r;
+    xf_cmd_result res;
+    uint32_t id;
+    size_t i, first = 0, state_at = 0;
+    (void)state;
+    xf_sim_config_init(&sc);
+    sc.feedback_after = 3;
+    r = rig_up(NULL, &sc);
+    id = ct_submit(r, XF_ORDER_RECORD);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_OK);
+    assert_int_equal(res.packets, 4);
+    assert_true(res.elapsed_ms >= 60u && res.elapsed_ms <= 62u);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_RECORD], 1);
+    assert_int_equal(r->s.stats.recordings, 1);
+    /* replies: three of order record without state (72 bytes), then the state */
+    for (i = 0; i < r->log.n_replies && r->log.reply_order[i] != XF_ORDER_RECORD; i++) {
+    }
+    first = i;
+    for (; i < r->log.n_replies && r->log.reply_len[i] == 72u; i++) {
+    }
+    state_at = i;
+    assert_int_equal(state_at - first, 3);
+    assert_int_equal(r->log.reply_order[state_at], XF_ORDER_RECORD);
+    assert_int_equal(r->log.reply_len[state_at], 73);
+    assert_int_equal(runs_of(&r->log, XF_ORDER_RECORD), 1);
+    assert_null_after_runs(&r->log, XF_ORDER_RECORD);
+    ct_rig_free(r);
+}
+
+/* Failures come back with their state and, where the order says so, the mask. */
+static void test_failing_camera_mask(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    xf_command cmd;
+    xf_cmd_result res;
+    uint32_t id;
+    (void)state;
+    xf_sim_set_failure(&r->s, XF_ORDER_ZOOM_IN, XF_CAM2);
+    xf_command_init(&cmd, XF_ORDER_ZOOM_IN);
+    cmd.cameras = XF_CAM1 | XF_CAM2;
+    id = ct_submit_cmd(r, &cmd);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_FAILED);
+    assert_int_equal(res.failed_cameras, XF_CAM2);
+    assert_int_equal(res.state, XF_CAM2);
+    assert_int_equal(ct_result_of(&r->log, id)->failed_cameras, XF_CAM2);
+    /* shutter reports plain failure: state 1, no mask */
+    xf_sim_set_failure(&r->s, XF_ORDER_SHUTTER, XF_STATE_FAILURE);
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_FAILED);
+    assert_int_equal(res.state, XF_STATE_FAILURE);
+    assert_int_equal(res.failed_cameras, 0);
+    /* restored */
+    xf_sim_set_failure(&r->s, XF_ORDER_SHUTTER, 0);
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_OK);
+    ct_rig_free(r);
+}
+
+/* Dropped replies: the command is repeated (retries), runs once, then times out. */
+static void test_dropped_replies_retry_then_timeout(void **state)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    xf_cmd_result res;
+    uint32_t id, t0;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.command_timeout_ms = 300;
+    r = rig_up(&cc, NULL);
+    r->s.fault.drop_next = 1000;
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    t0 = r->now;
+    assert_status(ct_run_cmd(r, id, 2000, &res), XF_CMD_TIMEOUT);
+    assert_true(xf_ms_since(r->now, t0) >= 300u && xf_ms_since(r->now, t0) <= 321u);
+    assert_true(res.packets >= 14u && res.packets <= 16u);
+    assert_true(res.elapsed_ms >= 300u);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_SHUTTER], 1); /* repeated, run once */
+    assert_int_equal(r->s.stats.photos, 1);
+    assert_true(r->s.stats.dropped >= 14u);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_STALE); /* not yet down */
+    /* the drops end: the link is back, and a new shutter runs */
+    r->s.fault.drop_next = 0;
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_OK);
+    assert_int_equal(r->s.stats.photos, 2);
+    ct_rig_free(r);
+}
+
+/*
+ * The stale-reply guard: replies are 200 ms late, so when command A of an
+ * order has its state, ten more replies to A's packets, all carrying A's
+ * state, are still on their way. Command B of the same order must not be
+ * resolved by them: the GCU fails B, and B must come back failed.
+ */
+static void test_stale_reply_guard(void **state)
+{
+    xf_sim_config sc;
+    xf_client_config cc;
+    ct_rig *r;
+    xf_cmd_result ra, rb;
+    uint32_t a, b;
+    (void)state;
+    xf_sim_config_init(&sc);
+    sc.feedback_after = 3;
+    xf_client_config_init(&cc);
+    cc.command_timeout_ms = 3000;
+    r = ct_rig_new(&cc, &sc);
+    r->s.fault.delay_ms = 200;
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, a, 2000, &ra), XF_CMD_OK);
+    assert_true(ra.packets > 10u); /* many of A's replies are still in flight */
+    xf_sim_set_failure(&r->s, XF_ORDER_SHUTTER, XF_STATE_FAILURE);
+    b = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, b, 3000, &rb), XF_CMD_FAILED);
+    assert_int_equal(rb.state, XF_STATE_FAILURE);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_SHUTTER], 2);
+    assert_int_equal(r->s.stats.photos, 1);
+    assert_null_after_runs(&r->log, XF_ORDER_SHUTTER);
+    ct_rig_free(r);
+}
+
+/* The same with both commands queued together. */
+static void test_stale_reply_guard_queued(void **state)
+{
+    xf_sim_config sc;
+    xf_client_config cc;
+    ct_rig *r;
+    xf_cmd_result res;
+    uint32_t id[3];
+    size_t i;
+    (void)state;
+    xf_sim_config_init(&sc);
+    xf_client_config_init(&cc);
+    cc.command_timeout_ms = 3000;
+    r = ct_rig_new(&cc, &sc);
+    r->s.fault.delay_ms = 150;
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    for (i = 0; i < 3; i++) {
+        id[i] = ct_submit(r, XF_ORDER_SHUTTER);
+    }
+    assert_status(ct_run_cmd(r, id[2], 5000, &res), XF_CMD_OK);
+    for (i = 0; i < 3; i++) {
+        assert_status(xf_client_command_status(&r->c, id[i], &res), XF_CMD_OK);
+    }
+    assert_int_equal(r->s.stats.executed[XF_ORDER_SHUTTER], 3);
+    assert_int_equal(runs_of(&r->log, XF_ORDER_SHUTTER), 3);
+    /* each result came at least one round trip (150 ms) after its first packet:
+     * none was taken from a reply to an earlier command */
+    for (i = 0; i < 3; i++) {
+        assert_true(ct_result_of(&r->log, id[i])->elapsed_ms >= 150u);
+    }
+    ct_rig_free(r);
+}
+
+/* state_once: only one reply carries the state; the client takes it. */
+static void test_state_once(void **state)
+{
+    xf_sim_config sc;
+    xf_client_config cc;
+    ct_rig *r;
+    xf_cmd_result res;
+    uint32_t id;
+    (void)state;
+    xf_sim_config_init(&sc);
+    sc.state_once = 1;
+    xf_client_config_init(&cc);
+    cc.command_timeout_ms = 300;
+    r = ct_rig_new(&cc, &sc);
+    r->s.fault.delay_ms = 100; /* so the command is repeated while the state is on its way */
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    id = ct_submit(r, XF_ORDER_FOCUS);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_OK);
+    assert_true(res.packets >= 5u);
+    ct_run(r, 300);
+    assert_int_equal(ct_state_replies(&r->log, XF_ORDER_FOCUS), 1);
+    assert_true(sent_count(&r->log, XF_ORDER_FOCUS, 0) >= 5u);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_FOCUS], 1);
+    /* the one reply with the state lost: nothing else will say it, so a timeout */
+    r->s.fault.delay_ms = 0;
+    ct_run(r, 300);
+    id = ct_submit(r, XF_ORDER_FOCUS);
+    r->s.fault.drop_next = 1; /* the next reply is the command's first */
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_TIMEOUT);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_FOCUS], 2);
+    ct_rig_free(r);
+}
+
+/* Calibration: "operating" (reported once), kept going, then ok. */
+static void test_calibration_operating_then_ok(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    xf_cmd_result res;
+    uint32_t id;
+    size_t i, n = 0;
+    (void)state;
+    id = ct_submit(r, XF_ORDER_CALIBRATION);
+    ct_run(r, 100);
+    assert_status(xf_client_command_status(&r->c, id, &res), XF_CMD_OPERATING);
+    assert_int_equal(r->log.n_results, 1);
+    assert_int_equal(r->log.results[0].status, XF_CMD_OPERATING);
+    assert_int_equal(r->log.results[0].state, XF_STATE_OPERATING);
+    assert_int_equal(r->log.results[0].id, id);
+    assert_int_equal(xf_client_pending(&r->c), 1);
+    assert_status(ct_run_cmd(r, id, 3000, &res), XF_CMD_OK);
+    assert_true(res.elapsed_ms >= 1500u && res.elapsed_ms <= 1530u);
+    assert_true(res.packets >= 75u);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_CALIBRATION], 1);
+    for (i = 0; i < r->log.n_results; i++) {
+        n += (r->log.results[i].id == id);
+    }
+    assert_int_equal(n, 2); /* operating once, then ok */
+    assert_int_equal(runs_of(&r->log, XF_ORDER_CALIBRATION), 1);
+    ct_rig_free(r);
+}
+
+/* "operating", then a failure as the final state. */
+static void test_calibration_operating_then_failed(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    xf_cmd_result res;
+    uint32_t id;
+    (void)state;
+    id = ct_submit(r, XF_ORDER_CALIBRATION);
+    ct_run(r, 100);
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_OPERATING);
+    xf_sim_set_failure(&r->s, XF_ORDER_CALIBRATION, XF_STATE_FAILURE); /* the gimbal was moved */
+    assert_status(ct_run_cmd(r, id, 3000, &res), XF_CMD_FAILED);
+    assert_int_equal(res.state, XF_STATE_FAILURE);
+    assert_true(res.elapsed_ms >= 1500u);
+    ct_rig_free(r);
+}
+
+/* ... and a final state that never comes: the operating timeout. */
+static void test_calibration_operating_timeout(void **state)
+{
+    xf_client_config cc;
+    xf_sim_config sc;
+    ct_rig *r;
+    xf_cmd_result res;
+    uint32_t id;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.operating_timeout_ms = 500;
+    cc.command_timeout_ms = 200;
+    xf_sim_config_init(&sc);
+    sc.calibration_ms = 5000;
+    r = rig_up(&cc, &sc);
+    id = ct_submit(r, XF_ORDER_CALIBRATION);
+    ct_run(r, 300); /* past the command timeout: operating keeps it alive */
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_OPERATING);
+    assert_status(ct_run_cmd(r, id, 2000, &res), XF_CMD_TIMEOUT);
+    assert_true(res.elapsed_ms >= 500u && res.elapsed_ms <= 525u);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_UP);
+    ct_rig_free(r);
+}
+
+/* Eight commands fill the queue; the ninth is XF_ERR_BUSY. All eight run. */
+static void test_queue_full_busy(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    xf_command cmd;
+    xf_cmd_result res;
+    uint32_t id[XF_CLIENT_QUEUE], extra = 0;
+    size_t i;
+    (void)state;
+    for (i = 0; i < XF_CLIENT_QUEUE; i++) {
+        id[i] = ct_submit(r, XF_ORDER_SHUTTER);
+    }
+    xf_command_init(&cmd, XF_ORDER_SHUTTER);
+    assert_xf(xf_client_submit(&r->c, &cmd, &extra, NULL), XF_ERR_BUSY);
+    assert_int_equal(extra, 0);
+    assert_int_equal(xf_client_pending(&r->c), XF_CLIENT_QUEUE);
+    assert_status(ct_run_cmd(r, id[XF_CLIENT_QUEUE - 1], 3000, &res), XF_CMD_OK);
+    for (i = 0; i < XF_CLIENT_QUEUE; i++) {
+        assert_status(xf_client_command_status(&r->c, id[i], NULL), XF_CMD_OK);
+    }
+    assert_int_equal(r->s.stats.photos, XF_CLIENT_QUEUE);
+    assert_int_equal(runs_of(&r->log, XF_ORDER_SHUTTER), XF_CLIENT_QUEUE);
+    /* space again */
+    assert_xf(xf_client_submit(&r->c, &cmd, &extra, NULL), XF_OK);
+    ct_rig_free(r);
+}
+
+/* Ids are never 0, also when the counter wraps. */
+static void test_ids_skip_zero(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    uint32_t a, b;
+    (void)state;
+    r->c.next_id = 0xFFFFFFFFu;
+    a = ct_submit(r, XF_ORDER_FOCUS);
+    b = ct_submit(r, XF_ORDER_RECORD);
+    assert_int_equal(a, 0xFFFFFFFFu);
+    assert_int_equal(b, 1);
+    assert_status(ct_run_cmd(r, b, 1000, NULL), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, 0, NULL), XF_CMD_UNKNOWN);
+    ct_rig_free(r);
+}
+
+/* Finished results are kept for polling, the oldest forgotten. */
+static void test_results_ring(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    uint32_t id[XF_CLIENT_RESULTS + 2];
+    size_t i;
+    (void)state;
+    assert_status(xf_client_command_status(&r->c, 0, NULL), XF_CMD_UNKNOWN);
+    assert_status(xf_client_command_status(&r->c, 12345, NULL), XF_CMD_UNKNOWN);
+    assert_status(xf_client_command_status(NULL, 1, NULL), XF_CMD_UNKNOWN);
+    for (i = 0; i < XF_CLIENT_RESULTS + 2u; i++) {
+        id[i] = ct_submit(r, XF_ORDER_FOCUS);
+        assert_status(ct_run_cmd(r, id[i], 1000, NULL), XF_CMD_OK);
+    }
+    assert_status(xf_client_command_status(&r->c, id[0], NULL), XF_CMD_UNKNOWN);
+    assert_status(xf_client_command_status(&r->c, id[1], NULL), XF_CMD_UNKNOWN);
+    for (i = 2; i < XF_CLIENT_RESULTS + 2u; i++) {
+        assert_status(xf_client_command_status(&r->c, id[i], NULL), XF_CMD_OK);
+    }
+    ct_rig_free(r);
+}
+
+static void test_cancel_all(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    uint32_t a, b, c;
+    xf_cmd_result res;
+    (void)state;
+    r->s.fault.silent = 1; /* nothing finishes on its own */
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    b = ct_submit(r, XF_ORDER_RECORD);
+    c = ct_submit(r, XF_ORDER_FOCUS);
+    ct_run(r, 25);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_SENDING);
+    assert_status(xf_client_command_status(&r->c, b, NULL), XF_CMD_QUEUED);
+    xf_client_cancel_all(&r->c);
+    assert_int_equal(xf_client_pending(&r->c), 0);
+    assert_status(xf_client_command_status(&r->c, a, &res), XF_CMD_CANCELLED);
+    assert_true(res.packets >= 1u);
+    assert_status(xf_client_command_status(&r->c, b, NULL), XF_CMD_CANCELLED);
+    assert_status(xf_client_command_status(&r->c, c, NULL), XF_CMD_CANCELLED);
+    assert_int_equal(r->log.n_results, 3);
+    /* back to nulls */
+    ct_run(r, 100);
+    assert_int_equal(r->log.sent_order[r->log.n_sent - 1u], XF_ORDER_NULL);
+    xf_client_cancel_all(NULL);
+    ct_rig_free(r);
+}
+
+/* Range errors on submit name the field; nothing is queued. */
+static void test_submit_range_errors(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    xf_command cmd;
+    const char *bad = NULL;
+    uint32_t id = 0;
+    (void)state;
+    xf_command_init(&cmd, XF_ORDER_ZOOM_TO);
+    cmd.zoom = 0;
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
+    assert_string_equal(bad, "zoom");
+    cmd.zoom = 10001;
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
+    assert_string_equal(bad, "zoom");
+    xf_command_init(&cmd, XF_ORDER_SHUTTER);
+    cmd.cameras = 0;
+    bad = NULL;
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
+    assert_string_equal(bad, "cameras");
+    xf_command_init(&cmd, XF_ORDER_TRACK);
+    cmd.value = 1;
+    cmd.x0 = 5000;
+    cmd.y0 = 100;
+    cmd.x1 = 4000;
+    cmd.y1 = 200;
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
+    assert_string_equal(bad, "x1");
+    xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
+    cmd.value = 2;
+    cmd.dx = 2000;
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
+    assert_string_equal(bad, "dx");
+    xf_command_init(&cmd, XF_ORDER_RANGING);
+    cmd.value = 1;
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
+    assert_string_equal(bad, "value");
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, NULL), XF_ERR_RANGE); /* bad_field may be NULL */
+    xf_command_init(&cmd, 0x99);
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_UNSUPPORTED);
+    assert_xf(xf_client_submit(&r->c, NULL, &id, &bad), XF_ERR_ARG);
+    assert_xf(xf_client_submit(NULL, &cmd, &id, &bad), XF_ERR_ARG);
+    assert_xf(xf_client_external_track(&r->c, XF_CAM1, 0, -1100), XF_ERR_RANGE);
+    assert_xf(xf_client_external_track(&r->c, 0, 0, 0), XF_ERR_RANGE);
+    assert_int_equal(id, 0);
+    assert_int_equal(xf_client_pending(&r->c), 0);
+    ct_run(r, 200);
+    assert_int_equal(sent_count(&r->log, XF_ORDER_NULL, 0), r->log.n_sent); /* nothing went out */
+    ct_rig_free(r);
+}
+
+/* ---- link health ---------------------------------------------------------------- */
+
+/* DOWN (no callback) -> UP at the first reply -> STALE -> DOWN -> UP. */
+static void test_link_transitions(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    uint32_t last_rx;
+    (void)state;
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_DOWN);
+    assert_int_equal(xf_client_link(NULL), XF_LINK_DOWN);
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    assert_int_equal(r->log.n_links, 1);
+    assert_int_equal(r->log.links[0], XF_LINK_UP);
+    assert_int_equal(r->log.link_ms[0], r->c.health.last_rx_ms);
+    ct_run(r, 100);
+    r->s.fault.silent = 1;
+    last_rx = r->c.health.last_rx_ms;
+    assert_true(ct_run_link(r, XF_LINK_STALE, 2000));
+    assert_int_equal(r->now - last_rx, 250); /* stale_ms */
+    assert_true(ct_run_link(r, XF_LINK_DOWN, 2000));
+    assert_int_equal(r->now - last_rx, 1000); /* down_ms: a dead link is reported at its timeout */
+    r->s.fault.silent = 0;
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    assert_int_equal(r->log.n_links, 4);
+    assert_int_equal(r->log.links[1], XF_LINK_STALE);
+    assert_int_equal(r->log.links[2], XF_LINK_DOWN);
+    assert_int_equal(r->log.links[3], XF_LINK_UP);
+    assert_int_equal(r->log.link_ms[1], last_rx + 250u);
+    assert_int_equal(r->log.link_ms[2], last_rx + 1000u);
+    assert_string_equal(xf_link_state_name(XF_LINK_UP), "up");
+    assert_string_equal(xf_link_state_name(XF_LINK_STALE), "stale");
+    assert_string_equal(xf_link_state_name(XF_LINK_DOWN), "down");
+    assert_string_equal(xf_cmd_status_name(XF_CMD_LINK_LOST), "link lost");
+    assert_string_equal(xf_cmd_status_name(XF_CMD_OK), "ok");
+    assert_string_equal(xf_cmd_status_name((xf_cmd_status)99), "unknown");
+    ct_rig_free(r);
+}
+
+/* Commands fail with LINK_LOST when the link dies: silent GCU, closed transport,
+ * and a command sent while there is no GCU at all. */
+static void test_link_lost_fails_commands(void **state)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    xf_cmd_result res;
+    uint32_t a, b, c, last_rx;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.command_timeout_ms = 5000;
+    r = rig_up(&cc, NULL);
+    r->s.fault.silent = 1;
+    last_rx = r->c.health.last_rx_ms;
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    b = ct_submit(r, XF_ORDER_RECORD);
+    c = ct_submit(r, XF_ORDER_ZOOM_IN);
+    assert_status(ct_run_cmd(r, c, 3000, &res), XF_CMD_LINK_LOST);
+    assert_int_equal(r->now - last_rx, 1000);
+    assert_status(xf_client_command_status(&r->c, a, &res), XF_CMD_LINK_LOST);
+    assert_true(res.packets >= 45u);
+    assert_status(xf_client_command_status(&r->c, b, NULL), XF_CMD_LINK_LOST);
+    assert_int_equal(xf_client_pending(&r->c), 0);
+    /* the transport closes: down at once, the running command lost at once */
+    r->s.fault.silent = 0;
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    a = ct_submit(r, XF_ORDER_RECORD);
+    r->s.fault.silent = 1;
+    ct_run(r, 30);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_SENDING);
+    r->host.closed = 1;
+    ct_tick(r);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_DOWN);
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_LINK_LOST);
+    ct_run(r, 30);
+    assert_int_equal(xf_client_step(&r->c, r->now + 1u), XF_ERR_CLOSED);
+    assert_true(r->c.health.send_errors >= 1u);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_DOWN);
+    ct_rig_free(r);
+    /* never a GCU: a command times out as LINK_LOST */
+    cc.command_timeout_ms = 300;
+    r = ct_rig_new(&cc, NULL);
+    r->s.fault.silent = 1;
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, a, 1000, &res), XF_CMD_LINK_LOST);
+    assert_true(res.elapsed_ms >= 300u && res.elapsed_ms <= 321u);
+    ct_rig_free(r);
+}
+
+/*
+ * Once the transport has been closed, the link stays DOWN until a valid
+ * reply comes over the reopened transport; a reconnection alone (TCP
+ * connected to a listener that then refuses, a reopened port) is not a
+ * GCU answering, and must not flap the link to UP/STALE.
+ */
+static void test_reopened_transport_down_until_reply(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    size_t links;
+    (void)state;
+    ct_run(r, 50);
+    r->host.closed = 1;
+    ct_tick(r);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_DOWN);
+    links = r->log.n_links;
+    /* reopened, but the GCU is not answering yet */
+    r->host.closed = 0;
+    r->sim_on = 0;
+    ct_run(r, 100);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_DOWN);
+    assert_int_equal(r->log.n_links, links); /* no flapping */
+    (void)ct_drain_host(r, NULL);
+    r->sim_on = 1;
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    assert_int_equal(r->log.n_links, links + 1u);
+    assert_true(r->log.link_replies[links] > 0u);
+    ct_rig_free(r);
+}
+
+/* Health figures: packets, replies, the reply rate, what is missing, parser errors. */
+static void test_health_figures(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    const xf_health *h;
+    uint32_t replies;
+    (void)state;
+    ct_run(r, 2001); /* the figures of the second full second */
+    h = xf_client_health(&r->c);
+    assert_int_equal(h->packets_sent, 101);
+    assert_int_equal(h->replies, 100); /* the last one's reply is a millisecond away */
+    assert_true(h->reply_rate_hz >= 49u && h->reply_rate_hz <= 51u);
+    assert_int_equal(h->replies_missing, 0);
+    assert_int_equal(h->link, XF_LINK_UP);
+    assert_int_equal(h->parser.frames, 100);
+    /* half the replies dropped */
+    r->s.fault.drop_permille = 500;
+    ct_run(r, 2000);
+    assert_true(h->replies_missing >= 10u && h->replies_missing <= 40u);
+    r->s.fault.drop_permille = 0;
+    /* corrupted replies are not replies */
+    ct_run(r, 1000);
+    replies = h->replies;
+    r->s.fault.corrupt_next = 5;
+    ct_run(r, 1000);
+    assert_int_equal(r->s.stats.corrupted, 5);
+    assert_int_equal(h->replies - replies, 45);
+    assert_true(h->parser.crc_errors >= 5u);
+    assert_null(xf_client_health(NULL));
+    ct_rig_free(r);
+}
+
+/* ---- telemetry ----------------------------------------------------------------------- */
+
+static void test_telemetry_and_ages(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    const xf_telemetry *t = xf_client_telemetry(&r->c);
+    xf_gcu_packet p;
+    uint32_t seen, sub_seen;
+    (void)state;
+    assert_int_equal(t->have_main, 0);
+    assert_int_equal(t->have_sub, 0);
+    ct_run(r, 500);
+    assert_int_equal(t->have_main, 1);
+    assert_int_equal(t->have_sub, 1);
+    assert_int_equal(t->main_ms, r->c.health.last_rx_ms);
+    assert_int_equal(t->sub_ms, t->main_ms);
+    assert_true(r->now - t->main_ms <= 20u);
+    assert_int_equal(t->version, 1);
+    assert_int_equal(t->gimbal_mode, XF_MODE_HEAD_LOCK);
+    assert_int_equal(t->gimbal_code, 40);
+    assert_non_null(t->model);
+    assert_string_equal(t->model, "D-80AI");
+    assert_int_equal(t->hw_version, 3);
+    assert_int_equal(t->fw_version, 12);
+    assert_near(t->zoom_cam1, 1.0, 1e-6);
+    assert_near(t->zoom_cam2, 1.0, 1e-6);
+    assert_int_equal(t->distance_valid, 0);
+    assert_int_equal(t->thermal_status, 0); /* V1 */
+    assert_int_equal(r->log.n_telemetry, r->c.health.replies);
+    assert_int_equal(t->last.main.gimbal_mode, XF_MODE_HEAD_LOCK);
+    /* a silent GCU: the timestamps stay, the age grows */
+    r->s.fault.silent = 1;
+    seen = t->main_ms;
+    ct_run(r, 600);
+    assert_int_equal(t->main_ms, seen);
+    assert_true(r->now - t->main_ms >= 600u);
+    assert_int_equal(t->have_main, 1);
+    r->s.fault.silent = 0;
+    ct_run(r, 40);
+    assert_true(r->now - t->main_ms <= 20u);
+    /* main and sub frames age separately: a reply without the sub frame */
+    r->sim_on = 0;
+    sub_seen = t->sub_ms;
+    ct_run(r, 100);
+    memset(&p, 0, sizeof(p));
+    p.version = 1;
+    p.main.gimbal_mode = XF_MODE_EULER;
+    ct_gcu_reply(r, &p);
+    ct_tick(r);
+    assert_int_equal(t->main_ms, r->now);
+    assert_int_equal(t->gimbal_mode, XF_MODE_EULER);
+    assert_int_equal(t->sub_ms, sub_seen);
+    assert_string_equal(t->model, "D-80AI"); /* sub values kept from the last sub frame */
+    /* a ranging sub frame: distance in metres, V2 fields */
+    p.version = 2;
+    p.sub.sub_header = XF_SUB_HEADER;
+    p.sub.gimbal_code = 200; /* unknown model */
+    p.sub.target_distance = 1234;
+    p.sub.zoom_cam1 = 55;
+    p.sub.time_zone = -5;
+    p.sub.camera_status = XF_CAMERA_RECORDING;
+    ct_gcu_reply(r, &p);
+    ct_tick(r);
+    assert_int_equal(t->sub_ms, r->now);
+    assert_null(t->model);
+    assert_int_equal(t->distance_valid, 1);
+    assert_near(t->target_distance_m, 123.4, 1e-3);
+    assert_near(t->zoom_cam1, 5.5, 1e-6);
+    assert_int_equal(t->time_zone, -5);
+    assert_int_equal(t->camera_status, XF_CAMERA_RECORDING);
+    assert_int_equal(t->version, 2);
+    assert_null(xf_client_telemetry(NULL));
+    ct_rig_free(r);
+}
+
+/* V2 replies: rates in 0.1 deg/s on the wire, deg/s in the telemetry; the V2 fields. */
+static void test_protocol_v2_rates(void **state)
+{
+    static const uint8_t versions[] = {1, 2};
+    size_t k;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        xf_sim_config sc;
+        ct_rig *r;
+        const xf_telemetry *t;
+        int i;
+        xf_sim_config_init(&sc);
+        sc.version = versions[k];
+        r = rig_up(NULL, &sc);
+        t = xf_client_telemetry(&r->c);
+        for (i = 0; i < 6; i++) {
+            xf_client_set_rates(&r->c, 0.0f, 0.0f, 20.0f, r->now);
+            ct_run(r, 50);
+        }
+        assert_int_equal(t->version, versions[k]);
+        assert_near(t->rate_z_dps, 20.0, 0.15);
+        assert_near(t->rate_x_dps, 0.0, 0.15);
+        assert_int_equal(t->last.main.rate_z, versions[k] == 2u ? 200 : 2000);
+        if (versions[k] == 2u) {
+            assert_int_equal(t->thermal_status, XF_THERMAL_MEASURE_AVAILABLE);
+            assert_true((t->camera_status & XF_CAMERA_OSD_ON) != 0u);
+        } else {
+            assert_int_equal(t->thermal_status, 0);
+            assert_int_equal(t->camera_status, 0);
+        }
+        ct_rig_free(r);
+    }
+}
+
+/* A V2 client with a V2 GCU: V2 orders, V2 fields change. */
+static void test_protocol_v2_orders(void **state)
+{
+    xf_client_config cc;
+    xf_sim_config sc;
+    ct_rig *r;
+    xf_command cmd;
+    uint32_t id;
+    const xf_telemetry *t;
+    xf_host_packet last;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.protocol_version = 2;
+    xf_sim_config_init(&sc);
+    sc.version = 2;
+    r = rig_up(&cc, &sc);
+    t = xf_client_telemetry(&r->c);
+    xf_command_init(&cmd, XF_ORDER_TIME_ZONE);
+    cmd.hours = -2;
+    id = ct_submit_cmd(r, &cmd);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 40);
+    assert_int_equal(t->time_zone, -2);
+    id = ct_submit(r, XF_ORDER_RECORD);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 40);
+    assert_true((t->camera_status & XF_CAMERA_RECORDING) != 0u);
+    assert_int_equal(r->s.host.version, 2); /* the client speaks V2 */
+    r->sim_on = 0;
+    ct_run(r, 40);
+    assert_true(ct_drain_host(r, &last) >= 1u);
+    assert_int_equal(last.version, 2);
+    ct_rig_free(r);
+}
+
+/* ---- inputs: carrier and GNSS ------------------------------------------------------- */
+
+static void test_carrier_only_while_fresh(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_carrier k;
+    const xf_host_main *m = &r->s.host.main;
+    uint32_t n;
+    (void)state;
+    ct_run(r, 200);
+    assert_int_equal(r->s.stats.ins_valid_packets, 0); /* never set: never sent */
+    assert_int_equal(m->status & XF_STATUS_INS_VALID, 0);
+    memset(&k, 0, sizeof(k));
+    k.roll_deg = 10.5f;
+    k.pitch_deg = -5.25f;
+    k.yaw_deg = 270.0f;
+    k.accel_north = 0.1f;
+    k.accel_east = -0.2f;
+    k.accel_up = 0.5f;
+    k.vel_north = 21.12f;
+    k.vel_east = -3.5f;
+    k.vel_up = 1.0f;
+    xf_client_set_carrier(&r->c, &k, r->now);
+    ct_run(r, 100);
+    assert_true(r->s.stats.ins_valid_packets >= 4u);
+    assert_int_equal(m->status & XF_STATUS_INS_VALID, XF_STATUS_INS_VALID);
+    assert_int_equal(m->carrier_roll, 1050);
+    assert_int_equal(m->carrier_pitch, -525);
+    assert_int_equal(m->carrier_yaw, 27000);
+    assert_int_equal(m->accel_north, 10);
+    assert_int_equal(m->accel_east, -20);
+    assert_int_equal(m->accel_up, 50);
+    assert_int_equal(m->vel_north, 2112);
+    assert_int_equal(m->vel_east, -350);
+    assert_int_equal(m->vel_up, 100);
+    ct_run(r, 100); /* 200 ms: the last fresh packet */
+    n = r->s.stats.ins_valid_packets;
+    assert_true(n >= 10u && n <= 11u);
+    ct_run(r, 500); /* stale: zeros with ins_valid clear, never invented */
+    assert_int_equal(r->s.stats.ins_valid_packets, n);
+    assert_int_equal(m->status & XF_STATUS_INS_VALID, 0);
+    assert_int_equal(m->carrier_roll, 0);
+    assert_int_equal(m->carrier_pitch, 0);
+    assert_int_equal(m->carrier_yaw, 0);
+    assert_int_equal(m->accel_up, 0);
+    assert_int_equal(m->vel_north, 0);
+    /* fresh again */
+    xf_client_set_carrier(&r->c, &k, r->now);
+    ct_run(r, 30);
+    assert_true(r->s.stats.ins_valid_packets > n);
+    xf_client_set_carrier(NULL, &k, r->now);
+    xf_client_set_carrier(&r->c, NULL, r->now);
+    ct_rig_free(r);
+}
+
+static void test_gnss_only_while_fresh(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_gnss g;
+    const xf_host_sub *s = &r->s.host.sub;
+    (void)state;
+    ct_run(r, 100);
+    assert_int_equal(s->sub_header, 0); /* no sub frame data: all zero */
+    assert_int_equal(s->latitude, 0);
+    memset(&g, 0, sizeof(g));
+    g.latitude_deg = 47.3977419;
+    g.longitude_deg = 8.5455938;
+    g.altitude_m = 488.2;
+    g.satellites = 14;
+    g.week = 2300;
+    g.ms_of_week = 352718000u;
+    g.relative_height_m = 35.5;
+    xf_client_set_gnss(&r->c, &g, r->now);
+    ct_run(r, 1000);
+    assert_int_equal(s->sub_header, XF_SUB_HEADER);
+    assert_int_equal(s->latitude, 473977419);
+    assert_int_equal(s->longitude, 85455938);
+    assert_int_equal(s->altitude, 488200);
+    assert_int_equal(s->satellites, 14);
+    assert_int_equal(s->gnss_week, 2300);
+    assert_int_equal(s->gnss_ms, 352718000u);
+    assert_int_equal(s->relative_height, 35500);
+    assert_int_equal(r->s.host.main.sub_request, XF_SUB_HEADER);
+    ct_run(r, 1000); /* 2000 ms: still fresh at the limit */
+    assert_int_equal(s->sub_header, XF_SUB_HEADER);
+    ct_run(r, 30);
+    assert_int_equal(s->sub_header, 0);
+    assert_int_equal(s->latitude, 0);
+    assert_int_equal(s->longitude, 0);
+    assert_int_equal(s->altitude, 0);
+    assert_int_equal(s->satellites, 0);
+    assert_int_equal(s->gnss_ms, 0);
+    assert_int_equal(s->gnss_week, 0);
+    assert_int_equal(s->relative_height, 0);
+    ct_rig_free(r);
+}
+
+/* ---- control ---------------------------------------------------------------------------- */
+
+/* The watchdog: rates not refreshed are replaced by zero rates (still valid). */
+static void test_watchdog_zeroes_rates(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_host_main *m = &r->s.host.main;
+    const xf_health *h = xf_client_health(&r->c);
+    float pitch;
+    (void)state;
+    xf_client_set_rates(&r->c, 0.0f, 10.0f, 20.0f, r->now);
+    ct_run(r, 100);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, XF_STATUS_CTRL_VALID);
+    assert_int_equal(m->pitch_ctrl, 100);
+    assert_int_equal(m->yaw_ctrl, 200);
+    assert_near(r->s.rate[1], 10.0, 0.01);
+    assert_int_equal(h->watchdog_active, 0);
+    ct_run(r, 400); /* 500 ms */
+    assert_int_equal(m->yaw_ctrl, 200);
+    ct_run(r, 30);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, XF_STATUS_CTRL_VALID);
+    assert_int_equal(m->roll_ctrl, 0);
+    assert_int_equal(m->pitch_ctrl, 0);
+    assert_int_equal(m->yaw_ctrl, 0);
+    assert_int_equal(h->watchdog_active, 1);
+    assert_int_equal(h->watchdog_trips, 1);
+    assert_near(r->s.rate[1], 0.0, 1e-6); /* the gimbal holds still */
+    pitch = r->s.pitch;
+    ct_run(r, 500);
+    assert_near(r->s.pitch, pitch, 1e-6);
+    assert_int_equal(h->watchdog_trips, 1); /* one trip, however long */
+    /* refreshed: moving again, then a second trip */
+    xf_client_set_rates(&r->c, 0.0f, -10.0f, 0.0f, r->now);
+    assert_int_equal(h->watchdog_active, 0);
+    ct_run(r, 40);
+    assert_int_equal(m->pitch_ctrl, -100);
+    ct_run(r, 500);
+    assert_int_equal(m->pitch_ctrl, 0);
+    assert_int_equal(h->watchdog_trips, 2);
+    /* clear_control: ctrl_valid clear */
+    xf_client_clear_control(&r->c);
+    ct_run(r, 40);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, 0);
+    assert_int_equal(h->watchdog_active, 0);
+    ct_rig_free(r);
+}
+
+static void test_watchdog_off(void **state)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.rate_watchdog_ms = 0;
+    r = rig_up(&cc, NULL);
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 5.0f, r->now);
+    ct_run(r, 2000);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 50);
+    assert_int_equal(r->c.health.watchdog_trips, 0);
+    ct_rig_free(r);
+}
+
+/* Rates are sent divided by 0.1 deg/s / zoom: the gimbal turns as asked at any zoom. */
+static void test_rates_scaled_by_zoom(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_telemetry *t = xf_client_telemetry(&r->c);
+    xf_command cmd;
+    uint32_t id, i;
+    (void)state;
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 5.0f, r->now);
+    ct_run(r, 40);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 50);
+    assert_near(r->s.rate[2], 5.0, 0.01);
+    xf_command_init(&cmd, XF_ORDER_ZOOM_TO);
+    cmd.zoom = xf_zoom_to_rate_raw(10.0f);
+    id = ct_submit_cmd(r, &cmd);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    for (i = 0; i < 3000u && fabsf(t->zoom_cam1 - 10.0f) > 1e-3f; i++) {
+        ct_tick(r);
+    }
+    assert_near(t->zoom_cam1, 10.0, 1e-3);
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 5.0f, r->now);
+    ct_run(r, 40);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 500);
+    assert_near(r->s.rate[2], 5.0, 0.01);
+    xf_client_set_rates(&r->c, 0.0f, -2.5f, 0.0f, r->now);
+    ct_run(r, 40);
+    assert_int_equal(r->s.host.main.pitch_ctrl, -250);
+    assert_near(r->s.rate[1], -2.5, 0.01);
+    /* the wire's limit, 1500, is 15 deg/s at 10x */
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 20.0f, r->now);
+    ct_run(r, 40);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 1500);
+    ct_rig_free(r);
+}
+
+/* Head lock: rates integrate; at zero the angles hold. */
+static void test_head_lock_rates_integrate(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_telemetry *t = xf_client_telemetry(&r->c);
+    float p0, y0;
+    int i;
+    (void)state;
+    assert_int_equal(t->gimbal_mode, XF_MODE_HEAD_LOCK);
+    p0 = r->s.pitch;
+    y0 = r->s.yaw;
+    for (i = 0; i < 10; i++) {
+        xf_client_set_rates(&r->c, 0.0f, 10.0f, -20.0f, r->now);
+        ct_run(r, 100);
+    }
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 0.0f, r->now);
+    ct_run(r, 40);
+    assert_near(r->s.pitch - p0, 10.0, 0.5);
+    assert_angle_near(r->s.yaw, y0 - 20.0, 1.0);
+    ct_run(r, 400);
+    assert_near(t->cam_pitch_deg, r->s.pitch, 0.011);
+    assert_angle_near(t->cam_yaw_deg, r->s.yaw, 0.011);
+    p0 = r->s.pitch;
+    ct_run(r, 400);
+    assert_near(r->s.pitch, p0, 1e-6);
+    ct_rig_free(r);
+}
+
+/* Euler mode: the gimbal slews to the angles asked (not subject to the watchdog). */
+static void test_euler_reaches_target(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_telemetry *t = xf_client_telemetry(&r->c);
+    uint32_t id;
+    (void)state;
+    id = ct_submit(r, XF_ORDER_EULER);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    xf_client_set_angles(&r->c, 0.0f, -30.0f, 90.0f, r->now);
+    ct_run(r, 300);
+    assert_true(t->cam_yaw_deg > 10.0f && t->cam_yaw_deg < 85.0f); /* slewing, not jumping */
+    ct_run(r, 1700);
+    assert_int_equal(t->gimbal_mode, XF_MODE_EULER);
+    assert_near(t->cam_pitch_deg, -30.0, 0.02);
+    assert_angle_near(t->cam_yaw_deg, 90.0, 0.02);
+    assert_near(t->cam_roll_deg, 0.0, 0.02);
+    assert_int_equal(r->s.host.main.pitch_ctrl, -3000); /* angles stay: no watchdog */
+    assert_int_equal(r->s.host.main.yaw_ctrl, 9000);
+    assert_int_equal(r->c.health.watchdog_trips, 0);
+    ct_rig_free(r);
+}
+
+static void test_orthoview_points_down(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_telemetry *t = xf_client_telemetry(&r->c);
+    uint32_t id;
+    (void)state;
+    id = ct_submit(r, XF_ORDER_ORTHOVIEW);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 1500);
+    assert_int_equal(t->gimbal_mode, XF_MODE_ORTHOVIEW);
+    assert_near(t->cam_pitch_deg, -90.0, 0.02);
+    ct_rig_free(r);
+}
+
+/* FPV follows the carrier: V1's angle control ("FPV" in V2.0.4), V2's fpv. */
+static void test_fpv_follows_carrier(void **state)
+{
+    size_t k;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        xf_client_config cc;
+        xf_sim_config sc;
+        ct_rig *r;
+        const xf_telemetry *t;
+        xf_carrier car;
+        uint32_t id;
+        int i;
+        xf_client_config_init(&cc);
+        xf_sim_config_init(&sc);
+        cc.protocol_version = (uint8_t)(k + 1u);
+        sc.version = (uint8_t)(k + 1u);
+        r = rig_up(&cc, &sc);
+        t = xf_client_telemetry(&r->c);
+        memset(&car, 0, sizeof(car));
+        car.roll_deg = 5.0f;
+        car.pitch_deg = 10.0f;
+        car.yaw_deg = 45.0f;
+        xf_client_set_carrier(&r->c, &car, r->now);
+        id = ct_submit(r, k == 0u ? XF_ORDER_ANGLE_CONTROL : XF_ORDER_FPV);
+        assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+        xf_client_set_angles(&r->c, 0.0f, 0.0f, 0.0f, r->now);
+        for (i = 0; i < 20; i++) {
+            xf_client_set_carrier(&r->c, &car, r->now);
+            ct_run(r, 50);
+        }
+        assert_int_equal(t->gimbal_mode, k == 0u ? XF_MODE_ANGLE_CONTROL : XF_MODE_FPV);
+        assert_near(t->cam_roll_deg, 5.0, 0.02);
+        assert_near(t->cam_pitch_deg, 10.0, 0.02);
+        assert_angle_near(t->cam_yaw_deg, 45.0, 0.02);
+        assert_near(t->rel_z_deg, 0.0, 0.02);
+        /* the carrier turns; the camera follows, offset by the angles asked */
+        car.yaw_deg = 200.0f;
+        xf_client_set_angles(&r->c, 0.0f, -10.0f, 15.0f, r->now);
+        for (i = 0; i < 40; i++) {
+            xf_client_set_carrier(&r->c, &car, r->now);
+            ct_run(r, 50);
+        }
+        assert_angle_near(t->cam_yaw_deg, 215.0, 0.02);
+        assert_near(t->cam_pitch_deg, 0.0, 0.02);
+        assert_near(t->rel_z_deg, 15.0, 0.02);
+        ct_rig_free(r);
+    }
+}
+
+/* ---- external track ----------------------------------------------------------------------- */
+
+static void test_external_track_stream_and_stop(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_telemetry *t = xf_client_telemetry(&r->c);
+    uint32_t before, id, stop;
+    size_t mark;
+    xf_cmd_result res;
+    (void)state;
+    assert_xf(xf_client_external_track(&r->c, XF_CAM1, 512, -256), XF_OK);
+    before = r->s.stats.executed[XF_ORDER_EXTERNAL_TRACK];
+    ct_run(r, 500);
+    /* every packet runs: exempt from the once-rule */
+    assert_int_equal(r->s.stats.executed[XF_ORDER_EXTERNAL_TRACK] - before, 25);
+    assert_int_equal(r->s.mode, XF_MODE_TRACK);
+    assert_int_equal(t->gimbal_mode, XF_MODE_TRACK);
+    assert_true((t->pod_status & XF_POD_TRACKING_OK) != 0u);
+    assert_true(t->target_offset_x > 0 && t->target_offset_y < 0);
+    /* new offsets go out at once */
+    assert_xf(xf_client_external_track(&r->c, XF_CAM1, -100, 100), XF_OK);
+    ct_run(r, 40);
+    assert_true(t->target_offset_x < 0 && t->target_offset_y > 0);
+    /* a command in the middle: the stream pauses for it and a null */
+    mark = r->log.n_sent;
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 100);
+    assert_int_equal(r->s.stats.photos, 1);
+    assert_int_equal(sent_count(&r->log, XF_ORDER_SHUTTER, mark), 1);
+    assert_true(sent_count(&r->log, XF_ORDER_EXTERNAL_TRACK, mark) >= 3u);
+    /* stop: exit sent as a command, then no more streaming */
+    assert_xf(xf_client_external_track_stop(&r->c, &stop), XF_OK);
+    assert_status(ct_run_cmd(r, stop, 1000, &res), XF_CMD_OK);
+    assert_int_equal(r->s.mode, XF_MODE_HEAD_LOCK);
+    ct_run(r, 40);
+    assert_int_equal(t->pod_status & XF_POD_TRACKING_OK, 0);
+    before = r->s.stats.executed[XF_ORDER_EXTERNAL_TRACK];
+    mark = r->log.n_sent;
+    ct_run(r, 500);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_EXTERNAL_TRACK], before);
+    assert_int_equal(sent_count(&r->log, XF_ORDER_NULL, mark), r->log.n_sent - mark);
+    assert_xf(xf_client_external_track(NULL, 1, 0, 0), XF_ERR_ARG);
+    assert_xf(xf_client_external_track_stop(NULL, NULL), XF_ERR_ARG);
+    ct_rig_free(r);
+}
+
+/*
+ * The stop's result is its own: with replies 200 ms late, the stream's
+ * replies (order 0x1B, success) are still in flight when the stop starts.
+ * The GCU fails the stop; the client must say so.
+ */
+static void test_external_track_stop_not_resolved_by_stream(void **state)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    uint32_t stop;
+    xf_cmd_result res;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.command_timeout_ms = 3000;
+    r = ct_rig_new(&cc, NULL);
+    r->s.fault.delay_ms = 200;
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    assert_xf(xf_client_external_track(&r->c, XF_CAM1, 10, 10), XF_OK);
+    ct_run(r, 500);
+    xf_sim_set_failure(&r->s, XF_ORDER_EXTERNAL_TRACK, XF_CAM1);
+    assert_xf(xf_client_external_track_stop(&r->c, &stop), XF_OK);
+    assert_status(ct_run_cmd(r, stop, 3000, &res), XF_CMD_FAILED);
+    assert_int_equal(res.failed_cameras, XF_CAM1);
+    ct_rig_free(r);
+}
+
+/* ---- the clock wraps at 2^32 ---------------------------------------------------------------- */
+
+static void test_clock_wrap(void **state)
+{
+    xf_client_config cc;
+    xf_sim_config sc;
+    ct_rig *r;
+    uint32_t a, b, cal;
+    int i;
+    (void)state;
+    xf_client_config_init(&cc);
+    xf_sim_config_init(&sc);
+    sc.calibration_ms = 600;
+    r = ct_rig_new_at(&cc, &sc, 0xFFFFFC00u);
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    ct_run(r, 700);
+    a = ct_submit(r, XF_ORDER_SHUTTER);
+    b = ct_submit(r, XF_ORDER_SHUTTER);
+    cal = ct_submit(r, XF_ORDER_CALIBRATION);
+    for (i = 0; i < 20; i++) { /* rates refreshed across the wrap: no watchdog trip */
+        xf_client_set_rates(&r->c, 0.0f, 0.0f, 1.0f, r->now);
+        ct_run(r, 100);
+    }
+    assert_true(r->now < 0x10000000u); /* wrapped */
+    assert_status(xf_client_command_status(&r->c, a, NULL), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, b, NULL), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, cal, NULL), XF_CMD_OK);
+    assert_int_equal(r->s.stats.photos, 2);
+    assert_int_equal(r->log.n_links, 1); /* up all along */
+    assert_int_equal(r->c.health.watchdog_trips, 0);
+    assert_true(r->now - r->c.tele.main_ms <= 20u);
+    ct_rig_free(r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_init_rates_and_args),
+        cmocka_unit_test(test_rate_20hz_paces_packets),
+        cmocka_unit_test(test_null_packets_by_default),
+        cmocka_unit_test(test_two_shutters_null_between),
+        cmocka_unit_test(test_replies_in_pieces),
+        cmocka_unit_test(test_feedback_in_later_reply),
+        cmocka_unit_test(test_failing_camera_mask),
+        cmocka_unit_test(test_dropped_replies_retry_then_timeout),
+        cmocka_unit_test(test_stale_reply_guard),
+        cmocka_unit_test(test_stale_reply_guard_queued),
+        cmocka_unit_test(test_state_once),
+        cmocka_unit_test(test_calibration_operating_then_ok),
+        cmocka_unit_test(test_calibration_operating_then_failed),
+        cmocka_unit_test(test_calibration_operating_timeout),
+        cmocka_unit_test(test_queue_full_busy),
+        cmocka_unit_test(test_ids_skip_zero),
+        cmocka_unit_test(test_results_ring),
+        cmocka_unit_test(test_cancel_all),
+        cmocka_unit_test(test_submit_range_errors),
+        cmocka_unit_test(test_link_transitions),
+        cmocka_unit_test(test_link_lost_fails_commands),
+        cmocka_unit_test(test_reopened_transport_down_until_reply),
+        cmocka_unit_test(test_health_figures),
+        cmocka_unit_test(test_telemetry_and_ages),
+        cmocka_unit_test(test_protocol_v2_rates),
+        cmocka_unit_test(test_protocol_v2_orders),
+        cmocka_unit_test(test_carrier_only_while_fresh),
+        cmocka_unit_test(test_gnss_only_while_fresh),
+        cmocka_unit_test(test_watchdog_zeroes_rates),
+        cmocka_unit_test(test_watchdog_off),
+        cmocka_unit_test(test_rates_scaled_by_zoom),
+        cmocka_unit_test(test_head_lock_rates_integrate),
+        cmocka_unit_test(test_euler_reaches_target),
+        cmocka_unit_test(test_orthoview_points_down),
+        cmocka_unit_test(test_fpv_follows_carrier),
+        cmocka_unit_test(test_external_track_stream_and_stop),
+        cmocka_unit_test(test_external_track_stop_not_resolved_by_stream),
+        cmocka_unit_test(test_clock_wrap),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
