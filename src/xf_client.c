@@ -176,9 +176,9 @@ static void xf__update_telemetry(xf_client *c, const xf_gcu_packet *p)
         t->model = xf_gimbal_model(s->gimbal_code);
         t->error_code = s->error_code;
         t->distance_valid = (uint8_t)xf_distance_m(s->target_distance, &t->target_distance_m);
-        t->target_lat_deg = xf_deg7(s->target_latitude);
-        t->target_lon_deg = xf_deg7(s->target_longitude);
-        t->target_alt_m = (float)s->target_altitude / 1000.0f;
+        t->target_lat_e7 = s->target_latitude;
+        t->target_lon_e7 = s->target_longitude;
+        t->target_alt_mm = s->target_altitude;
         t->zoom_cam1 = xf_zoom_x(s->zoom_cam1);
         t->zoom_cam2 = xf_zoom_x(s->zoom_cam2);
         t->thermal_status = s->thermal_status;
@@ -312,13 +312,13 @@ static void xf__put_gnss(const xf_client *c, xf_host_packet *pkt)
         return; /* "no sub frame data": bytes 37-68 all zero */
     }
     pkt->sub.sub_header = XF_SUB_HEADER;
-    pkt->sub.longitude = xf_deg7_raw(g->longitude_deg);
-    pkt->sub.latitude = xf_deg7_raw(g->latitude_deg);
-    pkt->sub.altitude = xf_mm_raw(g->altitude_m);
+    pkt->sub.longitude = g->longitude_e7;
+    pkt->sub.latitude = g->latitude_e7;
+    pkt->sub.altitude = g->altitude_mm;
     pkt->sub.satellites = g->satellites;
     pkt->sub.gnss_ms = g->ms_of_week;
     pkt->sub.gnss_week = g->week;
-    pkt->sub.relative_height = xf_mm_raw(g->relative_height_m);
+    pkt->sub.relative_height = g->relative_height_mm;
 }
 
 static void xf__put_control(xf_client *c, xf_host_packet *pkt)

@@ -104,8 +104,8 @@ typedef struct xf_telemetry {
     uint16_t error_code;
     uint8_t distance_valid;
     float target_distance_m;
-    double target_lat_deg, target_lon_deg;
-    float target_alt_m;
+    int32_t target_lat_e7, target_lon_e7; /**< 1e-7 deg (xf_deg7() for degrees) */
+    int32_t target_alt_mm;
     float zoom_cam1, zoom_cam2; /**< x */
     uint8_t thermal_status;     /**< V0.2 */
     uint16_t camera_status;     /**< V0.2 */
@@ -138,14 +138,18 @@ typedef struct xf_carrier {
     float vel_north, vel_east, vel_up;   /**< m/s */
 } xf_carrier;
 
-/** GNSS data for the sub frame. */
+/**
+ * GNSS data for the sub frame, in the wire's own integer units (what GNSS
+ * receivers and autopilots give, and no double arithmetic on an MCU; from
+ * degrees and metres: xf_deg7_raw(), xf_mm_raw()).
+ */
 typedef struct xf_gnss {
-    double latitude_deg, longitude_deg;
-    double altitude_m;
+    int32_t latitude_e7, longitude_e7; /**< 1e-7 deg */
+    int32_t altitude_mm;
     uint8_t satellites;
     int16_t week;
     uint32_t ms_of_week;
-    double relative_height_m; /**< 0 when not needed */
+    int32_t relative_height_mm; /**< 0 when not needed */
 } xf_gnss;
 
 typedef void (*xf_on_result_fn)(void *user, const xf_cmd_result *result);

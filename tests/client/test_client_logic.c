@@ -961,13 +961,13 @@ static void test_gnss_only_while_fresh(void **state)
     assert_int_equal(s->sub_header, 0); /* no sub frame data: all zero */
     assert_int_equal(s->latitude, 0);
     memset(&g, 0, sizeof(g));
-    g.latitude_deg = 47.3977419;
-    g.longitude_deg = 8.5455938;
-    g.altitude_m = 488.2;
+    g.latitude_e7 = xf_deg7_raw(47.3977419);
+    g.longitude_e7 = xf_deg7_raw(8.5455938);
+    g.altitude_mm = xf_mm_raw(488.2);
     g.satellites = 14;
     g.week = 2300;
     g.ms_of_week = 352718000u;
-    g.relative_height_m = 35.5;
+    g.relative_height_mm = xf_mm_raw(35.5);
     xf_client_set_gnss(&r->c, &g, r->now);
     ct_run(r, 1000);
     assert_int_equal(s->sub_header, XF_SUB_HEADER);

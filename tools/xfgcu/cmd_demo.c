@@ -150,10 +150,10 @@ static void step_ranging(demo *d)
     if (demo_check(d, ms >= 0, "no valid distance within 1 s")) {
         demo_got("distance %.1f m (%.0f m high, looking 30 deg down)", (double)t->target_distance_m, HOME_HEIGHT);
         demo_got("target at %.7f N %.7f E, altitude %.1f m: north-east of the carrier, as yaw 45 says",
-                 t->target_lat_deg, t->target_lon_deg, (double)t->target_alt_m);
+                 xf_deg7(t->target_lat_e7), xf_deg7(t->target_lon_e7), (double)t->target_alt_mm / 1000.0);
         demo_check(d, fabs((double)t->target_distance_m - 240.0) < 10.0, "distance %.1f m, expected about 240",
                    (double)t->target_distance_m);
-        demo_check(d, t->target_lat_deg > HOME_LAT && t->target_lon_deg > HOME_LON,
+        demo_check(d, xf_deg7(t->target_lat_e7) > HOME_LAT && xf_deg7(t->target_lon_e7) > HOME_LON,
                    "the target is not north-east of the carrier");
     }
 }
@@ -352,10 +352,10 @@ int cmd_demo(const cli_link *link, int argc, char **argv)
     if (d == NULL) {
         return cli_fail("demo: out of memory");
     }
-    d->gnss.latitude_deg = HOME_LAT;
-    d->gnss.longitude_deg = HOME_LON;
-    d->gnss.altitude_m = HOME_ALT;
-    d->gnss.relative_height_m = HOME_HEIGHT;
+    d->gnss.latitude_e7 = xf_deg7_raw(HOME_LAT);
+    d->gnss.longitude_e7 = xf_deg7_raw(HOME_LON);
+    d->gnss.altitude_mm = xf_mm_raw(HOME_ALT);
+    d->gnss.relative_height_mm = xf_mm_raw(HOME_HEIGHT);
     d->gnss.satellites = 14;
     cli_signals_init();
     rc = demo_start(d);

@@ -107,7 +107,7 @@ static void distance_text(const xf_telemetry *t, char *buf, size_t cap)
 {
     if (t->distance_valid && (t->pod_status & XF_POD_TARGET_VALID) != 0u) {
         snprintf(buf, cap, "%.1f m, target lat %.7f lon %.7f alt %.1f m", (double)t->target_distance_m,
-                 t->target_lat_deg, t->target_lon_deg, (double)t->target_alt_m);
+                 xf_deg7(t->target_lat_e7), xf_deg7(t->target_lon_e7), (double)t->target_alt_mm / 1000.0);
     } else {
         snprintf(buf, cap, "no target");
     }
