@@ -64,7 +64,9 @@ typedef struct xf_frame {
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
     uint8_t ring[XF_PARSER_RING];
+#if XF_PARSER_MEMO
     uint16_t memo[XF_PARSER_RING];    /* CRC of the stream before each held byte (memo mode) */
+#endif
     uint8_t scratch[XF_PACKET_MAX_LEN]; /* a frame that wraps round the ring is copied here */
     uint32_t head;     /* stream position of the first held byte: the earliest candidate */
     uint32_t end;      /* one past the last held byte */
@@ -160,9 +162,14 @@ static inline uint16_t xf__ring_crc(const xf_parser *p, uint32_t pos, size_t n)
     return xf_crc16_update(c, p->ring, n - first);
 }
 
-/* Enter memo mode: record the CRC before each held byte, from `head` on. */
+/* Enter memo mode: record the CRC before each held byte, from `head` on.
+ * Without XF_PARSER_MEMO the parser stays in fast mode: every candidate's
+ * CRC is read from the ring (still exact, but O(length) per candidate). */
 static inline void xf__memo_start(xf_parser *p)
 {
+#if !XF_PARSER_MEMO
+    (void)p;
+#else
     uint32_t pos;
     uint16_t c = 0;
     for (pos = p->head; pos != p->end; pos++) {
@@ -172,10 +179,12 @@ static inline void xf__memo_start(xf_parser *p)
     }
     p->memo_crc = c;
     p->memo_on = 1;
+#endif
 }
 
 static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
 {
+#if XF_PARSER_MEMO
     size_t i;
     if (p->memo_on) {
         uint16_t c = p->memo_crc;
@@ -186,7 +195,9 @@ static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
             c = xf_crc16_update(c, data + i, 1);
         }
         p->memo_crc = c;
-    } else {
+    } else
+#endif
+    {
         size_t i0 = p->end & XF__RMASK;
         size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
         XF_MEMCPY(p->ring + i0, data, first);
@@ -201,10 +212,13 @@ static inline int xf__intact(const xf_parser *p, uint32_t pos, size_t len)
     uint32_t crc_pos = pos + (uint32_t)len - 2u;
     uint16_t want = (uint16_t)(((uint16_t)xf__rb(p, crc_pos) << 8) | xf__rb(p, crc_pos + 1u));
     uint16_t got;
+#if XF_PARSER_MEMO
     if (p->memo_on) {
         got = (uint16_t)(p->memo[crc_pos & XF__RMASK] ^
                          xf__crc_shift(p->memo[pos & XF__RMASK], (unsigned)(len - 2u)));
-    } else {
+    } else
+#endif
+    {
         got = xf__ring_crc(p, pos, len - 2u);
     }
     return got == want;
