@@ -17,3 +17,8 @@ files=(src/*.c tools/xfgcu/*.c examples/*.c)
 # One file per run: clang-tidy 14 reports false va_list findings when given several.
 printf '%s\n' "${files[@]}" | xargs -P "$(nproc)" -n 1 clang-tidy -p build/tidy --quiet 2>/dev/null
 echo "clang-tidy: clean (${#files[@]} files)"
+
+echo "--- clang-format (.clang-format)"
+mapfile -t sources < <(git ls-files '*.c' '*.h' '*.cpp')
+clang-format --dry-run -Werror "${sources[@]}"
+echo "clang-format: clean (${#sources[@]} files)"

@@ -46,7 +46,7 @@ void xf_capture_chunk(void *writer, xf_direction dir, const uint8_t *data, size_
             n = XF_CAPTURE_MAX_CHUNK;
         }
         bad = fprintf(w->f, "%u.%03u %c", (unsigned)(t / 1000u), (unsigned)(t % 1000u),
-                          dir == XF_DIR_HOST ? '>' : '<') < 0;
+                      dir == XF_DIR_HOST ? '>' : '<') < 0;
         for (i = 0; i < n && !bad; i++) {
             bad = fprintf(w->f, " %02X", data[off + i]) < 0;
         }

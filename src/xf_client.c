@@ -6,9 +6,9 @@
 #include "xfgcu/xf_mem.h"
 #include "xfgcu/xf_units.h"
 
-#define XF_CTRL_NONE 0u
-#define XF_CTRL_RATES 1u
-#define XF_CTRL_ANGLES 2u
+#define XF_CTRL_NONE      0u
+#define XF_CTRL_RATES     1u
+#define XF_CTRL_ANGLES    2u
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 
 void xf_client_config_init(xf_client_config *cfg)
@@ -86,7 +86,7 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
         r.failed_cameras = fb->failed_cameras;
     }
     if (c->active) {
-        c->nulls_owed = 1; /* back to null packets: the next command of any order is separated */
+        c->nulls_owed = 1;                /* back to null packets: the next command of any order is separated */
         c->guard_order = slot->cmd.order; /* replies of this order may still be in flight */
         c->guard_open = 1;
     }

@@ -46,7 +46,8 @@ xf_err xf__errno_code(int e)
 #if defined(__GNUC__)
 __attribute__((format(printf, 3, 0)))
 #endif
-static void xf__vrecord(xf_os_error *err, int e, const char *fmt, va_list ap)
+static void
+xf__vrecord(xf_os_error *err, int e, const char *fmt, va_list ap)
 {
     int n;
     if (err == NULL) {

@@ -24,8 +24,8 @@
 #include "xf_posix_internal.h"
 
 #define XF_SERIAL_WRITE_TIMEOUT_MS 100
-#define XF_SERIAL_RETRY_MIN_MS 50u
-#define XF_SERIAL_RETRY_MAX_MS 1000u
+#define XF_SERIAL_RETRY_MIN_MS     50u
+#define XF_SERIAL_RETRY_MAX_MS     1000u
 
 int xf_serial_baud_ok(uint32_t baud)
 {

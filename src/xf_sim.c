@@ -8,11 +8,11 @@
 #include "xfgcu/xf_sim.h"
 #include "xfgcu/xf_units.h"
 
-#define XF_SIM_FOV_DEG 60.0f   /* horizontal field of view at 1x */
-#define XF_SIM_VFOV_DEG 34.0f  /* vertical */
+#define XF_SIM_FOV_DEG   60.0f /* horizontal field of view at 1x */
+#define XF_SIM_VFOV_DEG  34.0f /* vertical */
 #define XF_SIM_ZOOM2_MAX 8.0f  /* thermal camera's digital zoom */
-#define XF_DEG2RAD 0.017453292519943295
-#define XF_M_PER_DEG 111320.0  /* metres per degree of latitude */
+#define XF_DEG2RAD       0.017453292519943295
+#define XF_M_PER_DEG     111320.0 /* metres per degree of latitude */
 
 void xf_sim_config_init(xf_sim_config *cfg)
 {
@@ -107,7 +107,10 @@ static void xf__carrier(const xf_sim *s, float *roll, float *pitch, float *yaw)
     *yaw = ok ? xf_cdeg(s->host.main.carrier_yaw) : 0.0f;
 }
 
-static int xf__ctrl_valid(const xf_sim *s) { return s->have_host && (s->host.main.status & XF_STATUS_CTRL_VALID) != 0u; }
+static int xf__ctrl_valid(const xf_sim *s)
+{
+    return s->have_host && (s->host.main.status & XF_STATUS_CTRL_VALID) != 0u;
+}
 
 /* Control rates in deg/s: one raw unit is 0.1 deg/s divided by the zoom. */
 static float xf__ctrl_rate(const xf_sim *s, int16_t raw)
@@ -123,10 +126,7 @@ static void xf__set_bit16(uint16_t *v, uint16_t bit, int on)
     *v = (uint16_t)(on ? (*v | bit) : (*v & (uint16_t)~bit));
 }
 
-static void xf__set_bit8(uint8_t *v, uint8_t bit, int on)
-{
-    *v = (uint8_t)(on ? (*v | bit) : (*v & (uint8_t)~bit));
-}
+static void xf__set_bit8(uint8_t *v, uint8_t bit, int on) { *v = (uint8_t)(on ? (*v | bit) : (*v & (uint8_t)~bit)); }
 
 /* Neutral: back to pitch 0 and the carrier's heading, without changing mode. */
 static uint8_t xf__neutral(xf_sim *s)
@@ -229,9 +229,18 @@ static uint8_t xf__camera_order(xf_sim *s, const xf_command *c)
             s->stats.recordings++;
         }
         break;
-    case XF_ORDER_ZOOM_IN: s->zoom_dir = 1.0f; s->zoom_target = 0.0f; break;
-    case XF_ORDER_ZOOM_OUT: s->zoom_dir = -1.0f; s->zoom_target = 0.0f; break;
-    case XF_ORDER_ZOOM_STOP: s->zoom_dir = 0.0f; s->zoom_target = 0.0f; break;
+    case XF_ORDER_ZOOM_IN:
+        s->zoom_dir = 1.0f;
+        s->zoom_target = 0.0f;
+        break;
+    case XF_ORDER_ZOOM_OUT:
+        s->zoom_dir = -1.0f;
+        s->zoom_target = 0.0f;
+        break;
+    case XF_ORDER_ZOOM_STOP:
+        s->zoom_dir = 0.0f;
+        s->zoom_target = 0.0f;
+        break;
     case XF_ORDER_ZOOM_TO:
         s->zoom_dir = 0.0f;
         s->zoom_target = (c->zoom < 0) ? (float)(-c->zoom) / 10.0f
@@ -446,8 +455,8 @@ static void xf__range(xf_sim *s)
 {
     int on = (s->pod_status & XF_POD_RANGING_ON) != 0u;
     if (on) {
-        double h = (s->have_host && s->host.sub.relative_height > 0) ? (double)s->host.sub.relative_height / 1000.0
-                                                                      : 120.0;
+        double h =
+            (s->have_host && s->host.sub.relative_height > 0) ? (double)s->host.sub.relative_height / 1000.0 : 120.0;
         double d = (s->pitch < -3.0f) ? h / sin(-(double)s->pitch * XF_DEG2RAD) : 1500.0;
         s->distance_m = (float)((d > 3000.0) ? 3000.0 : d);
     }
@@ -515,7 +524,7 @@ void xf_sim_snapshot(const xf_sim *s, xf_gcu_packet *pkt)
         pkt->sub.target_distance = (int32_t)(s->distance_m * 10.0f + 0.5f);
         pkt->sub.target_latitude = xf_deg7_raw(lat + horiz * cos((double)s->yaw * XF_DEG2RAD) / XF_M_PER_DEG);
         pkt->sub.target_longitude = xf_deg7_raw(xf_deg7(h->longitude) + horiz * sin((double)s->yaw * XF_DEG2RAD) /
-                                                                          (XF_M_PER_DEG * cos(lat * XF_DEG2RAD)));
+                                                                            (XF_M_PER_DEG * cos(lat * XF_DEG2RAD)));
         pkt->sub.target_altitude = h->altitude + xf_mm_raw((double)s->distance_m * sin((double)s->pitch * XF_DEG2RAD));
     } else {
         pkt->sub.target_distance = XF_DISTANCE_INVALID_RAW;

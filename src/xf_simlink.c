@@ -2,8 +2,8 @@
  * xf_simlink.c - the GCU's end of a link, for the simulator: pty master,
  * UDP socket on the GCU's port, single-client TCP server.
  */
-#define _XOPEN_SOURCE 600 /* posix_openpt, grantpt, unlockpt, ptsname */
-#define _DEFAULT_SOURCE   /* cfmakeraw */
+#define _XOPEN_SOURCE   600 /* posix_openpt, grantpt, unlockpt, ptsname */
+#define _DEFAULT_SOURCE     /* cfmakeraw */
 #include <errno.h>
 #include <fcntl.h>
 #include <netdb.h>

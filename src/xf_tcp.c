@@ -120,8 +120,8 @@ static void xf__tcp_check(xf_tcp *t, uint32_t now)
     pfd.revents = 0;
     if (poll(&pfd, 1, 0) <= 0) {
         if (xf_ms_since(now, t->started_at) >= t->cfg.connect_timeout_ms) {
-            xf__fail(&t->error, XF_ERR_TIMEOUT, "connect to %s:%u: no answer in %u ms", t->host,
-                     (unsigned)t->cfg.port, (unsigned)t->cfg.connect_timeout_ms);
+            xf__fail(&t->error, XF_ERR_TIMEOUT, "connect to %s:%u: no answer in %u ms", t->host, (unsigned)t->cfg.port,
+                     (unsigned)t->cfg.connect_timeout_ms);
             xf__tcp_backoff(t, now);
         }
         return;

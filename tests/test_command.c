@@ -22,51 +22,85 @@ typedef struct golden {
     uint8_t bytes[12];
 } golden;
 
-#define S0() 0, { { XF_F_CAMERAS, 0 } }
-#define S1(a, b) 1, { { a, b } }
-#define S2(a, b, c, d) 2, { { a, b }, { c, d } }
-#define S3(a, b, c, d, e, f) 3, { { a, b }, { c, d }, { e, f } }
-#define S5(a, b, c, d, e, f, g, h, i, j) 5, { { a, b }, { c, d }, { e, f }, { g, h }, { i, j } }
-#define B0() 0, { 0 }
+#define S0()                                                                                                           \
+    0,                                                                                                                 \
+    {                                                                                                                  \
+        {                                                                                                              \
+            XF_F_CAMERAS, 0                                                                                            \
+        }                                                                                                              \
+    }
+#define S1(a, b)                                                                                                       \
+    1,                                                                                                                 \
+    {                                                                                                                  \
+        {                                                                                                              \
+            a, b                                                                                                       \
+        }                                                                                                              \
+    }
+#define S2(a, b, c, d)                                                                                                 \
+    2,                                                                                                                 \
+    {                                                                                                                  \
+        {a, b}, { c, d }                                                                                               \
+    }
+#define S3(a, b, c, d, e, f)                                                                                           \
+    3,                                                                                                                 \
+    {                                                                                                                  \
+        {a, b}, {c, d}, { e, f }                                                                                       \
+    }
+#define S5(a, b, c, d, e, f, g, h, i, j)                                                                               \
+    5,                                                                                                                 \
+    {                                                                                                                  \
+        {a, b}, {c, d}, {e, f}, {g, h}, { i, j }                                                                       \
+    }
+#define B0()                                                                                                           \
+    0, { 0 }
 
 /* One per order of the table (the first 36 rows), then extra vectors. */
 static const golden goldens[] = {
-    {0x00, 1, S0(), B0()},                                     /* null */
-    {0x01, 1, S0(), B0()},                                     /* calibration */
-    {0x03, 1, S0(), B0()},                                     /* neutral */
-    {0x06, 2, S1(XF_F_VALUE, 1), 1, {0x01}},                   /* osd_coordinate: target */
-    {0x07, 2, S1(XF_F_VALUE, 1), 1, {0x01}},                   /* auto_flip: off */
-    {0x08, 2, S1(XF_F_HOURS, -2), 1, {0xFE}},                  /* time_zone -2 = 0xFE (§10) */
-    {0x10, 1, S0(), B0()},                                     /* angle_control */
-    {0x11, 1, S0(), B0()},                                     /* head_lock */
-    {0x12, 1, S0(), B0()},                                     /* head_follow */
-    {0x13, 1, S0(), B0()},                                     /* orthoview */
-    {0x14, 1, S0(), B0()},                                     /* euler */
+    {0x00, 1, S0(), B0()},                    /* null */
+    {0x01, 1, S0(), B0()},                    /* calibration */
+    {0x03, 1, S0(), B0()},                    /* neutral */
+    {0x06, 2, S1(XF_F_VALUE, 1), 1, {0x01}},  /* osd_coordinate: target */
+    {0x07, 2, S1(XF_F_VALUE, 1), 1, {0x01}},  /* auto_flip: off */
+    {0x08, 2, S1(XF_F_HOURS, -2), 1, {0xFE}}, /* time_zone -2 = 0xFE (§10) */
+    {0x10, 1, S0(), B0()},                    /* angle_control */
+    {0x11, 1, S0(), B0()},                    /* head_lock */
+    {0x12, 1, S0(), B0()},                    /* head_follow */
+    {0x13, 1, S0(), B0()},                    /* orthoview */
+    {0x14, 1, S0(), B0()},                    /* euler */
     /* gaze_geo: lon 170.9175332 (1709175332 = 0x65DFF224), lat -38.0300822
      * (-380300822 = 0xE95511EA), alt 41.123 m (41123 = 0x0000A0A3) */
-    {0x15, 1, S3(XF_F_LONGITUDE, 1709175332, XF_F_LATITUDE, -380300822, XF_F_ALTITUDE, 41123), 12,
+    {0x15,
+     1,
+     S3(XF_F_LONGITUDE, 1709175332, XF_F_LATITUDE, -380300822, XF_F_ALTITUDE, 41123),
+     12,
      {0x24, 0xF2, 0xDF, 0x65, 0xEA, 0x11, 0x55, 0xE9, 0xA3, 0xA0, 0x00, 0x00}},
-    {0x16, 1, S0(), B0()},                                     /* gaze_lock */
+    {0x16, 1, S0(), B0()}, /* gaze_lock */
     /* track start, box (100,100)-(105,105), camera 1 (vendor appendix 4) */
-    {0x17, 1, S5(XF_F_VALUE, 1, XF_F_X0, 100, XF_F_Y0, 100, XF_F_X1, 105, XF_F_Y1, 105), 10,
+    {0x17,
+     1,
+     S5(XF_F_VALUE, 1, XF_F_X0, 100, XF_F_Y0, 100, XF_F_X1, 105, XF_F_Y1, 105),
+     10,
      {0x01, 0x01, 0x64, 0x00, 0x64, 0x00, 0x69, 0x00, 0x69, 0x00}},
     /* click_to_aim x=10000 (0x2710) y=5000 (0x1388) (vendor appendix 4) */
     {0x1A, 1, S2(XF_F_X0, 10000, XF_F_Y0, 5000), 5, {0x01, 0x10, 0x27, 0x88, 0x13}},
     /* external_track start, dx -1024 (0xFC00), dy 512 (0x0200) */
     {0x1B, 1, S3(XF_F_DX, -1024, XF_F_DY, 512, XF_F_VALUE, 2), 6, {0x01, 0x00, 0xFC, 0x00, 0x02, 0x02}},
-    {0x1C, 2, S0(), B0()},                                     /* fpv */
-    {0x20, 1, S0(), 1, {0x01}},                                /* shutter, KK default 0x01 */
-    {0x21, 1, S0(), 1, {0x01}},                                /* record */
-    {0x22, 1, S0(), 1, {0x01}},                                /* zoom_in */
-    {0x23, 1, S0(), 1, {0x01}},                                /* zoom_out */
-    {0x24, 1, S0(), 1, {0x01}},                                /* zoom_stop */
+    {0x1C, 2, S0(), B0()},      /* fpv */
+    {0x20, 1, S0(), 1, {0x01}}, /* shutter, KK default 0x01 */
+    {0x21, 1, S0(), 1, {0x01}}, /* record */
+    {0x22, 1, S0(), 1, {0x01}}, /* zoom_in */
+    {0x23, 1, S0(), 1, {0x01}}, /* zoom_out */
+    {0x24, 1, S0(), 1, {0x01}}, /* zoom_stop */
     /* all cameras to 5.5x: ZZ = -55 = 0xFFC9 (vendor appendix 4) */
     {0x25, 1, S2(XF_F_CAMERAS, 0xFF, XF_F_ZOOM, -55), 3, {0xFF, 0xC9, 0xFF}},
-    {0x26, 1, S0(), 1, {0x01}},                                /* focus */
-    {0x2A, 1, S0(), 2, {0x02, 0x00}},                          /* palette: next, thermal camera */
-    {0x2B, 1, S1(XF_F_VALUE, 1), 2, {0x01, 0x01}},             /* night vision on */
+    {0x26, 1, S0(), 1, {0x01}},                    /* focus */
+    {0x2A, 1, S0(), 2, {0x02, 0x00}},              /* palette: next, thermal camera */
+    {0x2B, 1, S1(XF_F_VALUE, 1), 2, {0x01, 0x01}}, /* night vision on */
     /* area_temp on, box (1000,2000)-(3000,4000) */
-    {0x30, 2, S5(XF_F_VALUE, 1, XF_F_X0, 1000, XF_F_Y0, 2000, XF_F_X1, 3000, XF_F_Y1, 4000), 10,
+    {0x30,
+     2,
+     S5(XF_F_VALUE, 1, XF_F_X0, 1000, XF_F_Y0, 2000, XF_F_X1, 3000, XF_F_Y1, 4000),
+     10,
      {0x02, 0x01, 0xE8, 0x03, 0xD0, 0x07, 0xB8, 0x0B, 0xA0, 0x0F}},
     /* temp_alarm on, high 50.0 C (500 = 0x01F4), low -20.0 C (-200 = 0xFF38) */
     {0x31, 2, S3(XF_F_VALUE, 1, XF_F_TEMP_HIGH, 500, XF_F_TEMP_LOW, -200), 6, {0x02, 0x01, 0xF4, 0x01, 0x38, 0xFF}},
@@ -74,29 +108,32 @@ static const golden goldens[] = {
     {0x32, 2, S3(XF_F_VALUE, 1, XF_F_TEMP_HIGH, 1000, XF_F_TEMP_LOW, 250), 6, {0x02, 0x01, 0xE8, 0x03, 0xFA, 0x00}},
     /* spot_temp on at (5000, 10000) */
     {0x33, 2, S3(XF_F_VALUE, 1, XF_F_X0, 5000, XF_F_Y0, 10000), 6, {0x02, 0x01, 0x88, 0x13, 0x10, 0x27}},
-    {0x73, 1, S1(XF_F_VALUE, 1), 1, {0x01}},                   /* osd hide */
-    {0x74, 2, S1(XF_F_VALUE, 3), 1, {0x03}},                   /* pip mode 3 (V0.2) */
-    {0x75, 2, S1(XF_F_VALUE, 1), 1, {0x01}},                   /* target_detection on */
-    {0x76, 2, S1(XF_F_VALUE, 1), 1, {0x01}},                   /* digital_zoom on */
-    {0x80, 1, S1(XF_F_VALUE, 255), 1, {0xFF}},                 /* lighting 255 (appendix 4) */
-    {0x81, 1, S1(XF_F_VALUE, 2), 1, {0x02}},                   /* ranging on (0x02) */
+    {0x73, 1, S1(XF_F_VALUE, 1), 1, {0x01}},   /* osd hide */
+    {0x74, 2, S1(XF_F_VALUE, 3), 1, {0x03}},   /* pip mode 3 (V0.2) */
+    {0x75, 2, S1(XF_F_VALUE, 1), 1, {0x01}},   /* target_detection on */
+    {0x76, 2, S1(XF_F_VALUE, 1), 1, {0x01}},   /* digital_zoom on */
+    {0x80, 1, S1(XF_F_VALUE, 255), 1, {0xFF}}, /* lighting 255 (appendix 4) */
+    {0x81, 1, S1(XF_F_VALUE, 2), 1, {0x02}},   /* ranging on (0x02) */
     /* ---- extra vectors ---- */
-    {0x25, 1, S1(XF_F_ZOOM, 5000), 3, {0x01, 0x88, 0x13}},              /* camera 1 to half range */
+    {0x25, 1, S1(XF_F_ZOOM, 5000), 3, {0x01, 0x88, 0x13}},                    /* camera 1 to half range */
     {0x25, 1, S2(XF_F_CAMERAS, 0xFF, XF_F_ZOOM, -10), 3, {0xFF, 0xF6, 0xFF}}, /* all to 1.0x */
     {0x25, 2, S2(XF_F_CAMERAS, 0x03, XF_F_ZOOM, -32768), 3, {0x03, 0x00, 0x80}},
     {0x08, 2, S1(XF_F_HOURS, 14), 1, {0x0E}},
     {0x08, 2, S1(XF_F_HOURS, -12), 1, {0xF4}},
-    {0x74, 1, S0(), 1, {0x00}},                                         /* pip next (V0.1) */
+    {0x74, 1, S0(), 1, {0x00}}, /* pip next (V0.1) */
     {0x2A, 2, S1(XF_F_VALUE, 10), 2, {0x02, 0x0A}},
     {0x2A, 1, S2(XF_F_CAMERAS, 0x01, XF_F_VALUE, 100), 2, {0x01, 0x64}},
     {0x1B, 1, S3(XF_F_DX, 3071, XF_F_DY, 3071, XF_F_VALUE, 2), 6, {0x01, 0xFF, 0x0B, 0xFF, 0x0B, 0x02}}, /* lost */
-    {0x1B, 1, S2(XF_F_DX, 1024, XF_F_DY, -1), 6, {0x01, 0x00, 0x04, 0xFF, 0xFF, 0x00}},                /* exit */
-    {0x17, 1, S0(), 10, {0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}},                 /* exit */
-    {0x2B, 1, S1(XF_F_VALUE, 2), 2, {0x01, 0x02}},                      /* night vision auto */
-    {0x80, 1, S0(), 1, {0x00}},                                         /* lighting off */
-    {0x81, 1, S0(), 1, {0x00}},                                         /* ranging off */
+    {0x1B, 1, S2(XF_F_DX, 1024, XF_F_DY, -1), 6, {0x01, 0x00, 0x04, 0xFF, 0xFF, 0x00}},                  /* exit */
+    {0x17, 1, S0(), 10, {0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}},                   /* exit */
+    {0x2B, 1, S1(XF_F_VALUE, 2), 2, {0x01, 0x02}}, /* night vision auto */
+    {0x80, 1, S0(), 1, {0x00}},                    /* lighting off */
+    {0x81, 1, S0(), 1, {0x00}},                    /* ranging off */
     {0x31, 2, S3(XF_F_VALUE, 0, XF_F_TEMP_HIGH, -300, XF_F_TEMP_LOW, 300), 6, {0x02, 0x00, 0xD4, 0xFE, 0x2C, 0x01}},
-    {0x15, 2, S3(XF_F_LONGITUDE, -1, XF_F_LATITUDE, 0x7FFFFFFF, XF_F_ALTITUDE, (int32_t)-2147483647 - 1), 12,
+    {0x15,
+     2,
+     S3(XF_F_LONGITUDE, -1, XF_F_LATITUDE, 0x7FFFFFFF, XF_F_ALTITUDE, (int32_t)-2147483647 - 1),
+     12,
      {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x7F, 0x00, 0x00, 0x00, 0x80}},
 };
 
@@ -355,10 +392,28 @@ typedef struct range_case {
     const char *bad; /* NULL: valid */
 } range_case;
 
-#define R1(a, b) 1, { { a, b } }
-#define R2(a, b, c, d) 2, { { a, b }, { c, d } }
-#define R3(a, b, c, d, e, f) 3, { { a, b }, { c, d }, { e, f } }
-#define R4(a, b, c, d, e, f, g, h) 4, { { a, b }, { c, d }, { e, f }, { g, h } }
+#define R1(a, b)                                                                                                       \
+    1,                                                                                                                 \
+    {                                                                                                                  \
+        {                                                                                                              \
+            a, b                                                                                                       \
+        }                                                                                                              \
+    }
+#define R2(a, b, c, d)                                                                                                 \
+    2,                                                                                                                 \
+    {                                                                                                                  \
+        {a, b}, { c, d }                                                                                               \
+    }
+#define R3(a, b, c, d, e, f)                                                                                           \
+    3,                                                                                                                 \
+    {                                                                                                                  \
+        {a, b}, {c, d}, { e, f }                                                                                       \
+    }
+#define R4(a, b, c, d, e, f, g, h)                                                                                     \
+    4,                                                                                                                 \
+    {                                                                                                                  \
+        {a, b}, {c, d}, {e, f}, { g, h }                                                                               \
+    }
 
 /* Each on top of the order's first golden vector (a valid command). */
 static const range_case range_cases[] = {
@@ -679,8 +734,8 @@ static void expect_feedback(uint8_t order, const uint8_t *fb, size_t len, uint8_
         f.failed_cameras != failed) {
         print_error("order 0x%02X, %zu byte(s) %02X: got has_state %u state %02X result %u failed %02X; "
                     "expected has_state %u result %u failed %02X\n",
-                    order, len, len ? fb[0] : 0, f.has_state, f.state, f.result, f.failed_cameras, has_state,
-                    result, failed);
+                    order, len, len ? fb[0] : 0, f.has_state, f.state, f.result, f.failed_cameras, has_state, result,
+                    failed);
         fail();
     }
 }
@@ -791,18 +846,12 @@ static void test_feedback_state_inverse(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_order_table_matches_spec),
-        cmocka_unit_test(test_order_names),
-        cmocka_unit_test(test_command_init_defaults),
-        cmocka_unit_test(test_golden_every_order),
-        cmocka_unit_test(test_unused_members_ignored),
-        cmocka_unit_test(test_range_rules),
-        cmocka_unit_test(test_version_aware_decode),
-        cmocka_unit_test(test_command_errors),
-        cmocka_unit_test(test_field_accessors),
-        cmocka_unit_test(test_feedback_every_order),
-        cmocka_unit_test(test_feedback_from_packet),
-        cmocka_unit_test(test_feedback_state_inverse),
+        cmocka_unit_test(test_order_table_matches_spec), cmocka_unit_test(test_order_names),
+        cmocka_unit_test(test_command_init_defaults),    cmocka_unit_test(test_golden_every_order),
+        cmocka_unit_test(test_unused_members_ignored),   cmocka_unit_test(test_range_rules),
+        cmocka_unit_test(test_version_aware_decode),     cmocka_unit_test(test_command_errors),
+        cmocka_unit_test(test_field_accessors),          cmocka_unit_test(test_feedback_every_order),
+        cmocka_unit_test(test_feedback_from_packet),     cmocka_unit_test(test_feedback_state_inverse),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

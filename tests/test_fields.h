@@ -20,22 +20,30 @@ typedef enum field_kind { FK_U8, FK_S8, FK_U16, FK_S16, FK_U32, FK_S32, FK_BYTES
 
 typedef struct field_desc {
     const char *name;
-    size_t member_off;   /* offsetof in the packet struct */
-    size_t member_size;  /* sizeof the member */
-    int member_kind;     /* field_kind of the member's C type (from _Generic) */
-    size_t wire_off;     /* byte offset in the packet, from the spec */
-    field_kind kind;     /* type the spec gives the field */
-    size_t nbytes;       /* bytes on the wire, from the spec */
+    size_t member_off;  /* offsetof in the packet struct */
+    size_t member_size; /* sizeof the member */
+    int member_kind;    /* field_kind of the member's C type (from _Generic) */
+    size_t wire_off;    /* byte offset in the packet, from the spec */
+    field_kind kind;    /* type the spec gives the field */
+    size_t nbytes;      /* bytes on the wire, from the spec */
 } field_desc;
 
 /* The C type of a member, as a field_kind (arrays decay to pointers: FK_BYTES). */
-#define KIND_OF(x)                                                                               \
-    _Generic((x), uint8_t: FK_U8, int8_t: FK_S8, uint16_t: FK_U16, int16_t: FK_S16,             \
-             uint32_t: FK_U32, int32_t: FK_S32, default: FK_BYTES)
+#define KIND_OF(x)                                                                                                     \
+    _Generic((x), uint8_t                                                                                              \
+             : FK_U8, int8_t                                                                                           \
+             : FK_S8, uint16_t                                                                                         \
+             : FK_U16, int16_t                                                                                         \
+             : FK_S16, uint32_t                                                                                        \
+             : FK_U32, int32_t                                                                                         \
+             : FK_S32, default                                                                                         \
+             : FK_BYTES)
 
-#define FD(type, member, wire, kind, n)                                                          \
-    { #member, offsetof(type, member), sizeof(((type *)0)->member), KIND_OF(((type *)0)->member), \
-      (wire), (kind), (n) }
+#define FD(type, member, wire, kind, n)                                                                                \
+    {                                                                                                                  \
+#member, offsetof(type, member), sizeof(((type *)0)->member), KIND_OF(((type *)0)->member), (wire), (kind),    \
+            (n)                                                                                                        \
+    }
 
 /* spec §2, §3, §4 */
 static const field_desc host_fields[] = {
@@ -110,12 +118,36 @@ static inline void field_store_wire(void *pkt, const field_desc *f, const uint8_
 {
     uint8_t *m = (uint8_t *)pkt + f->member_off;
     switch (f->kind) {
-    case FK_U8: { uint8_t v = wire[0]; memcpy(m, &v, 1); break; }
-    case FK_S8: { int8_t v = (int8_t)le_get_signed(wire, 1); memcpy(m, &v, 1); break; }
-    case FK_U16: { uint16_t v = (uint16_t)le_get(wire, 2); memcpy(m, &v, 2); break; }
-    case FK_S16: { int16_t v = (int16_t)le_get_signed(wire, 2); memcpy(m, &v, 2); break; }
-    case FK_U32: { uint32_t v = (uint32_t)le_get(wire, 4); memcpy(m, &v, 4); break; }
-    case FK_S32: { int32_t v = (int32_t)le_get_signed(wire, 4); memcpy(m, &v, 4); break; }
+    case FK_U8: {
+        uint8_t v = wire[0];
+        memcpy(m, &v, 1);
+        break;
+    }
+    case FK_S8: {
+        int8_t v = (int8_t)le_get_signed(wire, 1);
+        memcpy(m, &v, 1);
+        break;
+    }
+    case FK_U16: {
+        uint16_t v = (uint16_t)le_get(wire, 2);
+        memcpy(m, &v, 2);
+        break;
+    }
+    case FK_S16: {
+        int16_t v = (int16_t)le_get_signed(wire, 2);
+        memcpy(m, &v, 2);
+        break;
+    }
+    case FK_U32: {
+        uint32_t v = (uint32_t)le_get(wire, 4);
+        memcpy(m, &v, 4);
+        break;
+    }
+    case FK_S32: {
+        int32_t v = (int32_t)le_get_signed(wire, 4);
+        memcpy(m, &v, 4);
+        break;
+    }
     default: memcpy(m, wire, f->nbytes); break;
     }
 }
@@ -126,12 +158,36 @@ static inline int64_t field_value(const void *pkt, const field_desc *f)
 {
     const uint8_t *m = (const uint8_t *)pkt + f->member_off;
     switch (f->kind) {
-    case FK_U8: { uint8_t v; memcpy(&v, m, 1); return v; }
-    case FK_S8: { int8_t v; memcpy(&v, m, 1); return v; }
-    case FK_U16: { uint16_t v; memcpy(&v, m, 2); return v; }
-    case FK_S16: { int16_t v; memcpy(&v, m, 2); return v; }
-    case FK_U32: { uint32_t v; memcpy(&v, m, 4); return v; }
-    case FK_S32: { int32_t v; memcpy(&v, m, 4); return v; }
+    case FK_U8: {
+        uint8_t v;
+        memcpy(&v, m, 1);
+        return v;
+    }
+    case FK_S8: {
+        int8_t v;
+        memcpy(&v, m, 1);
+        return v;
+    }
+    case FK_U16: {
+        uint16_t v;
+        memcpy(&v, m, 2);
+        return v;
+    }
+    case FK_S16: {
+        int16_t v;
+        memcpy(&v, m, 2);
+        return v;
+    }
+    case FK_U32: {
+        uint32_t v;
+        memcpy(&v, m, 4);
+        return v;
+    }
+    case FK_S32: {
+        int32_t v;
+        memcpy(&v, m, 4);
+        return v;
+    }
     default: return (int64_t)le_get(m, f->nbytes < 8u ? f->nbytes : 8u);
     }
 }
@@ -182,11 +238,11 @@ static inline void test_pkt_equal(const void *got, const void *want, const field
     test_bytes_equal(got_params, want_params, want_plen, file, line);
 }
 
-#define assert_host_pkt_equal(got, want)                                                         \
-    test_pkt_equal((got), (want), host_fields, ARRAY_LEN(host_fields), (got)->params_len,        \
-                   (got)->params, (want)->params_len, (want)->params, __FILE__, __LINE__)
-#define assert_gcu_pkt_equal(got, want)                                                          \
-    test_pkt_equal((got), (want), gcu_fields, ARRAY_LEN(gcu_fields), (got)->params_len,          \
-                   (got)->params, (want)->params_len, (want)->params, __FILE__, __LINE__)
+#define assert_host_pkt_equal(got, want)                                                                               \
+    test_pkt_equal((got), (want), host_fields, ARRAY_LEN(host_fields), (got)->params_len, (got)->params,               \
+                   (want)->params_len, (want)->params, __FILE__, __LINE__)
+#define assert_gcu_pkt_equal(got, want)                                                                                \
+    test_pkt_equal((got), (want), gcu_fields, ARRAY_LEN(gcu_fields), (got)->params_len, (got)->params,                 \
+                   (want)->params_len, (want)->params, __FILE__, __LINE__)
 
 #endif /* XFGCU_TEST_FIELDS_H */

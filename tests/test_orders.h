@@ -19,15 +19,21 @@ typedef struct order_spec {
     uint8_t mask_failure;    /* failure feedback is NN, the failed-camera mask */
     uint8_t operating;       /* may answer 0x02 "operating" (calibration) */
     uint8_t nlayout;
-    xf_field layout[6];      /* parameters in wire order */
+    xf_field layout[6]; /* parameters in wire order */
 } order_spec;
 
-#define L0() 0, { XF_F_CAMERAS }
-#define L1(a) 1, { a }
-#define L2(a, b) 2, { a, b }
-#define L3(a, b, c) 3, { a, b, c }
-#define L4(a, b, c, d) 4, { a, b, c, d }
-#define L6(a, b, c, d, e, f) 6, { a, b, c, d, e, f }
+#define L0()                                                                                                           \
+    0, { XF_F_CAMERAS }
+#define L1(a)                                                                                                          \
+    1, { a }
+#define L2(a, b)                                                                                                       \
+    2, { a, b }
+#define L3(a, b, c)                                                                                                    \
+    3, { a, b, c }
+#define L4(a, b, c, d)                                                                                                 \
+    4, { a, b, c, d }
+#define L6(a, b, c, d, e, f)                                                                                           \
+    6, { a, b, c, d, e, f }
 
 static const order_spec order_specs[] = {
     /* §7, protocol V0.1 */
@@ -72,8 +78,8 @@ static const order_spec order_specs[] = {
 
 #define ALL_FIELDS_COUNT 15
 static const xf_field all_fields[ALL_FIELDS_COUNT] = {
-    XF_F_CAMERAS, XF_F_VALUE, XF_F_HOURS, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, XF_F_DX,
-    XF_F_DY, XF_F_ZOOM, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE,
+    XF_F_CAMERAS, XF_F_VALUE, XF_F_HOURS,     XF_F_X0,       XF_F_Y0,        XF_F_X1,       XF_F_Y1,       XF_F_DX,
+    XF_F_DY,      XF_F_ZOOM,  XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE,
 };
 
 static inline const order_spec *order_spec_find(uint8_t order)
@@ -161,8 +167,8 @@ static inline void cmd_put(xf_command *c, xf_field f, int32_t v)
 static inline const char *spec_field_name(xf_field f)
 {
     static const char *const names[ALL_FIELDS_COUNT] = {
-        "cameras", "value", "hours", "x0", "y0", "x1", "y1", "dx",
-        "dy", "zoom", "temp_high", "temp_low", "longitude", "latitude", "altitude",
+        "cameras", "value", "hours",     "x0",       "y0",        "x1",       "y1",       "dx",
+        "dy",      "zoom",  "temp_high", "temp_low", "longitude", "latitude", "altitude",
     };
     return ((unsigned)f < ALL_FIELDS_COUNT) ? names[f] : "?";
 }
@@ -202,51 +208,75 @@ static inline unsigned ref_bad_fields(const xf_command *c, uint8_t version)
     switch (c->order) {
     case 0x17: /* track */
     case 0x30: /* area_temp */
-        if (c->value > 1) bad |= BAD(XF_F_VALUE);
-        if (c->x0 > 10000) bad |= BAD(XF_F_X0);
-        if (c->y0 > 10000) bad |= BAD(XF_F_Y0);
-        if (c->x1 > 10000 || c->x1 < c->x0) bad |= BAD(XF_F_X1);
-        if (c->y1 > 10000 || c->y1 < c->y0) bad |= BAD(XF_F_Y1);
+        if (c->value > 1)
+            bad |= BAD(XF_F_VALUE);
+        if (c->x0 > 10000)
+            bad |= BAD(XF_F_X0);
+        if (c->y0 > 10000)
+            bad |= BAD(XF_F_Y0);
+        if (c->x1 > 10000 || c->x1 < c->x0)
+            bad |= BAD(XF_F_X1);
+        if (c->y1 > 10000 || c->y1 < c->y0)
+            bad |= BAD(XF_F_Y1);
         break;
     case 0x33: /* spot_temp */
-        if (c->value > 1) bad |= BAD(XF_F_VALUE);
+        if (c->value > 1)
+            bad |= BAD(XF_F_VALUE);
         /* fall through */
     case 0x1A: /* click_to_aim */
-        if (c->x0 > 10000) bad |= BAD(XF_F_X0);
-        if (c->y0 > 10000) bad |= BAD(XF_F_Y0);
+        if (c->x0 > 10000)
+            bad |= BAD(XF_F_X0);
+        if (c->y0 > 10000)
+            bad |= BAD(XF_F_Y0);
         break;
     case 0x1B: /* external_track: [-1024, 1024], or both >= 3071 = lost */
-        if (c->value != 0 && c->value != 2) bad |= BAD(XF_F_VALUE);
+        if (c->value != 0 && c->value != 2)
+            bad |= BAD(XF_F_VALUE);
         if (!(c->dx >= 3071 && c->dy >= 3071)) {
-            if (c->dx < -1024 || c->dx > 1024) bad |= BAD(XF_F_DX);
-            if (c->dy < -1024 || c->dy > 1024) bad |= BAD(XF_F_DY);
+            if (c->dx < -1024 || c->dx > 1024)
+                bad |= BAD(XF_F_DX);
+            if (c->dy < -1024 || c->dy > 1024)
+                bad |= BAD(XF_F_DY);
         }
         break;
     case 0x25: /* zoom_to: [-32768, -10] or [1, 10000] */
-        if (!(c->zoom <= -10 || (c->zoom >= 1 && c->zoom <= 10000))) bad |= BAD(XF_F_ZOOM);
+        if (!(c->zoom <= -10 || (c->zoom >= 1 && c->zoom <= 10000)))
+            bad |= BAD(XF_F_ZOOM);
         break;
     case 0x2A: /* palette: [0, 100] in V0.1, [0, 10] in V0.2 */
-        if (c->value > (v2 ? 10 : 100)) bad |= BAD(XF_F_VALUE);
+        if (c->value > (v2 ? 10 : 100))
+            bad |= BAD(XF_F_VALUE);
         break;
     case 0x74: /* pip: 0 in V0.1, [0, 4] in V0.2 */
-        if (c->value > (v2 ? 4 : 0)) bad |= BAD(XF_F_VALUE);
+        if (c->value > (v2 ? 4 : 0))
+            bad |= BAD(XF_F_VALUE);
         break;
     case 0x2B: /* night_vision: 0 off, 1 on, 2 auto */
-        if (c->value > 2) bad |= BAD(XF_F_VALUE);
+        if (c->value > 2)
+            bad |= BAD(XF_F_VALUE);
         break;
     case 0x81: /* ranging: 0 off, 2 on */
-        if (c->value != 0 && c->value != 2) bad |= BAD(XF_F_VALUE);
+        if (c->value != 0 && c->value != 2)
+            bad |= BAD(XF_F_VALUE);
         break;
-    case 0x73: case 0x06: case 0x07: case 0x75: case 0x76: /* on/off, show/hide */
-        if (c->value > 1) bad |= BAD(XF_F_VALUE);
+    case 0x73:
+    case 0x06:
+    case 0x07:
+    case 0x75:
+    case 0x76: /* on/off, show/hide */
+        if (c->value > 1)
+            bad |= BAD(XF_F_VALUE);
         break;
     case 0x08: /* time_zone */
-        if (c->hours < -12 || c->hours > 14) bad |= BAD(XF_F_HOURS);
+        if (c->hours < -12 || c->hours > 14)
+            bad |= BAD(XF_F_HOURS);
         break;
     case 0x31: /* temp_alarm */
     case 0x32: /* isotherm */
-        if (c->value > 1) bad |= BAD(XF_F_VALUE);
-        else if (c->value == 1 && c->temp_high < c->temp_low) bad |= BAD(XF_F_TEMP_HIGH) | BAD(XF_F_TEMP_LOW);
+        if (c->value > 1)
+            bad |= BAD(XF_F_VALUE);
+        else if (c->value == 1 && c->temp_high < c->temp_low)
+            bad |= BAD(XF_F_TEMP_HIGH) | BAD(XF_F_TEMP_LOW);
         break;
     default: break; /* lighting: any level; the rest take no checked value */
     }

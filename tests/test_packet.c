@@ -166,8 +166,8 @@ static void unpack_each_field(xf_direction dir)
                     }
                     if (gi == fi && f->kind != FK_BYTES) {
                         /* the numeric value, signedness from the spec */
-                        int64_t want = kind_is_signed(f->kind) ? le_get_signed(pat, f->nbytes)
-                                                              : (int64_t)le_get(pat, f->nbytes);
+                        int64_t want =
+                            kind_is_signed(f->kind) ? le_get_signed(pat, f->nbytes) : (int64_t)le_get(pat, f->nbytes);
                         assert_sint_equal(field_value(pkt, f), want);
                     }
                 }
@@ -624,9 +624,9 @@ static void test_unpack_errors(void **state)
 static void test_strerror_distinct(void **state)
 {
     static const int codes[] = {
-        XF_OK, XF_WARN_RATE, XF_ERR_ARG, XF_ERR_NO_SPACE, XF_ERR_RANGE, XF_ERR_UNSUPPORTED, XF_ERR_HEADER,
-        XF_ERR_LENGTH, XF_ERR_CRC, XF_ERR_TRUNCATED, XF_ERR_PARAMS, XF_ERR_IO, XF_ERR_TIMEOUT,
-        XF_ERR_CLOSED, XF_ERR_NOT_FOUND, XF_ERR_PERMISSION, XF_ERR_BUSY, XF_ERR_AGAIN,
+        XF_OK,          XF_WARN_RATE,  XF_ERR_ARG,       XF_ERR_NO_SPACE,   XF_ERR_RANGE,  XF_ERR_UNSUPPORTED,
+        XF_ERR_HEADER,  XF_ERR_LENGTH, XF_ERR_CRC,       XF_ERR_TRUNCATED,  XF_ERR_PARAMS, XF_ERR_IO,
+        XF_ERR_TIMEOUT, XF_ERR_CLOSED, XF_ERR_NOT_FOUND, XF_ERR_PERMISSION, XF_ERR_BUSY,   XF_ERR_AGAIN,
     };
     const char *unknown = xf_strerror(-999);
     size_t i, k;
@@ -654,11 +654,11 @@ static void test_gimbal_model_names(void **state)
         uint8_t code;
         const char *name;
     } models[] = {
-        {0, "Z-6A"}, {2, "Z-6C"}, {3, "M-2400G2"}, {21, "Z-8TA"}, {22, "Z-8TB"}, {24, "Z-8RA"},
-        {25, "Z-8RB"}, {26, "Z-8RC"}, {27, "Z-8LA"}, {30, "Z-9A"}, {40, "D-80AI"}, {41, "D-90AI"},
-        {44, "D-80Pro"}, {45, "D-90Pro(TA)"}, {49, "Z-1Pro"}, {50, "Z-1Mini"}, {52, "Z-2Mini"},
-        {53, "D-125AI(T)"}, {55, "D-90DE"}, {57, "D-125AI(V)"}, {58, "Z-9B_V4(T)"},
-        {59, "Z-9B_V4(V)"}, {60, "D-90Pro(VA)"}, {61, "D-90Pro(T)"}, {62, "D-90Pro(V)"},
+        {0, "Z-6A"},        {2, "Z-6C"},        {3, "M-2400G2"},     {21, "Z-8TA"},       {22, "Z-8TB"},
+        {24, "Z-8RA"},      {25, "Z-8RB"},      {26, "Z-8RC"},       {27, "Z-8LA"},       {30, "Z-9A"},
+        {40, "D-80AI"},     {41, "D-90AI"},     {44, "D-80Pro"},     {45, "D-90Pro(TA)"}, {49, "Z-1Pro"},
+        {50, "Z-1Mini"},    {52, "Z-2Mini"},    {53, "D-125AI(T)"},  {55, "D-90DE"},      {57, "D-125AI(V)"},
+        {58, "Z-9B_V4(T)"}, {59, "Z-9B_V4(V)"}, {60, "D-90Pro(VA)"}, {61, "D-90Pro(T)"},  {62, "D-90Pro(V)"},
     };
     unsigned c;
     size_t i;
@@ -706,22 +706,14 @@ static void test_mode_names(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_struct_types_match_spec),
-        cmocka_unit_test(test_host_pack_each_field),
-        cmocka_unit_test(test_gcu_pack_each_field),
-        cmocka_unit_test(test_host_unpack_each_field),
-        cmocka_unit_test(test_gcu_unpack_each_field),
-        cmocka_unit_test(test_named_fields_by_hand),
-        cmocka_unit_test(test_params_placement),
-        cmocka_unit_test(test_max_length_packet),
-        cmocka_unit_test(test_appendix1_unpack),
-        cmocka_unit_test(test_appendix1_pack),
-        cmocka_unit_test(test_host_packet_init),
-        cmocka_unit_test(test_pack_errors),
-        cmocka_unit_test(test_unpack_errors),
-        cmocka_unit_test(test_strerror_distinct),
-        cmocka_unit_test(test_gimbal_model_names),
-        cmocka_unit_test(test_mode_names),
+        cmocka_unit_test(test_struct_types_match_spec), cmocka_unit_test(test_host_pack_each_field),
+        cmocka_unit_test(test_gcu_pack_each_field),     cmocka_unit_test(test_host_unpack_each_field),
+        cmocka_unit_test(test_gcu_unpack_each_field),   cmocka_unit_test(test_named_fields_by_hand),
+        cmocka_unit_test(test_params_placement),        cmocka_unit_test(test_max_length_packet),
+        cmocka_unit_test(test_appendix1_unpack),        cmocka_unit_test(test_appendix1_pack),
+        cmocka_unit_test(test_host_packet_init),        cmocka_unit_test(test_pack_errors),
+        cmocka_unit_test(test_unpack_errors),           cmocka_unit_test(test_strerror_distinct),
+        cmocka_unit_test(test_gimbal_model_names),      cmocka_unit_test(test_mode_names),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -22,7 +22,7 @@
 /* ---- harness: feed, collect, check the counters after every call -------- */
 
 #define MAX_FRAMES 40000
-#define MAX_OUT (4u << 20)
+#define MAX_OUT    (4u << 20)
 
 typedef struct harness {
     xf_parser p;
@@ -199,9 +199,20 @@ static void put_junk(stream *s, test_rng *r, xf_direction dir)
     case 1: /* stray header bytes */
         switch (rng_below(r, 4)) {
         case 0: put1(s, h0); break;
-        case 1: put1(s, h0); put1(s, h1); break;
-        case 2: put1(s, h0); put1(s, h0); put1(s, h1); put1(s, 0x48); break;
-        default: put1(s, h1); put1(s, h0); break;
+        case 1:
+            put1(s, h0);
+            put1(s, h1);
+            break;
+        case 2:
+            put1(s, h0);
+            put1(s, h0);
+            put1(s, h1);
+            put1(s, 0x48);
+            break;
+        default:
+            put1(s, h1);
+            put1(s, h0);
+            break;
         }
         break;
     case 2: /* a header with a length below 72 */
@@ -372,9 +383,7 @@ static size_t run_stream(uint64_t seed, xf_direction dir, size_t frames, feed_mo
 
     harness_init(&h, dir);
     switch (mode) {
-    case FEED_WHOLE:
-        harness_feed(&h, s.buf, s.len);
-        break;
+    case FEED_WHOLE: harness_feed(&h, s.buf, s.len); break;
     case FEED_BYTES:
         for (i = 0; i < s.len; i++) {
             harness_feed(&h, s.buf + i, 1);
@@ -548,7 +557,13 @@ static void test_bad_lengths_do_not_delay(void **state)
     static const struct {
         uint16_t len;
         uint32_t errors;
-    } cases[] = {{0, 1}, {1, 1}, {71, 1}, {256, 1}, {0x0100, 1}, {0x1000, 1}, {0xFFFF, 1},
+    } cases[] = {{0, 1},
+                 {1, 1},
+                 {71, 1},
+                 {256, 1},
+                 {0x0100, 1},
+                 {0x1000, 1},
+                 {0xFFFF, 1},
                  /* 8A 5E 8A 5E: the length bytes are the next header: two length errors */
                  {0x5E8A, 2}};
     test_rng r;

@@ -16,7 +16,7 @@
 #include "test_fields.h"
 #include "test_orders.h"
 
-#define PACKET_ROUNDS 3000
+#define PACKET_ROUNDS            3000
 #define COMMAND_ROUNDS_PER_ORDER 1500
 
 /* Random member values: random wire bytes stored through the spec's type,
@@ -134,10 +134,13 @@ static int32_t random_member(test_rng *r, xf_field f)
     case XF_F_X0:
     case XF_F_Y0:
     case XF_F_X1:
-    case XF_F_Y1: return (k < 6) ? rng_range(r, 0, 10000) : (k < 7) ? rng_range(r, 9995, 10005) : rng_range(r, 0, 65535);
+    case XF_F_Y1:
+        return (k < 6) ? rng_range(r, 0, 10000) : (k < 7) ? rng_range(r, 9995, 10005) : rng_range(r, 0, 65535);
     case XF_F_DX:
-    case XF_F_DY: return (k < 4) ? rng_range(r, -1030, 1030) : (k < 6) ? rng_range(r, 3065, 32767) : rng_range(r, -32768, 32767);
-    case XF_F_ZOOM: return (k < 3) ? rng_range(r, -15, 5) : (k < 4) ? rng_range(r, 9995, 10005) : rng_range(r, -32768, 32767);
+    case XF_F_DY:
+        return (k < 4) ? rng_range(r, -1030, 1030) : (k < 6) ? rng_range(r, 3065, 32767) : rng_range(r, -32768, 32767);
+    case XF_F_ZOOM:
+        return (k < 3) ? rng_range(r, -15, 5) : (k < 4) ? rng_range(r, 9995, 10005) : rng_range(r, -32768, 32767);
     case XF_F_TEMP_HIGH:
     case XF_F_TEMP_LOW: return (k < 4) ? rng_range(r, -50, 50) : rng_range(r, -32768, 32767);
     default: return (int32_t)rng_u32(r); /* geo-coordinates: any S32 */
@@ -185,7 +188,8 @@ static void test_random_commands(void **state)
                 size_t j;
                 int named = 0;
                 if (err != XF_ERR_RANGE) {
-                    print_error("order %s V%u accepted an invalid command (ref mask 0x%X)\n", s->name, version, ref_bad);
+                    print_error("order %s V%u accepted an invalid command (ref mask 0x%X)\n", s->name, version,
+                                ref_bad);
                     fail();
                 }
                 for (j = 0; j < ALL_FIELDS_COUNT; j++) {
@@ -194,7 +198,8 @@ static void test_random_commands(void **state)
                     }
                 }
                 if (!named) {
-                    print_error("order %s: bad_field \"%s\" is not one of the bad members (0x%X)\n", s->name, bad, ref_bad);
+                    print_error("order %s: bad_field \"%s\" is not one of the bad members (0x%X)\n", s->name, bad,
+                                ref_bad);
                     fail();
                 }
                 assert_err(xf_command_encode(&c, version, out, sizeof(out), &n, &bad), XF_ERR_RANGE);

@@ -28,39 +28,38 @@
 
 /* cmocka's assert_int_equal prints through uintmax_t, so -1 shows as
  * 18446744073709551615; this one keeps the sign. */
-#define assert_sint_equal(a, b)                                                                  \
-    do {                                                                                         \
-        long long got_ = (long long)(a), want_ = (long long)(b);                                 \
-        if (got_ != want_) {                                                                     \
-            print_error("%s == %lld, expected %s == %lld\n", #a, got_, #b, want_);               \
-            fail();                                                                              \
-        }                                                                                        \
+#define assert_sint_equal(a, b)                                                                                        \
+    do {                                                                                                               \
+        long long got_ = (long long)(a), want_ = (long long)(b);                                                       \
+        if (got_ != want_) {                                                                                           \
+            print_error("%s == %lld, expected %s == %lld\n", #a, got_, #b, want_);                                     \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* An xf_err (or parser return) compared with its expected value, by name. */
-#define assert_err(expr, want)                                                                   \
-    do {                                                                                         \
-        int got_ = (int)(expr), want_ = (int)(want);                                             \
-        if (got_ != want_) {                                                                     \
-            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_,                  \
-                        xf_strerror(got_), want_, xf_strerror(want_));                          \
-            fail();                                                                              \
-        }                                                                                        \
+#define assert_err(expr, want)                                                                                         \
+    do {                                                                                                               \
+        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
+        if (got_ != want_) {                                                                                           \
+            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,              \
+                        xf_strerror(want_));                                                                           \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* |a - b| <= eps in double precision (cmocka's assert_float_equal works in
  * float); NaN never passes. */
-#define assert_near(a, b, eps)                                                                   \
-    do {                                                                                         \
-        double got_ = (double)(a), want_ = (double)(b), d_ = got_ - want_;                       \
-        if (d_ < 0.0) {                                                                          \
-            d_ = -d_;                                                                            \
-        }                                                                                        \
-        if (!(d_ <= (double)(eps))) {                                                            \
-            print_error("%s == %.9g, expected %s == %.9g (+- %g)\n", #a, got_, #b, want_,         \
-                        (double)(eps));                                                          \
-            fail();                                                                              \
-        }                                                                                        \
+#define assert_near(a, b, eps)                                                                                         \
+    do {                                                                                                               \
+        double got_ = (double)(a), want_ = (double)(b), d_ = got_ - want_;                                             \
+        if (d_ < 0.0) {                                                                                                \
+            d_ = -d_;                                                                                                  \
+        }                                                                                                              \
+        if (!(d_ <= (double)(eps))) {                                                                                  \
+            print_error("%s == %.9g, expected %s == %.9g (+- %g)\n", #a, got_, #b, want_, (double)(eps));              \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 static inline void test_hexdump(const char *what, const uint8_t *p, size_t n)
@@ -207,11 +206,10 @@ static inline void ref_finish_packet(uint8_t *buf, size_t len, xf_direction dir)
 
 /* The vendor's appendix-1 host packet, exactly as printed (spec §9.1). */
 static const uint8_t appendix1_packet[72] = {
-    0xA8, 0xE5, 0x48, 0x00, 0x01, 0x00, 0x00, 0x64, 0x00, 0x9C, 0xFF, 0x05, 0x94, 0xFB, 0x65, 0x00,
-    0xC0, 0x5D, 0x70, 0x00, 0x90, 0xFF, 0x70, 0x00, 0x40, 0x80, 0xC0, 0xF7, 0x40, 0x80, 0x01, 0x00,
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x24, 0xF2, 0xDF, 0x65, 0x16, 0xEE, 0xAA, 0x16, 0xA3, 0xA0,
-    0x00, 0x00, 0x13, 0xB0, 0x0C, 0x06, 0x15, 0xE6, 0x08, 0x58, 0x2F, 0x00, 0x00, 0x00, 0x00, 0x00,
-    0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xE9, 0xD4,
+    0xA8, 0xE5, 0x48, 0x00, 0x01, 0x00, 0x00, 0x64, 0x00, 0x9C, 0xFF, 0x05, 0x94, 0xFB, 0x65, 0x00, 0xC0, 0x5D,
+    0x70, 0x00, 0x90, 0xFF, 0x70, 0x00, 0x40, 0x80, 0xC0, 0xF7, 0x40, 0x80, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00,
+    0x00, 0x01, 0x24, 0xF2, 0xDF, 0x65, 0x16, 0xEE, 0xAA, 0x16, 0xA3, 0xA0, 0x00, 0x00, 0x13, 0xB0, 0x0C, 0x06,
+    0x15, 0xE6, 0x08, 0x58, 0x2F, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xE9, 0xD4,
 };
 
 #endif /* XFGCU_TEST_UTIL_H */

@@ -40,7 +40,7 @@ void xf_capture_chunk(void *writer, xf_direction dir, const uint8_t *data, size_
 
 /** One chunk read back. */
 typedef struct xf_capture_record {
-    uint32_t t_ms;         /**< from the start of the capture */
+    uint32_t t_ms; /**< from the start of the capture */
     xf_direction dir;
     size_t len;
     uint8_t data[XF_CAPTURE_MAX_CHUNK];

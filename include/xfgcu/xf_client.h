@@ -60,7 +60,8 @@ XF_BEGIN_DECLS
 
 /** Link health. */
 typedef enum xf_link_state {
-    XF_LINK_DOWN = 0,  /**< no valid reply for down_ms (or never), or the transport was closed and no valid reply came since */
+    XF_LINK_DOWN =
+        0, /**< no valid reply for down_ms (or never), or the transport was closed and no valid reply came since */
     XF_LINK_STALE = 1, /**< no valid reply for stale_ms */
     XF_LINK_UP = 2
 } xf_link_state;
@@ -91,16 +92,16 @@ typedef struct xf_cmd_result {
 
 /** The gimbal's state in physical units, with when each part last arrived. */
 typedef struct xf_telemetry {
-    uint8_t version;          /**< protocol version the GCU speaks */
-    uint8_t gimbal_mode;      /**< xf_mode */
-    uint16_t pod_status;      /**< XF_POD_* */
+    uint8_t version;     /**< protocol version the GCU speaks */
+    uint8_t gimbal_mode; /**< xf_mode */
+    uint16_t pod_status; /**< XF_POD_* */
     float cam_roll_deg, cam_pitch_deg, cam_yaw_deg;
     float rel_x_deg, rel_y_deg, rel_z_deg;
     float rate_x_dps, rate_y_dps, rate_z_dps; /**< unit picked by version */
     int16_t target_offset_x, target_offset_y; /**< [-1000, 1000] */
     /* sub frame */
     uint8_t hw_version, fw_version, gimbal_code;
-    const char *model;        /**< from gimbal_code, NULL if unknown */
+    const char *model; /**< from gimbal_code, NULL if unknown */
     uint16_t error_code;
     uint8_t distance_valid;
     float target_distance_m;
@@ -112,30 +113,30 @@ typedef struct xf_telemetry {
     int8_t time_zone;           /**< V0.2 */
     /* freshness: xf_client_step's clock; 0 with have_* clear means never */
     uint8_t have_main, have_sub;
-    uint32_t main_ms;           /**< when the main frame was last received */
-    uint32_t sub_ms;            /**< when a sub frame (sub_header 0x01) was last received */
-    xf_gcu_packet last;         /**< the last packet as received */
+    uint32_t main_ms;   /**< when the main frame was last received */
+    uint32_t sub_ms;    /**< when a sub frame (sub_header 0x01) was last received */
+    xf_gcu_packet last; /**< the last packet as received */
 } xf_telemetry;
 
 /** Link health figures. */
 typedef struct xf_health {
-    uint8_t link;             /**< xf_link_state */
-    uint8_t watchdog_active;  /**< zero rates are being sent because rates went stale */
-    uint32_t last_rx_ms;      /**< when the last valid reply arrived */
+    uint8_t link;            /**< xf_link_state */
+    uint8_t watchdog_active; /**< zero rates are being sent because rates went stale */
+    uint32_t last_rx_ms;     /**< when the last valid reply arrived */
     uint32_t packets_sent;
     uint32_t replies;         /**< valid GCU packets received */
     uint32_t replies_missing; /**< packets sent minus replies, over the last full second */
     uint16_t reply_rate_hz;   /**< replies in the last full second */
     uint32_t send_errors;     /**< HAL writes that failed */
     uint32_t watchdog_trips;
-    xf_parser_stats parser;   /**< the receive parser's counters */
+    xf_parser_stats parser; /**< the receive parser's counters */
 } xf_health;
 
 /** Carrier state; gravity excluded from the accelerations. */
 typedef struct xf_carrier {
-    float roll_deg, pitch_deg, yaw_deg;  /**< absolute Euler angles (vendor appendix 2 frame) */
+    float roll_deg, pitch_deg, yaw_deg;      /**< absolute Euler angles (vendor appendix 2 frame) */
     float accel_north, accel_east, accel_up; /**< m/s^2, 0 when static or in steady flight */
-    float vel_north, vel_east, vel_up;   /**< m/s */
+    float vel_north, vel_east, vel_up;       /**< m/s */
 } xf_carrier;
 
 /**
@@ -159,15 +160,15 @@ typedef void (*xf_on_link_fn)(void *user, xf_link_state state);
 typedef void (*xf_on_bytes_fn)(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
 
 typedef struct xf_client_config {
-    uint8_t protocol_version;        /**< sent in byte 4; default 1 */
-    uint16_t rate_hz;                /**< packets per second, 1..200; default 50 (30-50 recommended) */
-    uint32_t carrier_max_age_ms;     /**< default 200 */
-    uint32_t gnss_max_age_ms;        /**< default 2000 */
-    uint32_t stale_ms;               /**< default 250 */
-    uint32_t down_ms;                /**< default 1000 */
-    uint32_t command_timeout_ms;     /**< no execution state within this: timeout; default 1000 */
-    uint32_t operating_timeout_ms;   /**< after "operating", the final state within this; default 60000 */
-    uint32_t rate_watchdog_ms;       /**< default 500; 0 = off (not recommended) */
+    uint8_t protocol_version;      /**< sent in byte 4; default 1 */
+    uint16_t rate_hz;              /**< packets per second, 1..200; default 50 (30-50 recommended) */
+    uint32_t carrier_max_age_ms;   /**< default 200 */
+    uint32_t gnss_max_age_ms;      /**< default 2000 */
+    uint32_t stale_ms;             /**< default 250 */
+    uint32_t down_ms;              /**< default 1000 */
+    uint32_t command_timeout_ms;   /**< no execution state within this: timeout; default 1000 */
+    uint32_t operating_timeout_ms; /**< after "operating", the final state within this; default 60000 */
+    uint32_t rate_watchdog_ms;     /**< default 500; 0 = off (not recommended) */
     xf_on_result_fn on_result;
     xf_on_telemetry_fn on_telemetry;
     xf_on_link_fn on_link;
@@ -203,11 +204,11 @@ typedef struct xf_client {
     /* commands */
     xf_cmd_slot queue[XF_CLIENT_QUEUE];
     uint8_t q_head, q_count;
-    uint8_t active;           /* queue[q_head] is being sent */
-    uint8_t guard_order;      /* order of the last finished command (or of the stopped stream) */
-    uint8_t guard_open;       /* no reply of another order seen since: a command of guard_order waits */
+    uint8_t active;      /* queue[q_head] is being sent */
+    uint8_t guard_order; /* order of the last finished command (or of the stopped stream) */
+    uint8_t guard_open;  /* no reply of another order seen since: a command of guard_order waits */
     uint8_t operating;
-    uint8_t nulls_owed;       /* null packets to send before the next command */
+    uint8_t nulls_owed; /* null packets to send before the next command */
     uint16_t packets;
     uint32_t started_ms, operating_ms;
     uint32_t next_id;
@@ -250,7 +251,8 @@ void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
 /** Desired angular velocities (deg/s), scaled by the zoom the GCU reports. Subject to the watchdog. */
 void xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms);
-/** Desired angles (deg): Euler or relative to the carrier, as the mode says. Roll and yaw are wrapped into [-180, 180), pitch is clamped to [-180, 180]. */
+/** Desired angles (deg): Euler or relative to the carrier, as the mode says. Roll and yaw are wrapped into [-180, 180),
+ * pitch is clamped to [-180, 180]. */
 void xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms);
 /** No control quantities (ctrl_valid clear). */
 void xf_client_clear_control(xf_client *c);

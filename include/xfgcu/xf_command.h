@@ -54,20 +54,32 @@ typedef struct xf_command {
     int16_t temp_low;
     int32_t longitude; /**< gaze_geo, 1e-7 deg */
     int32_t latitude;
-    int32_t altitude;  /**< gaze_geo, mm */
+    int32_t altitude; /**< gaze_geo, mm */
 } xf_command;
 
 /** The members of xf_command, as items of an order's wire layout. */
 typedef enum xf_field {
-    XF_F_CAMERAS, XF_F_VALUE, XF_F_HOURS, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1,
-    XF_F_DX, XF_F_DY, XF_F_ZOOM, XF_F_TEMP_HIGH, XF_F_TEMP_LOW,
-    XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE
+    XF_F_CAMERAS,
+    XF_F_VALUE,
+    XF_F_HOURS,
+    XF_F_X0,
+    XF_F_Y0,
+    XF_F_X1,
+    XF_F_Y1,
+    XF_F_DX,
+    XF_F_DY,
+    XF_F_ZOOM,
+    XF_F_TEMP_HIGH,
+    XF_F_TEMP_LOW,
+    XF_F_LONGITUDE,
+    XF_F_LATITUDE,
+    XF_F_ALTITUDE
 } xf_field;
 
 #define XF_ORDER_MASK_FAILURE 0x01u /**< failure feedback is the mask of failed cameras (NN) */
-#define XF_ORDER_OPERATING 0x02u    /**< may answer 0x02 "operating" before its final state (calibration) */
-#define XF_ORDER_STREAMED 0x04u     /**< exempt from the once-rule: meant to be streamed (external_track) */
-#define XF_ORDER_SETS_MODE 0x08u    /**< switches the gimbal mode */
+#define XF_ORDER_OPERATING    0x02u /**< may answer 0x02 "operating" before its final state (calibration) */
+#define XF_ORDER_STREAMED     0x04u /**< exempt from the once-rule: meant to be streamed (external_track) */
+#define XF_ORDER_SETS_MODE    0x08u /**< switches the gimbal mode */
 
 /** One row of the order table. */
 typedef struct xf_order_info {
@@ -76,8 +88,8 @@ typedef struct xf_order_info {
     uint8_t flags;           /**< XF_ORDER_* */
     uint8_t default_cameras; /**< the spec's KK default, 0 when the order takes no mask */
     uint8_t nfields;
-    uint8_t fields[6];       /**< xf_field, in wire order */
-    const char *name;        /**< canonical name, e.g. "zoom_to" */
+    uint8_t fields[6]; /**< xf_field, in wire order */
+    const char *name;  /**< canonical name, e.g. "zoom_to" */
 } xf_order_info;
 
 /** The table row of @p order, or NULL for an order the protocol does not define. */
@@ -115,16 +127,16 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const cha
  * Encode @p cmd's parameters (checked first) into @p params.
  * @return as xf_command_check, plus XF_ERR_NO_SPACE.
  */
-XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap,
-                                size_t *out_len, const char **bad_field);
+XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap, size_t *out_len,
+                                const char **bad_field);
 
 /**
  * Decode the @p len parameter bytes of @p order into @p cmd and check them.
  * @return XF_OK, XF_ERR_ARG, XF_ERR_UNSUPPORTED (unknown order: use the raw
  *   bytes), XF_ERR_PARAMS (wrong length), XF_ERR_RANGE (*bad_field named).
  */
-XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version,
-                                xf_command *cmd, const char **bad_field);
+XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version, xf_command *cmd,
+                                const char **bad_field);
 
 /** Put @p cmd into a host packet (order and params) using the packet's version. */
 XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, const char **bad_field);
@@ -168,6 +180,8 @@ XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed
 static inline const xf_order_info *xf__order_table(void)
 {
     /* Sorted by order; 26 orders of V0.1 and 10 of V0.2. */
+    /* One row per order, read like the spec's table. */
+    /* clang-format off */
     static const xf_order_info table[XF_ORDER_COUNT] = {
         XF__ROW(XF_ORDER_NULL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "null"),
         XF__ROW(XF_ORDER_CALIBRATION, 1, XF_ORDER_OPERATING, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "calibration"),
@@ -206,13 +220,11 @@ static inline const xf_order_info *xf__order_table(void)
         XF__ROW(XF_ORDER_LIGHTING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "lighting"),
         XF__ROW(XF_ORDER_RANGING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "ranging"),
     };
+    /* clang-format on */
     return table;
 }
 
-XF_API const xf_order_info *xf_order_at(size_t i)
-{
-    return (i < XF_ORDER_COUNT) ? &xf__order_table()[i] : NULL;
-}
+XF_API const xf_order_info *xf_order_at(size_t i) { return (i < XF_ORDER_COUNT) ? &xf__order_table()[i] : NULL; }
 
 XF_API const xf_order_info *xf_order_lookup(uint8_t order)
 {
@@ -396,12 +408,17 @@ static inline xf_err xf__bad(const char **bad_field, xf_field f)
 
 static inline xf_err xf__check_box(const xf_command *c, int point_only, const char **bad)
 {
-    if (c->x0 > XF_GRID_MAX) return xf__bad(bad, XF_F_X0);
-    if (c->y0 > XF_GRID_MAX) return xf__bad(bad, XF_F_Y0);
-    if (point_only) return XF_OK;
+    if (c->x0 > XF_GRID_MAX)
+        return xf__bad(bad, XF_F_X0);
+    if (c->y0 > XF_GRID_MAX)
+        return xf__bad(bad, XF_F_Y0);
+    if (point_only)
+        return XF_OK;
     /* Corners are top-left then bottom-right; an exit/off box may be all zero. */
-    if (c->x1 > XF_GRID_MAX || c->x1 < c->x0) return xf__bad(bad, XF_F_X1);
-    if (c->y1 > XF_GRID_MAX || c->y1 < c->y0) return xf__bad(bad, XF_F_Y1);
+    if (c->x1 > XF_GRID_MAX || c->x1 < c->x0)
+        return xf__bad(bad, XF_F_X1);
+    if (c->y1 > XF_GRID_MAX || c->y1 < c->y0)
+        return xf__bad(bad, XF_F_Y1);
     return XF_OK;
 }
 
@@ -416,38 +433,44 @@ static inline xf_err xf__command_check(const xf_command *c, uint8_t version, con
     xf_err e;
     switch (c->order) {
     case XF_ORDER_TRACK:
-        if (c->value > 1u) return xf__bad(bad, XF_F_VALUE);
+        if (c->value > 1u)
+            return xf__bad(bad, XF_F_VALUE);
         return xf__check_box(c, 0, bad);
     case XF_ORDER_AREA_TEMP:
-        if (c->value > 1u) return xf__bad(bad, XF_F_VALUE);
+        if (c->value > 1u)
+            return xf__bad(bad, XF_F_VALUE);
         return xf__check_box(c, 0, bad);
-    case XF_ORDER_CLICK_TO_AIM:
-        return xf__check_box(c, 1, bad);
+    case XF_ORDER_CLICK_TO_AIM: return xf__check_box(c, 1, bad);
     case XF_ORDER_SPOT_TEMP:
-        if (c->value > 1u) return xf__bad(bad, XF_F_VALUE);
+        if (c->value > 1u)
+            return xf__bad(bad, XF_F_VALUE);
         return xf__check_box(c, 1, bad);
     case XF_ORDER_EXTERNAL_TRACK:
-        if (c->value != 0u && c->value != 2u) return xf__bad(bad, XF_F_VALUE);
-        if (c->dx >= XF_EXT_TRACK_LOST && c->dy >= XF_EXT_TRACK_LOST) return XF_OK; /* "lost" marker */
-        if (c->dx < -XF_EXT_TRACK_MAX || c->dx > XF_EXT_TRACK_MAX) return xf__bad(bad, XF_F_DX);
-        if (c->dy < -XF_EXT_TRACK_MAX || c->dy > XF_EXT_TRACK_MAX) return xf__bad(bad, XF_F_DY);
+        if (c->value != 0u && c->value != 2u)
+            return xf__bad(bad, XF_F_VALUE);
+        if (c->dx >= XF_EXT_TRACK_LOST && c->dy >= XF_EXT_TRACK_LOST)
+            return XF_OK; /* "lost" marker */
+        if (c->dx < -XF_EXT_TRACK_MAX || c->dx > XF_EXT_TRACK_MAX)
+            return xf__bad(bad, XF_F_DX);
+        if (c->dy < -XF_EXT_TRACK_MAX || c->dy > XF_EXT_TRACK_MAX)
+            return xf__bad(bad, XF_F_DY);
         return XF_OK;
     case XF_ORDER_ZOOM_TO:
-        if (c->zoom > -10 && c->zoom < 1) return xf__bad(bad, XF_F_ZOOM);
-        if (c->zoom > 10000) return xf__bad(bad, XF_F_ZOOM);
+        if (c->zoom > -10 && c->zoom < 1)
+            return xf__bad(bad, XF_F_ZOOM);
+        if (c->zoom > 10000)
+            return xf__bad(bad, XF_F_ZOOM);
         return XF_OK;
     case XF_ORDER_PALETTE: return xf__check_value_max(c, (version >= XF_PROTOCOL_V2) ? 10u : 100u, bad);
     case XF_ORDER_PIP: return xf__check_value_max(c, (version >= XF_PROTOCOL_V2) ? 4u : 0u, bad);
     case XF_ORDER_NIGHT_VISION: return xf__check_value_max(c, 2u, bad);
-    case XF_ORDER_RANGING:
-        return (c->value != 0u && c->value != 2u) ? xf__bad(bad, XF_F_VALUE) : XF_OK;
+    case XF_ORDER_RANGING: return (c->value != 0u && c->value != 2u) ? xf__bad(bad, XF_F_VALUE) : XF_OK;
     case XF_ORDER_OSD:
     case XF_ORDER_OSD_COORDINATE:
     case XF_ORDER_AUTO_FLIP:
     case XF_ORDER_TARGET_DETECTION:
     case XF_ORDER_DIGITAL_ZOOM: return xf__check_value_max(c, 1u, bad);
-    case XF_ORDER_TIME_ZONE:
-        return (c->hours < -12 || c->hours > 14) ? xf__bad(bad, XF_F_HOURS) : XF_OK;
+    case XF_ORDER_TIME_ZONE: return (c->hours < -12 || c->hours > 14) ? xf__bad(bad, XF_F_HOURS) : XF_OK;
     case XF_ORDER_TEMP_ALARM:
     case XF_ORDER_ISOTHERM:
         e = xf__check_value_max(c, 1u, bad);
@@ -478,8 +501,8 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const cha
     return xf__command_check(cmd, version, bad_field);
 }
 
-XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap,
-                                size_t *out_len, const char **bad_field)
+XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap, size_t *out_len,
+                                const char **bad_field)
 {
     const xf_order_info *info;
     size_t i, n, off = 0;
@@ -515,8 +538,8 @@ XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t 
     return XF_OK;
 }
 
-XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version,
-                                xf_command *cmd, const char **bad_field)
+XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version, xf_command *cmd,
+                                const char **bad_field)
 {
     const xf_order_info *info = xf_order_lookup(order);
     xf_command tmp;
@@ -535,8 +558,8 @@ XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len
     for (i = 0; i < info->nfields; i++) {
         xf_field f = (xf_field)info->fields[i];
         int32_t v;
-        int is_signed = (f == XF_F_HOURS || f == XF_F_DX || f == XF_F_DY || f == XF_F_ZOOM ||
-                         f == XF_F_TEMP_HIGH || f == XF_F_TEMP_LOW);
+        int is_signed = (f == XF_F_HOURS || f == XF_F_DX || f == XF_F_DY || f == XF_F_ZOOM || f == XF_F_TEMP_HIGH ||
+                         f == XF_F_TEMP_LOW);
         switch (xf_field_size(f)) {
         case 1u: v = is_signed ? xf_u8_to_s8(params[off]) : params[off]; break;
         case 2u: v = is_signed ? xf_get_s16le(params + off) : xf_get_u16le(params + off); break;

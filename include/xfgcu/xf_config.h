@@ -97,7 +97,7 @@
 
 #ifdef __cplusplus
 #define XF_BEGIN_DECLS extern "C" {
-#define XF_END_DECLS }
+#define XF_END_DECLS   }
 #else
 #define XF_BEGIN_DECLS
 #define XF_END_DECLS

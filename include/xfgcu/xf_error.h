@@ -17,7 +17,7 @@ XF_BEGIN_DECLS
 typedef enum xf_err {
     XF_OK = 0,
     /* success with a warning (positive) */
-    XF_WARN_RATE = 1,        /**< accepted, but outside the 30-50 Hz the vendor recommends */
+    XF_WARN_RATE = 1, /**< accepted, but outside the 30-50 Hz the vendor recommends */
     /* the caller */
     XF_ERR_ARG = -2,         /**< invalid argument (NULL pointer, bad enum): a bug in the caller */
     XF_ERR_NO_SPACE = -3,    /**< the output buffer is too small */

@@ -23,31 +23,31 @@ XF_BEGIN_DECLS
 
 /** Host main frame, bytes 5-36. */
 typedef struct xf_host_main {
-    int16_t roll_ctrl;   /**< control quantity; meaning set by the mode */
+    int16_t roll_ctrl; /**< control quantity; meaning set by the mode */
     int16_t pitch_ctrl;
     int16_t yaw_ctrl;
-    uint8_t status;      /**< XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID */
+    uint8_t status;        /**< XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID */
     int16_t carrier_roll;  /**< 0.01 deg, [-18000, 18000) */
     int16_t carrier_pitch; /**< 0.01 deg, [-9000, 9000] */
     uint16_t carrier_yaw;  /**< 0.01 deg, [0, 36000) */
     int16_t accel_north;   /**< 0.01 m/s^2, gravity excluded */
     int16_t accel_east;
     int16_t accel_up;
-    int16_t vel_north;     /**< 0.01 m/s */
+    int16_t vel_north; /**< 0.01 m/s */
     int16_t vel_east;
     int16_t vel_up;
-    uint8_t sub_request;   /**< sub frame asked of the GCU (XF_SUB_HEADER) */
+    uint8_t sub_request;      /**< sub frame asked of the GCU (XF_SUB_HEADER) */
     uint8_t reserved_main[6]; /**< bytes 31-36, 0 */
 } xf_host_main;
 
 /** Host sub frame, bytes 37-68. All zero when there is no sub frame data. */
 typedef struct xf_host_sub {
-    uint8_t sub_header;      /**< XF_SUB_HEADER */
-    int32_t longitude;       /**< 1e-7 deg */
-    int32_t latitude;        /**< 1e-7 deg */
-    int32_t altitude;        /**< mm */
+    uint8_t sub_header; /**< XF_SUB_HEADER */
+    int32_t longitude;  /**< 1e-7 deg */
+    int32_t latitude;   /**< 1e-7 deg */
+    int32_t altitude;   /**< mm */
     uint8_t satellites;
-    uint32_t gnss_ms;        /**< GNSS milliseconds of week */
+    uint32_t gnss_ms; /**< GNSS milliseconds of week */
     int16_t gnss_week;
     int32_t relative_height; /**< mm */
     uint8_t reserved_sub[8]; /**< bytes 61-68, 0 */
@@ -62,10 +62,10 @@ typedef struct xf_gcu_main {
     int16_t rel_angle_x;     /**< 0.01 deg relative to the carrier */
     int16_t rel_angle_y;
     int16_t rel_angle_z;
-    int16_t cam_roll;        /**< 0.01 deg */
+    int16_t cam_roll; /**< 0.01 deg */
     int16_t cam_pitch;
-    uint16_t cam_yaw;        /**< 0.01 deg, [0, 36000) */
-    int16_t rate_x;          /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 */
+    uint16_t cam_yaw; /**< 0.01 deg, [0, 36000) */
+    int16_t rate_x;   /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 */
     int16_t rate_y;
     int16_t rate_z;
     uint8_t reserved_main[7]; /**< bytes 30-36 */
@@ -92,7 +92,7 @@ typedef struct xf_gcu_sub {
 
 /** A host -> GCU packet. */
 typedef struct xf_host_packet {
-    uint8_t version;    /**< byte 4: XF_PROTOCOL_V1 or XF_PROTOCOL_V2 */
+    uint8_t version; /**< byte 4: XF_PROTOCOL_V1 or XF_PROTOCOL_V2 */
     xf_host_main main;
     xf_host_sub sub;
     uint8_t order;      /**< byte 69: xf_order, or any other value (raw) */

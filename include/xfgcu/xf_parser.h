@@ -65,11 +65,11 @@ typedef struct xf_frame {
 typedef struct xf_parser {
     uint8_t ring[XF_PARSER_RING];
 #if XF_PARSER_MEMO
-    uint16_t memo[XF_PARSER_RING];    /* CRC of the stream before each held byte (memo mode) */
+    uint16_t memo[XF_PARSER_RING]; /* CRC of the stream before each held byte (memo mode) */
 #endif
     uint8_t scratch[XF_PACKET_MAX_LEN]; /* a frame that wraps round the ring is copied here */
-    uint32_t head;     /* stream position of the first held byte: the earliest candidate */
-    uint32_t end;      /* one past the last held byte */
+    uint32_t head;                      /* stream position of the first held byte: the earliest candidate */
+    uint32_t end;                       /* one past the last held byte */
     uint32_t look;     /* positions in (head, look) are examined: no candidate, or a failed contender */
     uint16_t memo_crc; /* CRC of the stream before `end` (memo mode) */
     uint8_t memo_on;
@@ -88,7 +88,7 @@ XF_API void xf_parser_reset(xf_parser *p);
 XF_API size_t xf_parser_pending(const xf_parser *p);
 
 #define XF_PARSE_FRAME 1 /**< xf_parser_feed: *frame holds a frame */
-#define XF_PARSE_MORE 0  /**< xf_parser_feed: all input taken, no frame */
+#define XF_PARSE_MORE  0 /**< xf_parser_feed: all input taken, no frame */
 
 /**
  * Feed @p len bytes. Stops at the first complete frame: returns
@@ -214,8 +214,7 @@ static inline int xf__intact(const xf_parser *p, uint32_t pos, size_t len)
     uint16_t got;
 #if XF_PARSER_MEMO
     if (p->memo_on) {
-        got = (uint16_t)(p->memo[crc_pos & XF__RMASK] ^
-                         xf__crc_shift(p->memo[pos & XF__RMASK], (unsigned)(len - 2u)));
+        got = (uint16_t)(p->memo[crc_pos & XF__RMASK] ^ xf__crc_shift(p->memo[pos & XF__RMASK], (unsigned)(len - 2u)));
     } else
 #endif
     {
@@ -252,8 +251,8 @@ static inline void xf__emit(xf_parser *p, uint32_t pos, size_t len, xf_frame *fr
     p->stats.frames++;
 }
 
-#define XF__NO 0   /* not a candidate */
-#define XF__YES 1  /* a candidate; *len set */
+#define XF__NO   0 /* not a candidate */
+#define XF__YES  1 /* a candidate; *len set */
 #define XF__WAIT 2 /* cannot tell yet; *need more bytes */
 
 /* Is there a candidate (header pair, valid length) at pos? */

@@ -27,14 +27,14 @@
 XF_BEGIN_DECLS
 
 #define XF_GCU_DEFAULT_ADDRESS "192.168.144.108" /**< the vendor's default GCU address */
-#define XF_GCU_TCP_PORT 2332u                   /**< the GCU's TCP server */
-#define XF_GCU_UDP_PORT 2337u                   /**< the GCU's UDP port: host sends here, GCU sends from here */
-#define XF_HOST_UDP_PORT 2338u                  /**< the host's UDP port: GCU sends here */
+#define XF_GCU_TCP_PORT        2332u             /**< the GCU's TCP server */
+#define XF_GCU_UDP_PORT        2337u             /**< the GCU's UDP port: host sends here, GCU sends from here */
+#define XF_HOST_UDP_PORT       2338u             /**< the host's UDP port: GCU sends here */
 
 /** Why the last operation of a link failed. */
 typedef struct xf_os_error {
-    int os_errno;    /**< errno, 0 when the failure is not the OS's */
-    char text[192];  /**< one line: what, where, why */
+    int os_errno;   /**< errno, 0 when the failure is not the OS's */
+    char text[192]; /**< one line: what, where, why */
 } xf_os_error;
 
 /** Counters of a link; they only increase. */
@@ -42,9 +42,9 @@ typedef struct xf_link_stats {
     uint32_t bytes_tx;
     uint32_t bytes_rx;
     uint32_t packets_tx;
-    uint32_t opens;     /**< successful opens / connections, the first included */
-    uint32_t losses;    /**< times the link was found lost (hang-up, peer closed, reset) */
-    uint32_t foreign;   /**< UDP datagrams dropped because they came from another source */
+    uint32_t opens;   /**< successful opens / connections, the first included */
+    uint32_t losses;  /**< times the link was found lost (hang-up, peer closed, reset) */
+    uint32_t foreign; /**< UDP datagrams dropped because they came from another source */
 } xf_link_stats;
 
 /** Monotonic milliseconds (CLOCK_MONOTONIC), wrapping at 2^32. */
@@ -122,7 +122,8 @@ typedef struct xf_udp {
 } xf_udp;
 
 void xf_udp_config_init(xf_udp_config *cfg);
-/** @return XF_OK, XF_ERR_ARG, XF_ERR_NOT_FOUND (address does not resolve), XF_ERR_BUSY (port in use), XF_ERR_PERMISSION, XF_ERR_IO. */
+/** @return XF_OK, XF_ERR_ARG, XF_ERR_NOT_FOUND (address does not resolve), XF_ERR_BUSY (port in use),
+ * XF_ERR_PERMISSION, XF_ERR_IO. */
 xf_err xf_udp_open(xf_udp *u, const xf_udp_config *cfg);
 void xf_udp_close(xf_udp *u);
 /** Fill @p hal. Each write is one datagram; reads return whole datagrams from the GCU only. */
@@ -179,16 +180,16 @@ typedef enum xf_simlink_kind { XF_SIMLINK_PTY = 0, XF_SIMLINK_UDP = 1, XF_SIMLIN
  */
 typedef struct xf_simlink {
     xf_simlink_kind kind;
-    int fd;                 /**< pty master, UDP socket or TCP listener; -1 when closed */
-    int slave_fd;           /**< pty: a slave descriptor held open so the master never reads EIO */
-    int client_fd;          /**< TCP: the connected host, -1 if none */
-    char pty_path[64];      /**< pty: the slave's path */
-    char link_path[256];    /**< pty: a stable symlink to the slave ("" if none) */
+    int fd;              /**< pty master, UDP socket or TCP listener; -1 when closed */
+    int slave_fd;        /**< pty: a slave descriptor held open so the master never reads EIO */
+    int client_fd;       /**< TCP: the connected host, -1 if none */
+    char pty_path[64];   /**< pty: the slave's path */
+    char link_path[256]; /**< pty: a stable symlink to the slave ("" if none) */
     char bind_host[64];
-    uint16_t port;          /**< UDP / TCP: the port bound */
+    uint16_t port; /**< UDP / TCP: the port bound */
     struct sockaddr_storage peer;
-    socklen_t peer_len;     /**< UDP: 0 until a packet arrived */
-    uint8_t down;           /**< disconnected by xf_simlink_disconnect */
+    socklen_t peer_len; /**< UDP: 0 until a packet arrived */
+    uint8_t down;       /**< disconnected by xf_simlink_disconnect */
     uint32_t up_at;
     xf_link_stats stats;
     xf_os_error error;

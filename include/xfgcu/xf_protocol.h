@@ -14,22 +14,22 @@ XF_BEGIN_DECLS
 /* ---- framing ---------------------------------------------------------- */
 #define XF_HOST_HEADER0 0xA8u /**< host -> GCU, byte 0 */
 #define XF_HOST_HEADER1 0xE5u /**< host -> GCU, byte 1 */
-#define XF_GCU_HEADER0 0x8Au  /**< GCU -> host, byte 0 */
-#define XF_GCU_HEADER1 0x5Eu  /**< GCU -> host, byte 1 */
+#define XF_GCU_HEADER0  0x8Au /**< GCU -> host, byte 0 */
+#define XF_GCU_HEADER1  0x5Eu /**< GCU -> host, byte 1 */
 
-#define XF_PACKET_MIN_LEN 72u   /**< header..order + CRC, no parameter */
-#define XF_PACKET_LIMIT 255u    /**< the protocol's own upper bound (the vendor CRC takes a uint8_t length) */
-#define XF_PARAMS_MAX (XF_PACKET_MAX_LEN - XF_PACKET_MIN_LEN) /**< parameter / feedback bytes a packet struct holds */
+#define XF_PACKET_MIN_LEN   72u  /**< header..order + CRC, no parameter */
+#define XF_PACKET_LIMIT     255u /**< the protocol's own upper bound (the vendor CRC takes a uint8_t length) */
+#define XF_PARAMS_MAX       (XF_PACKET_MAX_LEN - XF_PACKET_MIN_LEN) /**< parameter / feedback bytes a packet struct holds */
 #define XF_PARAMS_KNOWN_MAX 12u /**< longest parameter block of any known order (gaze_geo) */
 
 /* byte offsets */
-#define XF_OFF_LENGTH 2u
+#define XF_OFF_LENGTH  2u
 #define XF_OFF_VERSION 4u
-#define XF_OFF_MAIN 5u
-#define XF_OFF_SUB 37u
-#define XF_OFF_ORDER 69u
-#define XF_OFF_PARAMS 70u
-#define XF_FRAME_LEN 32u /**< main and sub frames are 32 bytes each */
+#define XF_OFF_MAIN    5u
+#define XF_OFF_SUB     37u
+#define XF_OFF_ORDER   69u
+#define XF_OFF_PARAMS  70u
+#define XF_FRAME_LEN   32u /**< main and sub frames are 32 bytes each */
 
 /** Which side sent a packet: selects the header bytes and the frame layout. */
 typedef enum xf_direction {
@@ -42,7 +42,7 @@ typedef enum xf_direction {
 #define XF_PROTOCOL_V2 0x02u /**< V0.2, vendor documents V2.0.5 / V2.0.6 */
 
 /* ---- host main frame: status byte (11) -------------------------------- */
-#define XF_STATUS_INS_VALID 0x01u  /**< bit0: the carrier's INS data is valid */
+#define XF_STATUS_INS_VALID  0x01u /**< bit0: the carrier's INS data is valid */
 #define XF_STATUS_CTRL_VALID 0x04u /**< bit2: the control quantities are valid */
 
 #define XF_SUB_HEADER 0x01u /**< the only defined sub frame header */
@@ -102,52 +102,52 @@ typedef enum xf_mode {
 } xf_mode;
 
 /* ---- GCU main frame: pod_status bits (6-7) ----------------------------- */
-#define XF_POD_TRACKING_OK 0x0001u
-#define XF_POD_TARGET_VALID 0x0080u /**< range and target coordinates valid */
-#define XF_POD_RANGING_ON 0x0100u
+#define XF_POD_TRACKING_OK     0x0001u
+#define XF_POD_TARGET_VALID    0x0080u /**< range and target coordinates valid */
+#define XF_POD_RANGING_ON      0x0100u
 #define XF_POD_NIGHT_VISION_ON 0x0200u
-#define XF_POD_LIGHTING_ON 0x0400u
-#define XF_POD_UPWARD_MOUNT 0x1000u /**< 1: powered on facing up */
+#define XF_POD_LIGHTING_ON     0x0400u
+#define XF_POD_UPWARD_MOUNT    0x1000u /**< 1: powered on facing up */
 
 /* ---- GCU sub frame, V0.2 ----------------------------------------------- */
-#define XF_THERMAL_LOW_TEMP_ALARM 0x01u
-#define XF_THERMAL_HIGH_TEMP_ALARM 0x02u
-#define XF_THERMAL_SPOT_ON 0x08u
-#define XF_THERMAL_ISOTHERM_ON 0x10u
-#define XF_THERMAL_ALARM_ON 0x20u
-#define XF_THERMAL_AREA_ON 0x40u
+#define XF_THERMAL_LOW_TEMP_ALARM    0x01u
+#define XF_THERMAL_HIGH_TEMP_ALARM   0x02u
+#define XF_THERMAL_SPOT_ON           0x08u
+#define XF_THERMAL_ISOTHERM_ON       0x10u
+#define XF_THERMAL_ALARM_ON          0x20u
+#define XF_THERMAL_AREA_ON           0x40u
 #define XF_THERMAL_MEASURE_AVAILABLE 0x80u
 
-#define XF_CAMERA_PIP_MASK 0x0007u     /**< bits 0-2: picture-in-picture mode number */
-#define XF_CAMERA_RECORDING 0x0010u
-#define XF_CAMERA_AUTO_FLIP_OFF 0x0800u /**< 1: image auto-flip OFF (0 = on) */
-#define XF_CAMERA_OSD_TARGET 0x1000u    /**< 1: OSD shows target coordinates (0: carrier) */
-#define XF_CAMERA_OSD_ON 0x2000u
+#define XF_CAMERA_PIP_MASK        0x0007u /**< bits 0-2: picture-in-picture mode number */
+#define XF_CAMERA_RECORDING       0x0010u
+#define XF_CAMERA_AUTO_FLIP_OFF   0x0800u /**< 1: image auto-flip OFF (0 = on) */
+#define XF_CAMERA_OSD_TARGET      0x1000u /**< 1: OSD shows target coordinates (0: carrier) */
+#define XF_CAMERA_OSD_ON          0x2000u
 #define XF_CAMERA_DIGITAL_ZOOM_ON 0x4000u
-#define XF_CAMERA_DETECTION_ON 0x8000u
+#define XF_CAMERA_DETECTION_ON    0x8000u
 
-#define XF_ERROR_POD_HW_FAULT 0x0080u
-#define XF_ERROR_MAVLINK_RATE 0x2000u
+#define XF_ERROR_POD_HW_FAULT   0x0080u
+#define XF_ERROR_MAVLINK_RATE   0x2000u
 #define XF_ERROR_GNSS_NOT_FIXED 0x4000u
-#define XF_ERROR_GCU_HW_FAULT 0x8000u
+#define XF_ERROR_GCU_HW_FAULT   0x8000u
 
 /* ---- camera masks (KK / NN) --------------------------------------------- */
-#define XF_CAM1 0x01u /**< camera 1, visible-light zoom by default */
-#define XF_CAM2 0x02u /**< camera 2, thermal by default */
+#define XF_CAM1    0x01u /**< camera 1, visible-light zoom by default */
+#define XF_CAM2    0x02u /**< camera 2, thermal by default */
 #define XF_CAM_ALL 0xFFu
 
 /* ---- feedback execution state (byte 70) ------------------------------ */
-#define XF_STATE_SUCCESS 0x00u
-#define XF_STATE_FAILURE 0x01u
+#define XF_STATE_SUCCESS   0x00u
+#define XF_STATE_FAILURE   0x01u
 #define XF_STATE_OPERATING 0x02u /**< calibration only */
 
 /* ---- target_distance sentinels (0.1 m) ---------------------------------- */
 #define XF_DISTANCE_INVALID_RAW (-10) /**< -1 m: no valid measurement (0 too) */
 
 /* ---- screen grids -------------------------------------------------------- */
-#define XF_GRID_MAX 10000u         /**< track / click / thermal boxes: [0, 10000] */
-#define XF_EXT_TRACK_MAX 1024      /**< external track offsets: [-1024, 1024] */
-#define XF_EXT_TRACK_LOST 3071     /**< both offsets >= this: target lost */
+#define XF_GRID_MAX       10000u /**< track / click / thermal boxes: [0, 10000] */
+#define XF_EXT_TRACK_MAX  1024   /**< external track offsets: [-1024, 1024] */
+#define XF_EXT_TRACK_LOST 3071   /**< both offsets >= this: target lost */
 
 /** Model name of a gimbal_code, or NULL when the code is not in the vendor's tables. */
 XF_API const char *xf_gimbal_model(uint8_t gimbal_code);

@@ -30,33 +30,33 @@ XF_BEGIN_DECLS
 #endif
 
 typedef struct xf_sim_config {
-    uint8_t version;          /**< version byte of replies: 1 or 2; default 1 */
-    uint8_t gimbal_code;      /**< default 40 (D-80AI) */
+    uint8_t version;                /**< version byte of replies: 1 or 2; default 1 */
+    uint8_t gimbal_code;            /**< default 40 (D-80AI) */
     uint8_t hw_version, fw_version; /**< default 3, 12 */
-    float slew_dps;           /**< angle-control slew speed, default 120 deg/s */
-    float max_rate_dps;       /**< rate clamp, default 180 deg/s */
-    float zoom_max;           /**< camera 1 optical zoom, default 30x */
-    float zoom_speed;         /**< continuous zoom, x per second, default 6 */
-    uint32_t calibration_ms;  /**< "operating" phase, default 1500 */
-    uint16_t feedback_after;  /**< the state comes in the Nth reply after execution (0 = at once) */
-    uint8_t state_once;       /**< 1: only one reply carries the state (default: every repeat does) */
-    uint32_t seed;            /**< PRNG for random faults, default 1 */
+    float slew_dps;                 /**< angle-control slew speed, default 120 deg/s */
+    float max_rate_dps;             /**< rate clamp, default 180 deg/s */
+    float zoom_max;                 /**< camera 1 optical zoom, default 30x */
+    float zoom_speed;               /**< continuous zoom, x per second, default 6 */
+    uint32_t calibration_ms;        /**< "operating" phase, default 1500 */
+    uint16_t feedback_after;        /**< the state comes in the Nth reply after execution (0 = at once) */
+    uint8_t state_once;             /**< 1: only one reply carries the state (default: every repeat does) */
+    uint32_t seed;                  /**< PRNG for random faults, default 1 */
 } xf_sim_config;
 
 /** Faults to inject; set fields of xf_sim.fault at any time. */
 typedef struct xf_sim_faults {
-    uint16_t drop_next;        /**< drop the next N replies */
-    uint16_t drop_permille;    /**< drop this share of replies at random */
-    uint16_t corrupt_next;     /**< flip a byte in the next N replies */
+    uint16_t drop_next;     /**< drop the next N replies */
+    uint16_t drop_permille; /**< drop this share of replies at random */
+    uint16_t corrupt_next;  /**< flip a byte in the next N replies */
     uint16_t corrupt_permille;
-    uint32_t delay_ms;         /**< hold each reply this long (bounded by XF_SIM_DELAY_QUEUE) */
-    uint8_t silent;            /**< answer nothing */
+    uint32_t delay_ms; /**< hold each reply this long (bounded by XF_SIM_DELAY_QUEUE) */
+    uint8_t silent;    /**< answer nothing */
 } xf_sim_faults;
 
 /** What the simulator has seen and done. */
 typedef struct xf_sim_stats {
-    uint32_t packets_in;    /**< correct host packets */
-    uint32_t replies;       /**< replies written */
+    uint32_t packets_in; /**< correct host packets */
+    uint32_t replies;    /**< replies written */
     uint32_t dropped, corrupted;
     uint32_t executed[256]; /**< executions per order (the once-rule counts here) */
     uint32_t photos, recordings;
@@ -84,7 +84,7 @@ typedef struct xf_sim {
     /* the last host packet */
     xf_host_packet host;
     uint8_t have_host;
-    uint8_t last_order;      /* order of the previous host packet, for the once-rule */
+    uint8_t last_order; /* order of the previous host packet, for the once-rule */
     uint8_t have_last_order;
     /* feedback of the last executed order */
     uint8_t fb_order, fb_state, fb_pending_replies, fb_sent;
@@ -95,20 +95,20 @@ typedef struct xf_sim {
     /* gimbal state */
     uint8_t mode;
     uint16_t pod_status;
-    float roll, pitch, yaw;    /* camera absolute, deg */
-    float rate[3];             /* deg/s, last step */
-    float hold_yaw_offset;     /* head follow: yaw relative to the carrier */
+    float roll, pitch, yaw;             /* camera absolute, deg */
+    float rate[3];                      /* deg/s, last step */
+    float hold_yaw_offset;              /* head follow: yaw relative to the carrier */
     float gaze_lat, gaze_lon, gaze_alt; /* gaze_geo target */
     float zoom1, zoom2, zoom_dir;       /* x; zoom_dir: +1 in, -1 out, 0 still */
     float zoom_target;                  /* zoom_to, 0 = none */
     float distance_m;
-    int16_t track_x, track_y;           /* target offsets */
+    int16_t track_x, track_y; /* target offsets */
     uint8_t thermal_status;
     uint16_t camera_status;
     int8_t time_zone;
     uint8_t lighting;
-    uint8_t neutral;           /* slewing back to neutral */
-    float tgt[3];              /* click-to-aim / neutral target: roll, pitch, yaw */
+    uint8_t neutral; /* slewing back to neutral */
+    float tgt[3];    /* click-to-aim / neutral target: roll, pitch, yaw */
     uint8_t have_tgt;
     xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE];
     uint8_t n_delayed;

@@ -17,9 +17,9 @@
 
 XF_BEGIN_DECLS
 
-#define XF_GPS_EPOCH_UNIX 315964800LL /**< 1980-01-06T00:00:00Z in Unix seconds */
-#define XF_WEEK_MS 604800000UL       /**< milliseconds in a GNSS week */
-#define XF_LEAP_SECONDS_2017 18      /**< GPS - UTC since 2017-01-01 (pass what is current) */
+#define XF_GPS_EPOCH_UNIX    315964800LL /**< 1980-01-06T00:00:00Z in Unix seconds */
+#define XF_WEEK_MS           604800000UL /**< milliseconds in a GNSS week */
+#define XF_LEAP_SECONDS_2017 18          /**< GPS - UTC since 2017-01-01 (pass what is current) */
 
 /** Round @p v to an integer, clamped to [lo, hi]; NaN gives 0 (or the bound nearest 0). */
 XF_API int32_t xf_units_round(double v, int32_t lo, int32_t hi);
@@ -31,14 +31,15 @@ XF_API int32_t xf_units_roundf(float v, int32_t lo, int32_t hi);
 XF_API float xf_units_wrap360f(float deg, float lo);
 
 /* host main frame */
-XF_API int16_t xf_carrier_roll_raw(float deg);   /**< wrapped into [-180, 180), 0.01 deg */
-XF_API int16_t xf_carrier_pitch_raw(float deg);  /**< clamped to [-90, 90] */
-XF_API uint16_t xf_carrier_yaw_raw(float deg);   /**< wrapped into [0, 360) */
-XF_API int16_t xf_accel_raw(float mps2);         /**< 0.01 m/s^2, clamped to int16 */
-XF_API int16_t xf_velocity_raw(float mps);       /**< 0.01 m/s, clamped to int16 */
+XF_API int16_t xf_carrier_roll_raw(float deg);  /**< wrapped into [-180, 180), 0.01 deg */
+XF_API int16_t xf_carrier_pitch_raw(float deg); /**< clamped to [-90, 90] */
+XF_API uint16_t xf_carrier_yaw_raw(float deg);  /**< wrapped into [0, 360) */
+XF_API int16_t xf_accel_raw(float mps2);        /**< 0.01 m/s^2, clamped to int16 */
+XF_API int16_t xf_velocity_raw(float mps);      /**< 0.01 m/s, clamped to int16 */
 /** Control angle (Euler or relative), clamped to [-180, 180] deg, 0.01 deg. */
 XF_API int16_t xf_ctrl_angle_raw(float deg);
-/** Control rate: one raw unit is 0.1 deg/s divided by the main screen's zoom (zoom < 1 counts as 1); clamped to [-1500, 1500]. */
+/** Control rate: one raw unit is 0.1 deg/s divided by the main screen's zoom (zoom < 1 counts as 1); clamped to [-1500,
+ * 1500]. */
 XF_API int16_t xf_ctrl_rate_raw(float dps, float zoom);
 
 /* host sub frame and gaze_geo */
@@ -46,12 +47,12 @@ XF_API int32_t xf_deg7_raw(double deg); /**< 1e-7 deg, clamped to [-180, 180] de
 XF_API int32_t xf_mm_raw(double m);     /**< metres to mm, clamped to int32 */
 
 /* GCU frames */
-XF_API float xf_cdeg(int32_t raw);                       /**< 0.01 deg -> deg */
+XF_API float xf_cdeg(int32_t raw);                          /**< 0.01 deg -> deg */
 XF_API float xf_gcu_rate_dps(int16_t raw, uint8_t version); /**< 0.01 deg/s (V0.1) or 0.1 deg/s (V0.2) -> deg/s */
 XF_API int16_t xf_gcu_rate_raw(float dps, uint8_t version); /**< inverse, clamped to int16 */
-XF_API float xf_zoom_x(uint16_t raw);                     /**< 0.1 x -> x */
-XF_API uint16_t xf_zoom_raw(float x);                     /**< x -> 0.1 x, clamped to [0, 65535] */
-XF_API double xf_deg7(int32_t raw);                       /**< 1e-7 deg -> deg */
+XF_API float xf_zoom_x(uint16_t raw);                       /**< 0.1 x -> x */
+XF_API uint16_t xf_zoom_raw(float x);                       /**< x -> 0.1 x, clamped to [0, 65535] */
+XF_API double xf_deg7(int32_t raw);                         /**< 1e-7 deg -> deg */
 /** target_distance in metres; returns 0 and leaves *m alone when there is no valid measurement (raw <= 0). */
 XF_API int xf_distance_m(int32_t raw, float *m);
 /** zoom_to's ZZ for a desired zoom rate: -(rate x 10), rate clamped to [1.0, 3276.8]. */
@@ -231,16 +232,22 @@ XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *wee
 
 XF_API void xf_axes_to_euler(float ax, float ay, float az, float *roll, float *pitch, float *yaw)
 {
-    if (roll != NULL) *roll = ay;
-    if (pitch != NULL) *pitch = -ax;
-    if (yaw != NULL) *yaw = xf_units_wrap360f(az + 90.0f, 0.0f);
+    if (roll != NULL)
+        *roll = ay;
+    if (pitch != NULL)
+        *pitch = -ax;
+    if (yaw != NULL)
+        *yaw = xf_units_wrap360f(az + 90.0f, 0.0f);
 }
 
 XF_API void xf_euler_to_axes(float roll, float pitch, float yaw, float *ax, float *ay, float *az)
 {
-    if (ax != NULL) *ax = -pitch;
-    if (ay != NULL) *ay = roll;
-    if (az != NULL) *az = xf_units_wrap360f(yaw - 90.0f, -180.0f);
+    if (ax != NULL)
+        *ax = -pitch;
+    if (ay != NULL)
+        *ay = roll;
+    if (az != NULL)
+        *az = xf_units_wrap360f(yaw - 90.0f, -180.0f);
 }
 
 #endif /* XF_EMIT_DEFINITIONS */

@@ -2,9 +2,9 @@
 #ifndef XF_VERSION_H
 #define XF_VERSION_H
 
-#define XF_VERSION_MAJOR 0
-#define XF_VERSION_MINOR 1
-#define XF_VERSION_PATCH 0
+#define XF_VERSION_MAJOR  0
+#define XF_VERSION_MINOR  1
+#define XF_VERSION_PATCH  0
 #define XF_VERSION_STRING "0.1.0"
 
 #endif /* XF_VERSION_H */

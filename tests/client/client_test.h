@@ -30,35 +30,35 @@
 #include "xfgcu/xfgcu.h"
 
 /* An xf_err compared with its expected value, printed by name. */
-#define assert_xf(expr, want)                                                                              \
-    do {                                                                                                   \
-        int got_ = (int)(expr), want_ = (int)(want);                                                       \
-        if (got_ != want_) {                                                                               \
-            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,  \
-                        xf_strerror(want_));                                                               \
-            fail();                                                                                        \
-        }                                                                                                  \
+#define assert_xf(expr, want)                                                                                          \
+    do {                                                                                                               \
+        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
+        if (got_ != want_) {                                                                                           \
+            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,              \
+                        xf_strerror(want_));                                                                           \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* A command status compared with its expected value, printed by name. */
-#define assert_status(expr, want)                                                                          \
-    do {                                                                                                   \
-        int got_ = (int)(expr), want_ = (int)(want);                                                       \
-        if (got_ != want_) {                                                                               \
-            print_error("%s is %d (%s), expected %d (%s)\n", #expr, got_, xf_cmd_status_name((xf_cmd_status)got_), \
-                        want_, xf_cmd_status_name((xf_cmd_status)want_));                                  \
-            fail();                                                                                        \
-        }                                                                                                  \
+#define assert_status(expr, want)                                                                                      \
+    do {                                                                                                               \
+        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
+        if (got_ != want_) {                                                                                           \
+            print_error("%s is %d (%s), expected %d (%s)\n", #expr, got_, xf_cmd_status_name((xf_cmd_status)got_),     \
+                        want_, xf_cmd_status_name((xf_cmd_status)want_));                                              \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* |a - b| <= tol for floats. */
-#define assert_near(a, b, tol)                                                                             \
-    do {                                                                                                   \
-        double a_ = (double)(a), b_ = (double)(b), t_ = (double)(tol);                                     \
-        if (!(fabs(a_ - b_) <= t_)) {                                                                      \
-            print_error("%s = %g, expected %g +- %g\n", #a, a_, b_, t_);                                   \
-            fail();                                                                                        \
-        }                                                                                                  \
+#define assert_near(a, b, tol)                                                                                         \
+    do {                                                                                                               \
+        double a_ = (double)(a), b_ = (double)(b), t_ = (double)(tol);                                                 \
+        if (!(fabs(a_ - b_) <= t_)) {                                                                                  \
+            print_error("%s = %g, expected %g +- %g\n", #a, a_, b_, t_);                                               \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* Angles: the shortest way round. */
@@ -73,20 +73,20 @@ static inline double ct_angle_diff(double a, double b)
     return fabs(d);
 }
 
-#define assert_angle_near(a, b, tol)                                                                       \
-    do {                                                                                                   \
-        double a_ = (double)(a), b_ = (double)(b);                                                         \
-        if (!(ct_angle_diff(a_, b_) <= (double)(tol))) {                                                   \
-            print_error("%s = %g deg, expected %g +- %g\n", #a, a_, b_, (double)(tol));                    \
-            fail();                                                                                        \
-        }                                                                                                  \
+#define assert_angle_near(a, b, tol)                                                                                   \
+    do {                                                                                                               \
+        double a_ = (double)(a), b_ = (double)(b);                                                                     \
+        if (!(ct_angle_diff(a_, b_) <= (double)(tol))) {                                                               \
+            print_error("%s = %g deg, expected %g +- %g\n", #a, a_, b_, (double)(tol));                                \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* ---- what crossed a link ------------------------------------------------------- */
 
-#define CT_LOG 8192
+#define CT_LOG     8192
 #define CT_RESULTS 128
-#define CT_LINKS 64
+#define CT_LINKS   64
 
 /* Observations made through the client's callbacks. */
 typedef struct ct_log {
@@ -227,9 +227,9 @@ struct ct_rig;
 typedef struct ct_end {
     ct_fifo *in, *out;
     struct ct_rig *rig;
-    int closed;       /* read and write return XF_ERR_CLOSED */
-    int cut;          /* writes vanish (a cable cut that the transport cannot see) */
-    uint32_t chunk;   /* deliver reads at most this many bytes (0: all) */
+    int closed;     /* read and write return XF_ERR_CLOSED */
+    int cut;        /* writes vanish (a cable cut that the transport cannot see) */
+    uint32_t chunk; /* deliver reads at most this many bytes (0: all) */
 } ct_end;
 
 /* A client and a simulator on an in-memory link with a fake clock. */

@@ -22,11 +22,11 @@
 #include "client_links.h"
 
 /* Client timing for these tests: short, so the suite stays quick. */
-#define T_STALE_MS 100u
-#define T_DOWN_MS 500u
+#define T_STALE_MS       100u
+#define T_DOWN_MS        500u
 #define T_CMD_TIMEOUT_MS 200u
-#define T_WATCHDOG_MS 150u
-#define T_SLACK_MS 150u /* scheduling slack allowed on a timing check */
+#define T_WATCHDOG_MS    150u
+#define T_SLACK_MS       150u /* scheduling slack allowed on a timing check */
 
 /* ---- driving ------------------------------------------------------------------------- */
 
@@ -61,8 +61,7 @@ static xf_cmd_status wait_cmd(tx *t, uint32_t id, uint32_t max_ms, xf_cmd_result
 {
     uint32_t t0 = now();
     xf_cmd_status st = xf_client_command_status(&t->c, id, res);
-    while ((st == XF_CMD_QUEUED || st == XF_CMD_SENDING || st == XF_CMD_OPERATING) &&
-           xf_ms_since(now(), t0) < max_ms) {
+    while ((st == XF_CMD_QUEUED || st == XF_CMD_SENDING || st == XF_CMD_OPERATING) && xf_ms_since(now(), t0) < max_ms) {
         round_once(t);
         st = xf_client_command_status(&t->c, id, res);
     }
@@ -324,7 +323,6 @@ static void test_reconnect_after_restart(void **state)
     assert_int_equal(downs_since(t, mark), 1);
 }
 
-
 /* ---- the simulator's links on their own ------------------------------------------------ */
 
 /*
@@ -417,7 +415,7 @@ static void test_simlink_udp_drops_while_down(void **state)
             (void)poll(NULL, 0, 5);
         }
         assert_xf(err, XF_OK);
-        assert_int_equal(n, 0); /* what was sent while down is gone */
+        assert_int_equal(n, 0);                         /* what was sent while down is gone */
         assert_xf(hal.write(hal.ctx, pkt, len), XF_OK); /* and the peer is still known */
     }
     close(fd);
@@ -425,7 +423,10 @@ static void test_simlink_udp_drops_while_down(void **state)
 }
 
 /* The table: every scenario over every transport, named scenario/transport. */
-#define ON(fn, k, kn) { #fn "/" kn, fn, setup, teardown, (void *)&kinds[k] }
+#define ON(fn, k, kn)                                                                                                  \
+    {                                                                                                                  \
+#fn "/" kn, fn, setup, teardown, (void *)&kinds[k]                                                             \
+    }
 #define ON_ALL(fn) ON(fn, 0, "pty"), ON(fn, 1, "udp"), ON(fn, 2, "tcp")
 
 int main(void)

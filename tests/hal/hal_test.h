@@ -26,24 +26,24 @@
 #include "xfgcu/xfgcu.h"
 
 /* An xf_err compared with its expected value, printed by name. */
-#define assert_xf(expr, want)                                                                          \
-    do {                                                                                               \
-        int got_ = (int)(expr), want_ = (int)(want);                                                   \
-        if (got_ != want_) {                                                                           \
-            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_, \
-                        xf_strerror(want_));                                                           \
-            fail();                                                                                    \
-        }                                                                                              \
+#define assert_xf(expr, want)                                                                                          \
+    do {                                                                                                               \
+        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
+        if (got_ != want_) {                                                                                           \
+            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,              \
+                        xf_strerror(want_));                                                                           \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 /* A string that must contain a fragment (error texts). */
-#define assert_contains(hay, needle)                                                                   \
-    do {                                                                                               \
-        const char *hay_ = (hay), *needle_ = (needle);                                                 \
-        if (hay_ == NULL || strstr(hay_, needle_) == NULL) {                                           \
-            print_error("\"%s\" does not contain \"%s\"\n", hay_ != NULL ? hay_ : "(null)", needle_);  \
-            fail();                                                                                    \
-        }                                                                                              \
+#define assert_contains(hay, needle)                                                                                   \
+    do {                                                                                                               \
+        const char *hay_ = (hay), *needle_ = (needle);                                                                 \
+        if (hay_ == NULL || strstr(hay_, needle_) == NULL) {                                                           \
+            print_error("\"%s\" does not contain \"%s\"\n", hay_ != NULL ? hay_ : "(null)", needle_);                  \
+            fail();                                                                                                    \
+        }                                                                                                              \
     } while (0)
 
 static inline uint32_t ht_now(void) { return xf_posix_now_ms(); }
@@ -153,10 +153,10 @@ static inline size_t ht_gcu_packet(uint8_t *buf, size_t cap, uint16_t seed)
     memset(&pkt, 0, sizeof(pkt));
     pkt.version = XF_PROTOCOL_V2;
     pkt.main.gimbal_mode = 0x03;
-    pkt.main.pod_status = 0x1311;        /* XOFF, XON */
-    pkt.main.target_offset_x = 0x0A0D;   /* LF, CR */
-    pkt.main.target_offset_y = 0x0403;   /* ^D, ^C */
-    pkt.main.rel_angle_x = 0x7F1A;       /* DEL, ^Z */
+    pkt.main.pod_status = 0x1311;      /* XOFF, XON */
+    pkt.main.target_offset_x = 0x0A0D; /* LF, CR */
+    pkt.main.target_offset_y = 0x0403; /* ^D, ^C */
+    pkt.main.rel_angle_x = 0x7F1A;     /* DEL, ^Z */
     pkt.main.cam_yaw = seed;
     pkt.sub.sub_header = XF_SUB_HEADER;
     pkt.sub.fw_version = 0x0D;

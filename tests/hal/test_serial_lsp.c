@@ -41,18 +41,18 @@
 #include "hal_test.h"
 #include "pty_util.h"
 
-#define SKIP_CODE 77
-#define INNER_ENV "XFGCU_LSP_NAMESPACE"
+#define SKIP_CODE    77
+#define INNER_ENV    "XFGCU_LSP_NAMESPACE"
 #define SHIM_OFF_ENV "XFGCU_PTY_SHIM_OFF"
-#define SYS_TTY "/sys/class/tty"
-#define FAKE_LISTED "ttyXFT0" /* a fake listed port: no "virtual" in its target */
+#define SYS_TTY      "/sys/class/tty"
+#define FAKE_LISTED  "ttyXFT0" /* a fake listed port: no "virtual" in its target */
 
 #ifndef XFGCU_PTY_SHIM
 #define XFGCU_PTY_SHIM ""
 #endif
 
-static char g_sysdir[64];  /* mounted over /sys/class/tty */
-static char g_port[128];   /* /dev/shm/xfgcu-pty-<pid>: the port's name for libserialport */
+static char g_sysdir[64]; /* mounted over /sys/class/tty */
+static char g_port[128];  /* /dev/shm/xfgcu-pty-<pid>: the port's name for libserialport */
 static int g_mounted;
 
 /* ---- step 1: the namespace, then exec ourselves with the shim ------------------ */

@@ -19,7 +19,7 @@
 #include "hal_test.h"
 
 typedef struct fixture {
-    int gcu;          /* the "GCU" socket */
+    int gcu; /* the "GCU" socket */
     uint16_t gcu_port;
     xf_udp u;
     xf_hal hal;
@@ -293,7 +293,7 @@ static void test_broadcast_takes_gcu_port_from_any_address(void **state)
     assert_xf(xf_udp_open(&bc, &cfg), XF_OK);
     xf_udp_hal(&bc, &hal);
 
-    send_to(foreign, bc.local_port, other, olen);   /* right address, wrong port */
+    send_to(foreign, bc.local_port, other, olen);    /* right address, wrong port */
     send_to(gcu_elsewhere, bc.local_port, pkt, len); /* other address, the GCU's port */
     n = ht_hal_read_until(&hal, buf, len, 1000, NULL);
     assert_int_equal(n, len);

@@ -12,7 +12,7 @@ typedef struct tool_result {
     int status; /* exit code, or 128 + signal */
     char *out;  /* NUL-terminated */
     size_t out_len;
-    char *err;  /* NUL-terminated */
+    char *err; /* NUL-terminated */
     size_t err_len;
 } tool_result;
 

@@ -23,7 +23,7 @@
 
 extern char **environ;
 
-#define MAX_SIMS 16
+#define MAX_SIMS     16
 #define SIM_LIFETIME "40" /* seconds: no simulator outlives a crashed test by more */
 
 static pid_t running[MAX_SIMS]; /* every simulator not reaped yet */
@@ -98,7 +98,7 @@ static pid_t spawn_sim(int argc, char **argv, int out[2])
 
 static void parse_ready(sim_proc *s)
 {
-    const char *want = (s->link == SIM_TCP) ? "xfgcu sim: listening on tcp 127.0.0.1:"
+    const char *want = (s->link == SIM_TCP)   ? "xfgcu sim: listening on tcp 127.0.0.1:"
                        : (s->link == SIM_UDP) ? "xfgcu sim: listening on udp 127.0.0.1:"
                                               : "xfgcu sim: listening on pty ";
     if (strncmp(s->line, want, strlen(want)) != 0) {

@@ -13,12 +13,12 @@
 typedef enum sim_link { SIM_TCP, SIM_UDP, SIM_PTY } sim_link;
 
 typedef struct sim_proc {
-    pid_t pid;       /* 0: not running */
-    int out_fd;      /* its stdout (kept open: it may print with --verbose) */
+    pid_t pid;  /* 0: not running */
+    int out_fd; /* its stdout (kept open: it may print with --verbose) */
     sim_link link;
-    char line[256];  /* the ready line */
-    char port[8];    /* TCP / UDP */
-    char path[128];  /* pty */
+    char line[256]; /* the ready line */
+    char port[8];   /* TCP / UDP */
+    char path[128]; /* pty */
 } sim_proc;
 
 /**

@@ -34,8 +34,8 @@ static void test_version(void **state)
 
 static void test_help(void **state)
 {
-    static const char *const names[] = {"decode", "encode", "send", "point", "rate", "monitor",
-                                        "sim", "demo", "record", "replay", "--baud", "--protocol"};
+    static const char *const names[] = {"decode", "encode", "send",   "point",  "rate",   "monitor",
+                                        "sim",    "demo",   "record", "replay", "--baud", "--protocol"};
     tool_result r = run_tool(NULL, "--help", NULL);
     size_t i;
     (void)state;
@@ -229,11 +229,13 @@ static void test_online_bad_arguments(void **state)
         {{"--tcp", "127.0.0.1:9", "send", NULL}, "send: which command?"},
         {{"--tcp", "127.0.0.1:9", "send", "frobnicate", NULL}, "send: unknown command 'frobnicate'"},
         {{"--tcp", "127.0.0.1:9", "send", "--bogus", NULL}, "send: unknown option '--bogus'"},
-        {{"--tcp", "127.0.0.1:9", "send", "zoom-to", "--rate", "0.5", NULL}, "send zoom-to: --rate 0.5 is out of range"},
+        {{"--tcp", "127.0.0.1:9", "send", "zoom-to", "--rate", "0.5", NULL},
+         "send zoom-to: --rate 0.5 is out of range"},
         {{"--tcp", "127.0.0.1:9", "send", "track", "--start", NULL}, "send track: --start needs --box"},
         {{"--tcp", "127.0.0.1:9", "send", "shutter", "--protocol", "3", NULL}, "--protocol 3"},
         {{"--tcp", "127.0.0.1:9", "point", "--pitch", "10", NULL}, "point: missing --yaw DEG"},
-        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "200", "--yaw", "0", NULL}, "point: --pitch 200: must be degrees"},
+        {{"--tcp", "127.0.0.1:9", "point", "--pitch", "200", "--yaw", "0", NULL},
+         "point: --pitch 200: must be degrees"},
         {{"--tcp", "127.0.0.1:9", "point", "--pitch", "1", "--pitch", "2", "--yaw", "0", NULL}, "--pitch given twice"},
         {{"--tcp", "127.0.0.1:9", "point", "--pitch", "x", "--yaw", "0", NULL}, "point: --pitch x"},
         {{"--tcp", "127.0.0.1:9", "point", "--pitch", "0", "--yaw", "0", "--wait", "0", NULL}, "point: --wait 0"},

@@ -89,11 +89,11 @@ static size_t gcu_packet(uint8_t version, uint8_t order, const uint8_t *fb, uint
 
 static void test_appendix1_json(void **state)
 {
-    static const char *const host_keys[] = {"roll_ctrl", "pitch_ctrl", "yaw_ctrl", "status", "carrier_roll",
-                                            "carrier_pitch", "carrier_yaw", "accel_north", "accel_east", "accel_up",
-                                            "vel_north", "vel_east", "vel_up", "sub_request", "sub_header",
-                                            "longitude", "latitude", "altitude", "satellites", "gnss_ms",
-                                            "gnss_week", "relative_height"};
+    static const char *const host_keys[] = {
+        "roll_ctrl",   "pitch_ctrl",  "yaw_ctrl",   "status",         "carrier_roll", "carrier_pitch",
+        "carrier_yaw", "accel_north", "accel_east", "accel_up",       "vel_north",    "vel_east",
+        "vel_up",      "sub_request", "sub_header", "longitude",      "latitude",     "altitude",
+        "satellites",  "gnss_ms",     "gnss_week",  "relative_height"};
     tool_result r = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, NULL);
     json_t *o;
     size_t i;
@@ -175,9 +175,9 @@ static void test_appendix1_layouts(void **state)
 static void test_appendix1_table(void **state)
 {
     tool_result r = run_tool(NULL, "decode", APPENDIX1_HEX, NULL);
-    static const char *const needles[] = {"host packet", "72 bytes", "version 1", "0xE9D4", "vel_north",
-                                          "-32704", "-327.04 m/s", "ins_valid ctrl_valid", "170.9175332 deg",
-                                          "240.00 deg", "352718.000 s", "41.123 m", "null"};
+    static const char *const needles[] = {
+        "host packet",          "72 bytes",        "version 1",  "0xE9D4",       "vel_north", "-32704", "-327.04 m/s",
+        "ins_valid ctrl_valid", "170.9175332 deg", "240.00 deg", "352718.000 s", "41.123 m",  "null"};
     size_t i;
     (void)state;
     assert_int_equal(r.status, 0);
@@ -376,8 +376,8 @@ static void test_stdin_noisy(void **state)
     const char *line;
     (void)state;
     /* noise, a false candidate (its CRC fails), the example, a false header, the GCU reply, noise; any layout */
-    snprintf(input, sizeof(input),
-             "12 34 8A\n0xA8,0xE5 48 00 01 02 03\r\n%s\n99 88 a8e5 ff00\n%s  \t77 66:55\n%.*s", a, g, 99, a);
+    snprintf(input, sizeof(input), "12 34 8A\n0xA8,0xE5 48 00 01 02 03\r\n%s\n99 88 a8e5 ff00\n%s  \t77 66:55\n%.*s", a,
+             g, 99, a);
     r = run_tool(input, "decode", "--json", NULL);
     assert_int_equal(r.status, 0);
     assert_int_equal(r.err_len, 0);
@@ -466,14 +466,10 @@ static void test_stdin_faults(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_appendix1_json),
-        cmocka_unit_test(test_appendix1_layouts),
-        cmocka_unit_test(test_appendix1_table),
-        cmocka_unit_test(test_gcu_versions),
-        cmocka_unit_test(test_host_command_extra),
-        cmocka_unit_test(test_argument_faults),
-        cmocka_unit_test(test_stdin_noisy),
-        cmocka_unit_test(test_stdin_stream_order),
+        cmocka_unit_test(test_appendix1_json),     cmocka_unit_test(test_appendix1_layouts),
+        cmocka_unit_test(test_appendix1_table),    cmocka_unit_test(test_gcu_versions),
+        cmocka_unit_test(test_host_command_extra), cmocka_unit_test(test_argument_faults),
+        cmocka_unit_test(test_stdin_noisy),        cmocka_unit_test(test_stdin_stream_order),
         cmocka_unit_test(test_stdin_faults),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

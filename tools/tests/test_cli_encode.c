@@ -55,11 +55,20 @@ static const named_case cases[] = {
     {{"zoom-to", "--fraction", "10000", "--cameras", "2"}, 1, 0x25, 3, {0x02, 0x10, 0x27}},
     {{"zoom-to", "--rate=1"}, 1, 0x25, 3, {0x01, 0xF6, 0xFF}},
     {{"gaze-geo", "--lat", "22.5", "--lon", "113.25", "--alt", "100.5"},
-     1, 0x15, 12, {0x20, 0x94, 0x80, 0x43, 0x40, 0x3A, 0x69, 0x0D, 0x94, 0x88, 0x01, 0x00}},
+     1,
+     0x15,
+     12,
+     {0x20, 0x94, 0x80, 0x43, 0x40, 0x3A, 0x69, 0x0D, 0x94, 0x88, 0x01, 0x00}},
     {{"gaze-geo", "--lon", "-122.5", "--lat", "-33.75", "--alt", "-5"},
-     1, 0x15, 12, {0xC0, 0xFB, 0xFB, 0xB6, 0xA0, 0x28, 0xE2, 0xEB, 0x78, 0xEC, 0xFF, 0xFF}},
+     1,
+     0x15,
+     12,
+     {0xC0, 0xFB, 0xFB, 0xB6, 0xA0, 0x28, 0xE2, 0xEB, 0x78, 0xEC, 0xFF, 0xFF}},
     {{"track", "--start", "--box", "1000,2000,3000,4000"},
-     1, 0x17, 10, {0x01, 0x01, 0xE8, 0x03, 0xD0, 0x07, 0xB8, 0x0B, 0xA0, 0x0F}},
+     1,
+     0x17,
+     10,
+     {0x01, 0x01, 0xE8, 0x03, 0xD0, 0x07, 0xB8, 0x0B, 0xA0, 0x0F}},
     {{"track", "--stop"}, 1, 0x17, 10, {0x01, 0x00}},
     {{"click-to-aim", "--at", "5000,5000"}, 1, 0x1A, 5, {0x01, 0x88, 0x13, 0x88, 0x13}},
     {{"external-track", "--start", "--offset", "-100,200"}, 1, 0x1B, 6, {0x01, 0x9C, 0xFF, 0xC8, 0x00, 0x02}},
@@ -86,9 +95,15 @@ static const named_case cases[] = {
     {{"auto-flip", "--on", "--protocol", "2"}, 2, 0x07, 1, {0x00}},
     {{"time-zone", "--hours", "-2", "--protocol", "2"}, 2, 0x08, 1, {0xFE}},
     {{"area-temp", "--on", "--box", "100,200,300,400", "--protocol", "2"},
-     2, 0x30, 10, {0x02, 0x01, 0x64, 0x00, 0xC8, 0x00, 0x2C, 0x01, 0x90, 0x01}},
+     2,
+     0x30,
+     10,
+     {0x02, 0x01, 0x64, 0x00, 0xC8, 0x00, 0x2C, 0x01, 0x90, 0x01}},
     {{"temp-alarm", "--on", "--high", "50.5", "--low", "-10", "--protocol", "2"},
-     2, 0x31, 6, {0x02, 0x01, 0xF9, 0x01, 0x9C, 0xFF}},
+     2,
+     0x31,
+     6,
+     {0x02, 0x01, 0xF9, 0x01, 0x9C, 0xFF}},
     {{"isotherm", "--off", "--protocol", "2"}, 2, 0x32, 6, {0x02, 0x00}},
     {{"spot-temp", "--on", "--at", "100,200", "--protocol", "2"}, 2, 0x33, 6, {0x02, 0x01, 0x64, 0x00, 0xC8, 0x00}},
     {{"target-detection", "--on", "--protocol", "2"}, 2, 0x75, 1, {0x01}},
@@ -399,8 +414,8 @@ static size_t random_packet(uint32_t *seed, uint8_t *out)
         out[i] = (uint8_t)next_random(seed);
     }
     if ((pick & 16u) != 0u) {
-        memset(out + 30, 0, 7);  /* reserved main bytes (and host sub_request) zero */
-        memset(out + 61, 0, 8);  /* reserved sub bytes zero */
+        memset(out + 30, 0, 7); /* reserved main bytes (and host sub_request) zero */
+        memset(out + 61, 0, 8); /* reserved sub bytes zero */
     }
     out[0] = gcu ? 0x8A : 0xA8;
     out[1] = gcu ? 0x5E : 0xE5;
@@ -437,8 +452,8 @@ static void make_corpus(corpus *c)
         hex_line(pkt, len, c->want + want_len);
         want_len += strlen(c->want + want_len);
         /* noise that is never a header byte, in a different layout */
-        stream_len += (size_t)sprintf(c->stream + stream_len, "%02X:%02X\n", next_random(&seed) & 0x7Fu,
-                                      (unsigned)(i & 0x7Fu));
+        stream_len +=
+            (size_t)sprintf(c->stream + stream_len, "%02X:%02X\n", next_random(&seed) & 0x7Fu, (unsigned)(i & 0x7Fu));
         strcpy(c->stream + stream_len, c->hex[i]);
         stream_len += strlen(c->hex[i]);
         c->stream[stream_len++] = (i % 3u == 0u) ? '\n' : ' ';

@@ -75,10 +75,10 @@ static json_int_t int_key(const json_t *obj, const char *key)
 /* Every line of @p text is a GCU packet object with the decode --json keys; returns how many. */
 static size_t check_gcu_lines(const char *text, uint8_t version)
 {
-    static const char *const keys[] = {"version",     "length",       "order",         "gimbal_mode",
-                                       "pod_status",  "cam_roll",     "cam_pitch",     "cam_yaw",
-                                       "rate_x",      "sub_header",   "gimbal_code",   "target_distance",
-                                       "zoom_cam1",   "zoom_cam2",    "target_latitude", "rel_angle_z"};
+    static const char *const keys[] = {"version",    "length",     "order",           "gimbal_mode",
+                                       "pod_status", "cam_roll",   "cam_pitch",       "cam_yaw",
+                                       "rate_x",     "sub_header", "gimbal_code",     "target_distance",
+                                       "zoom_cam1",  "zoom_cam2",  "target_latitude", "rel_angle_z"};
     size_t n = 0, k;
     const char *p = text;
     while (*p != '\0') {
@@ -289,9 +289,9 @@ static void test_rate(void **state)
     tool_result_free(&r);
     attitude(s, &pitch1, &yaw1);
     moved = ((yaw1 - yaw0) % 36000 + 36000) % 36000;
-    assert_true(labs(moved - 3000) <= 400);          /* 30 deg/s for 1 s */
+    assert_true(labs(moved - 3000) <= 400);             /* 30 deg/s for 1 s */
     assert_true(labs((pitch1 - pitch0) + 1000) <= 200); /* -10 deg/s */
-    attitude(s, &pitch0, &yaw0);                      /* and it holds still after */
+    attitude(s, &pitch0, &yaw0);                        /* and it holds still after */
     assert_true(labs(yaw0 - yaw1) <= 20);
 }
 
@@ -317,7 +317,8 @@ static void count_directions(const char *jsonl, size_t *host, size_t *gcu, int *
             (*host)++;
         } else {
             (*gcu)++;
-            *shutter |= (int_key(obj, "order") == 0x20 && strcmp(json_string_value(json_object_get(obj, "params")), "00") == 0);
+            *shutter |=
+                (int_key(obj, "order") == 0x20 && strcmp(json_string_value(json_object_get(obj, "params")), "00") == 0);
         }
         json_decref(obj);
         p += len + (p[len] == '\n');

@@ -14,10 +14,10 @@
 
 #include "xfgcu/xfgcu.h"
 
-#define XFGCU_EXIT_OK 0     /**< success */
+#define XFGCU_EXIT_OK     0 /**< success */
 #define XFGCU_EXIT_FAILED 1 /**< the GCU answered with failure */
-#define XFGCU_EXIT_USAGE 2  /**< usage error or bad input */
-#define XFGCU_EXIT_LINK 3   /**< link error or timeout */
+#define XFGCU_EXIT_USAGE  2 /**< usage error or bad input */
+#define XFGCU_EXIT_LINK   3 /**< link error or timeout */
 
 #if defined(__GNUC__) || defined(__clang__)
 #define CLI_PRINTF(fmt, args) __attribute__((format(printf, fmt, args)))
@@ -43,15 +43,15 @@ int cli_parse_real(const char *s, double *out);
 
 /** The options before COMMAND (cli.md "Link options"), already validated. */
 typedef struct cli_link {
-    const char *serial;   /**< --serial PATH, or NULL */
-    const char *udp;      /**< --udp HOST, or NULL */
-    const char *tcp;      /**< --tcp HOST[:PORT], or NULL */
-    long baud;            /**< --baud, default 115200 */
-    long gcu_port;        /**< --gcu-port, 0 = the link's default */
-    long local_port;      /**< --local-port, default 2338; 0 = any free port */
-    uint8_t protocol;     /**< --protocol, default 1 */
-    long rate_hz;         /**< --rate, 1..200, default 50 */
-    long timeout_ms;      /**< --timeout, default 1000 */
+    const char *serial; /**< --serial PATH, or NULL */
+    const char *udp;    /**< --udp HOST, or NULL */
+    const char *tcp;    /**< --tcp HOST[:PORT], or NULL */
+    long baud;          /**< --baud, default 115200 */
+    long gcu_port;      /**< --gcu-port, 0 = the link's default */
+    long local_port;    /**< --local-port, default 2338; 0 = any free port */
+    uint8_t protocol;   /**< --protocol, default 1 */
+    long rate_hz;       /**< --rate, 1..200, default 50 */
+    long timeout_ms;    /**< --timeout, default 1000 */
 } cli_link;
 
 /** A command's entry point: argv[0] is the command's name. Returns an exit code. */

@@ -17,9 +17,9 @@
 #include "online.h"
 
 /* Where the simulated carrier hovers (sent as GNSS data in the sub frame). */
-#define HOME_LAT 47.3977
-#define HOME_LON 8.5456
-#define HOME_ALT 500.0
+#define HOME_LAT    47.3977
+#define HOME_LON    8.5456
+#define HOME_ALT    500.0
 #define HOME_HEIGHT 120.0
 
 void help_demo(FILE *out)
@@ -44,8 +44,8 @@ static void print_intro(const demo *d)
     printf("  client         %u packets per second, protocol version %u, command timeout %u ms\n",
            (unsigned)d->client.cfg.rate_hz, (unsigned)d->client.cfg.protocol_version,
            (unsigned)d->client.cfg.command_timeout_ms);
-    printf("  carrier        hovering %.0f m above %.4f N %.4f E (GNSS data in each packet's sub frame)\n",
-           HOME_HEIGHT, HOME_LAT, HOME_LON);
+    printf("  carrier        hovering %.0f m above %.4f N %.4f E (GNSS data in each packet's sub frame)\n", HOME_HEIGHT,
+           HOME_LAT, HOME_LON);
     printf("\nThe host speaks first, %u times a second; the GCU answers each correct packet.\n"
            "'>' is what the library sent, '<' what the gimbal reported.\n",
            (unsigned)d->client.cfg.rate_hz);
@@ -252,8 +252,8 @@ static void step_track(demo *d)
     demo_got("mode %s, tracking %s, target offset x %d y %d (of +-1000)", xf_mode_name(t->gimbal_mode),
              (t->pod_status & XF_POD_TRACKING_OK) ? "ok" : "lost", t->target_offset_x, t->target_offset_y);
     for (k = 0; k < 4 && demo_pump(d, 150); k++) {
-        demo_got("t %.2f s  target offset x %4d y %4d  (the gimbal turns to centre it: yaw %.2f deg)",
-                 demo_since(d), t->target_offset_x, t->target_offset_y, (double)t->cam_yaw_deg);
+        demo_got("t %.2f s  target offset x %4d y %4d  (the gimbal turns to centre it: yaw %.2f deg)", demo_since(d),
+                 t->target_offset_x, t->target_offset_y, (double)t->cam_yaw_deg);
     }
     demo_check(d, t->gimbal_mode == XF_MODE_TRACK && (t->pod_status & XF_POD_TRACKING_OK) != 0u,
                "the gimbal is not tracking");
@@ -307,9 +307,9 @@ static void step_health(demo *d)
 
 static int tour(demo *d)
 {
-    static void (*const steps[])(demo *d) = {step_connect, step_pan,       step_point,       step_ranging,
-                                            step_orthoview, step_zoom_to, step_zoom_in,     step_photos,
-                                            step_track,   step_failure,   step_calibration, step_health};
+    static void (*const steps[])(demo * d) = {step_connect,   step_pan,     step_point,       step_ranging,
+                                              step_orthoview, step_zoom_to, step_zoom_in,     step_photos,
+                                              step_track,     step_failure, step_calibration, step_health};
     size_t i;
     print_intro(d);
     for (i = 0; i < sizeof(steps) / sizeof(steps[0]) && !cli_stop_requested(); i++) {

@@ -17,8 +17,8 @@
 #include "jsonpkt.h"
 #include "online.h"
 
-#define SCREEN_MS 250u /* terminal redraw period */
-#define LINE_MS 1000u  /* plain line period */
+#define SCREEN_MS 250u  /* terminal redraw period */
+#define LINE_MS   1000u /* plain line period */
 
 void help_monitor(FILE *out)
 {
@@ -147,8 +147,8 @@ static void draw_screen(const monitor *m)
     printf("gimbal      %s (code %u), hardware %u, firmware %u, protocol %u\n", t->model ? t->model : "unknown model",
            t->gimbal_code, t->hw_version, t->fw_version, t->version);
     printf("mode        %s (0x%02X)\n", mode ? mode : "unknown", t->gimbal_mode);
-    printf("attitude    roll %8.2f   pitch %8.2f   yaw %8.2f deg\n", (double)t->cam_roll_deg,
-           (double)t->cam_pitch_deg, (double)t->cam_yaw_deg);
+    printf("attitude    roll %8.2f   pitch %8.2f   yaw %8.2f deg\n", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
+           (double)t->cam_yaw_deg);
     printf("relative    x    %8.2f   y     %8.2f   z   %8.2f deg (to the carrier)\n", (double)t->rel_x_deg,
            (double)t->rel_y_deg, (double)t->rel_z_deg);
     printf("rates       x    %8.2f   y     %8.2f   z   %8.2f deg/s\n", (double)t->rate_x_dps, (double)t->rate_y_dps,
@@ -178,9 +178,9 @@ static void print_line(const monitor *m, uint32_t elapsed)
     distance_text(t, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
-           cli_seconds(elapsed), xf_link_state_name((xf_link_state)h->link), rate, mode ? mode : "unknown", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
-           (double)t->cam_yaw_deg, (double)t->zoom_cam1, (double)t->zoom_cam2, dist,
-           yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
+           cli_seconds(elapsed), xf_link_state_name((xf_link_state)h->link), rate, mode ? mode : "unknown",
+           (double)t->cam_roll_deg, (double)t->cam_pitch_deg, (double)t->cam_yaw_deg, (double)t->zoom_cam1,
+           (double)t->zoom_cam2, dist, yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
     fflush(stdout);
 }
 

@@ -13,7 +13,7 @@
 #include "online.h"
 
 #define TOLERANCE_DEG 0.5
-#define NULLS_AFTER 3u
+#define NULLS_AFTER   3u
 
 void help_point(FILE *out)
 {
@@ -39,18 +39,17 @@ typedef struct point_args {
 
 static int take_arg(point_args *a, int argc, char **argv, int *i)
 {
-    int rc = cli_opt_real("point", argc, argv, i, "--pitch", -180.0, 180.0, "degrees, -180..180", &a->pitch,
-                          &a->has_pitch);
+    int rc =
+        cli_opt_real("point", argc, argv, i, "--pitch", -180.0, 180.0, "degrees, -180..180", &a->pitch, &a->has_pitch);
     if (rc < 0) {
         rc = cli_opt_real("point", argc, argv, i, "--yaw", -360.0, 360.0, "degrees, -360..360", &a->yaw, &a->has_yaw);
     }
     if (rc < 0) {
-        rc = cli_opt_real("point", argc, argv, i, "--roll", -180.0, 180.0, "degrees, -180..180", &a->roll,
-                          &a->has_roll);
+        rc =
+            cli_opt_real("point", argc, argv, i, "--roll", -180.0, 180.0, "degrees, -180..180", &a->roll, &a->has_roll);
     }
     if (rc < 0) {
-        rc = cli_opt_real("point", argc, argv, i, "--wait", 0.1, 600.0, "seconds, 0.1..600", &a->wait_s,
-                          &a->has_wait);
+        rc = cli_opt_real("point", argc, argv, i, "--wait", 0.1, 600.0, "seconds, 0.1..600", &a->wait_s, &a->has_wait);
     }
     if (rc < 0 && strcmp(argv[*i], "--help") == 0) {
         a->help = 1;

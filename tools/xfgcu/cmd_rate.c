@@ -12,7 +12,7 @@
 #include "online.h"
 
 #define ZERO_PACKETS 5u
-#define MAX_DPS 150.0 /* control quantity 1500 x 0.1 deg/s at zoom 1x */
+#define MAX_DPS      150.0 /* control quantity 1500 x 0.1 deg/s at zoom 1x */
 
 void help_rate(FILE *out)
 {
@@ -39,11 +39,10 @@ typedef struct rate_args {
 
 static int take_arg(rate_args *a, int argc, char **argv, int *i)
 {
-    int rc = cli_opt_real("rate", argc, argv, i, "--pitch", -MAX_DPS, MAX_DPS, "deg/s, -150..150", &a->pitch,
-                          &a->has_pitch);
+    int rc =
+        cli_opt_real("rate", argc, argv, i, "--pitch", -MAX_DPS, MAX_DPS, "deg/s, -150..150", &a->pitch, &a->has_pitch);
     if (rc < 0) {
-        rc = cli_opt_real("rate", argc, argv, i, "--yaw", -MAX_DPS, MAX_DPS, "deg/s, -150..150", &a->yaw,
-                          &a->has_yaw);
+        rc = cli_opt_real("rate", argc, argv, i, "--yaw", -MAX_DPS, MAX_DPS, "deg/s, -150..150", &a->yaw, &a->has_yaw);
     }
     if (rc < 0) {
         rc = cli_opt_real("rate", argc, argv, i, "--duration", 0.02, 3600.0, "seconds, 0.02..3600", &a->duration,
@@ -83,8 +82,7 @@ static void stream_rates(online *o, const rate_args *a, uint32_t *elapsed)
 {
     uint32_t start = xf_posix_now_ms(), limit = (uint32_t)(a->duration * 1000.0 + 0.5);
     uint32_t now = start;
-    while (xf_ms_since(now, start) < limit && !cli_stop_requested() &&
-           xf_client_link(&o->client) != XF_LINK_DOWN) {
+    while (xf_ms_since(now, start) < limit && !cli_stop_requested() && xf_client_link(&o->client) != XF_LINK_DOWN) {
         xf_client_set_rates(&o->client, 0.0f, (float)a->pitch, (float)a->yaw, now); /* each loop: the watchdog */
         online_poll(o, 10);
         now = xf_posix_now_ms();
@@ -102,8 +100,8 @@ static int turn(online *o, const rate_args *a)
     char where[96];
     stream_rates(o, a, &elapsed);
     online_attitude_text(t, where, sizeof(where));
-    printf("turned %.2f s: pitch %.2f -> %.2f deg, yaw %.2f -> %.2f deg; holding at %s\n", cli_seconds(elapsed),
-           pitch0, (double)t->cam_pitch_deg, yaw0, (double)t->cam_yaw_deg, where);
+    printf("turned %.2f s: pitch %.2f -> %.2f deg, yaw %.2f -> %.2f deg; holding at %s\n", cli_seconds(elapsed), pitch0,
+           (double)t->cam_pitch_deg, yaw0, (double)t->cam_yaw_deg, where);
     if (xf_client_link(&o->client) == XF_LINK_DOWN) {
         return cli_fail_link("rate: link lost on %s after %.2f s", o->desc, cli_seconds(elapsed));
     }

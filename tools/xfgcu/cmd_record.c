@@ -17,7 +17,7 @@
 #include "xfgcu/xf_capture.h"
 
 #define NULLS_AFTER 3u
-#define DRAIN_MS 250u
+#define DRAIN_MS    250u
 
 void help_record(FILE *out)
 {
@@ -60,8 +60,8 @@ static int take_arg(record *r, int argc, char **argv, int *i)
         r->cargv[r->cargc++] = argv[*i];
         return XFGCU_EXIT_OK;
     }
-    rc = cli_opt_real("record", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000",
-                      &r->duration, &r->has_duration);
+    rc = cli_opt_real("record", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000", &r->duration,
+                      &r->has_duration);
     if (rc < 0) {
         rc = cli_opt_long("record", argc, argv, i, "--count", 1, 1000000000L, "a number of packets, 1..1000000000",
                           &r->count, &r->has_count);
@@ -196,8 +196,7 @@ static int finish_file(record *r, int rc, uint32_t elapsed)
         return cli_fail("record: cannot write %s: %s", r->file, strerror(err));
     }
     printf("recorded %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
-           r->desc, (unsigned)r->w.chunks, (unsigned)r->w.bytes, (unsigned)r->sent, (unsigned)r->received,
-           r->file);
+           r->desc, (unsigned)r->w.chunks, (unsigned)r->w.bytes, (unsigned)r->sent, (unsigned)r->received, r->file);
     return rc;
 }
 

@@ -116,7 +116,8 @@ static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
         if (r->packets[0] + r->packets[1] > 0u) {
             putchar('\n');
         }
-        snprintf(where, sizeof(where), "t %.3f s, %s", cli_seconds(t), dir == XF_DIR_HOST ? "host to GCU" : "GCU to host");
+        snprintf(where, sizeof(where), "t %.3f s, %s", cli_seconds(t),
+                 dir == XF_DIR_HOST ? "host to GCU" : "GCU to host");
         table_print(f->data, f->len, dir, where, stdout);
         break;
     }

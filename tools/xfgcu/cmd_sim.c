@@ -145,20 +145,20 @@ static int take_value_option(sim_args *a, int argc, char **argv, int *i)
     const char *v = NULL;
     int rc = cli_opt_long("sim", argc, argv, i, "--drop", 0, 1000, "per mille, 0..1000", &a->drop, &a->has_drop);
     if (rc < 0) {
-        rc = cli_opt_long("sim", argc, argv, i, "--delay", 0, 10000, "milliseconds, 0..10000", &a->delay,
-                          &a->has_delay);
+        rc =
+            cli_opt_long("sim", argc, argv, i, "--delay", 0, 10000, "milliseconds, 0..10000", &a->delay, &a->has_delay);
     }
     if (rc < 0) {
         rc = cli_opt_long("sim", argc, argv, i, "--calibration-ms", 0, 600000, "milliseconds, 0..600000",
                           &a->calibration_ms, &a->has_calibration);
     }
     if (rc < 0) {
-        rc = cli_opt_real("sim", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000",
-                          &a->duration, &a->has_duration);
+        rc = cli_opt_real("sim", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000", &a->duration,
+                          &a->has_duration);
     }
     if (rc < 0) {
-        rc = cli_opt_long("sim", argc, argv, i, "--baud", 1, 100000000L, "115200, 250000, 500000 or 1000000",
-                          &a->baud, &a->has_baud);
+        rc = cli_opt_long("sim", argc, argv, i, "--baud", 1, 100000000L, "115200, 250000, 500000 or 1000000", &a->baud,
+                          &a->has_baud);
         if (rc == XFGCU_EXIT_OK && !xf_serial_baud_ok((uint32_t)a->baud)) {
             rc = cli_fail("sim: --baud %ld: must be 115200, 250000, 500000 or 1000000", a->baud);
         }
@@ -261,7 +261,8 @@ static void print_ready(const sim_run *s, const sim_args *a)
     switch ((sim_kind)a->kind) {
     case SIM_SERIAL: printf("xfgcu sim: listening on serial %s at %ld baud\n", a->serial, a->baud); break;
     case SIM_PTY:
-        printf("xfgcu sim: listening on pty %s%s%s\n", s->link.pty_path, a->link ? " link " : "", a->link ? a->link : "");
+        printf("xfgcu sim: listening on pty %s%s%s\n", s->link.pty_path, a->link ? " link " : "",
+               a->link ? a->link : "");
         break;
     default:
         printf(strchr(s->link.bind_host, ':') != NULL ? "xfgcu sim: listening on %s [%s]:%u\n"
@@ -300,8 +301,7 @@ static void report_executed(sim_run *s, uint32_t elapsed)
             const char *name = xf_order_name((uint8_t)k);
             s->executed[k] = s->sim.stats.executed[k];
             printf("xfgcu sim: %.3f s: executed %s (0x%02X), state 0x%02X\n", cli_seconds(elapsed),
-                   name ? name : "unknown order", (unsigned)k,
-                   s->sim.fb_order == k ? s->sim.fb_state : 0u);
+                   name ? name : "unknown order", (unsigned)k, s->sim.fb_order == k ? s->sim.fb_state : 0u);
             fflush(stdout);
         }
     }

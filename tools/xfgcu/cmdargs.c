@@ -131,8 +131,8 @@ typedef enum opt_kind {
     K_TENTHS     /* degC in [lo, hi] -> 0.1 degC */
 } opt_kind;
 
-#define OPT_REQUIRED 0x01u
-#define OPT_CHOICE 0x02u
+#define OPT_REQUIRED   0x01u
+#define OPT_CHOICE     0x02u
 #define OPT_BY_VERSION 0x04u /* the codec's range depends on the protocol version */
 
 typedef struct opt_spec {
@@ -157,11 +157,14 @@ struct cmd_spec {
 };
 
 #define NEED(i) ((uint8_t)(1u << (i)))
-#define SWITCH(nm, v, needs, what) {nm, K_SWITCH, XF_F_VALUE, OPT_CHOICE, needs, v, v, NULL, what}
+#define SWITCH(nm, v, needs, what)                                                                                     \
+    {                                                                                                                  \
+        nm, K_SWITCH, XF_F_VALUE, OPT_CHOICE, needs, v, v, NULL, what                                                  \
+    }
 #define OPTS(a) (uint8_t)(sizeof(a) / sizeof((a)[0])), a
 #define NO_OPTS 0, NULL
 
-#define GRID_BOX "box corners on the 0..10000 screen grid, X0 <= X1 and Y0 <= Y1"
+#define GRID_BOX   "box corners on the 0..10000 screen grid, X0 <= X1 and Y0 <= Y1"
 #define GRID_POINT "a point on the 0..10000 screen grid"
 
 static const opt_spec gaze_geo_opts[] = {
@@ -559,7 +562,7 @@ static int set_real(parse_state *st, const opt_spec *o, const char *text)
     case K_DEG: raw = xf_deg7_raw(v); break;
     case K_METRES: raw = xf_mm_raw(v); break;
     case K_ZOOM_RATE: raw = xf_units_round(-v * 10.0, INT16_MIN, -10); break; /* 5.5x -> -55 */
-    default: raw = xf_units_round(v * 10.0, INT16_MIN, INT16_MAX); break;       /* K_TENTHS */
+    default: raw = xf_units_round(v * 10.0, INT16_MIN, INT16_MAX); break;     /* K_TENTHS */
     }
     xf_command_set(&st->cmd, (xf_field)o->field, raw);
     return XFGCU_EXIT_OK;
@@ -620,9 +623,9 @@ static int take_arg(parse_state *st, int argc, char **argv, int *i)
     }
     o = find_opt(st, arg, &index);
     if (o == NULL) {
-        return (arg[0] == '-') ? fail_cmd(st, "unknown option '%s' (see 'xfgcu %s %s --help')", arg, st->context,
-                                          st->spec->name)
-                               : fail_cmd(st, "unexpected argument '%s'", arg);
+        return (arg[0] == '-')
+                   ? fail_cmd(st, "unknown option '%s' (see 'xfgcu %s %s --help')", arg, st->context, st->spec->name)
+                   : fail_cmd(st, "unexpected argument '%s'", arg);
     }
     if (o->kind == K_SWITCH) {
         if (strchr(arg, '=') != NULL) {
@@ -723,8 +726,7 @@ static int check_with_codec(const parse_state *st, uint8_t version)
     return fail_cmd(st, "%s%s%s", xf_strerror(err), bad != NULL ? ": " : "", bad != NULL ? bad : "");
 }
 
-int cmdargs_parse(const cmd_spec *spec, const char *context, int argc, char **argv, uint8_t version,
-                  xf_command *cmd)
+int cmdargs_parse(const cmd_spec *spec, const char *context, int argc, char **argv, uint8_t version, xf_command *cmd)
 {
     parse_state st;
     int i, rc;

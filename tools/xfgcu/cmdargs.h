@@ -35,8 +35,7 @@ const char *cmdargs_name(const cmd_spec *spec);
  * and check them for protocol @p version. @p context prefixes messages
  * ("encode"). Prints any error. @return an exit code.
  */
-int cmdargs_parse(const cmd_spec *spec, const char *context, int argc, char **argv, uint8_t version,
-                  xf_command *cmd);
+int cmdargs_parse(const cmd_spec *spec, const char *context, int argc, char **argv, uint8_t version, xf_command *cmd);
 
 /** Usage and option details of one command. */
 void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out);

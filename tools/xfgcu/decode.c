@@ -40,8 +40,7 @@ void help_decode(FILE *out)
           out);
 }
 
-static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, int json,
-                        size_t index)
+static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, int json, size_t index)
 {
     if (json) {
         return jsonpkt_print(buf, len, dir, stdout);
@@ -80,8 +79,8 @@ static int packet_fault(const arg_packet *p, const char *where, xf_err err)
             return cli_fail("decode: %s: bad length: the length field says %zu, must be %u..%u", where, field,
                             XF_PACKET_MIN_LEN, XF_PACKET_MAX_LEN);
         }
-        return cli_fail("decode: %s: bad length: %zu bytes, the length field says %zu (one packet per argument)",
-                        where, p->len, field);
+        return cli_fail("decode: %s: bad length: %zu bytes, the length field says %zu (one packet per argument)", where,
+                        p->len, field);
     case XF_ERR_CRC:
         return cli_fail("decode: %s: bad CRC: the packet says %02X %02X, its bytes give %02X %02X", where,
                         p->bytes[field - 2u], p->bytes[field - 1u], (unsigned)(xf_crc16(p->bytes, field - 2u) >> 8),
@@ -222,8 +221,8 @@ static int decode_arguments(int count, char **hex, int json)
 /* ---- a byte stream on stdin ------------------------------------------------ */
 
 #define STREAM_CHUNK 64u /* bytes fed to the parsers at a time: bounds the queue */
-#define QUEUE_MAX 32u    /* > frames that can wait: (ring 256 + chunk 64) / 72 per parser, two parsers */
-#define TEXT_CHUNK 4096u
+#define QUEUE_MAX    32u /* > frames that can wait: (ring 256 + chunk 64) / 72 per parser, two parsers */
+#define TEXT_CHUNK   4096u
 
 typedef struct found {
     size_t start; /* stream offset of the first byte */

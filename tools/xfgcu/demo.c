@@ -188,8 +188,7 @@ void demo_log_text(demo *d, char *buf, size_t cap)
     d->logging = 0;
     for (i = 0; i < d->log_n && n + 1u < cap; i++) {
         const char *name = xf_order_name(d->log_order[i]);
-        int w = snprintf(buf + n, cap - n, "%s%s x%u", i > 0 ? ", " : "", name ? name : "?",
-                         (unsigned)d->log_count[i]);
+        int w = snprintf(buf + n, cap - n, "%s%s x%u", i > 0 ? ", " : "", name ? name : "?", (unsigned)d->log_count[i]);
         n += (w > 0) ? (size_t)w : 0u;
     }
 }

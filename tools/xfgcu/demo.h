@@ -18,10 +18,10 @@
 typedef struct demo {
     xf_simlink gcu_link; /* the simulator's end: a TCP server on 127.0.0.1 */
     xf_sim sim;
-    xf_tcp tcp;          /* the client's end */
+    xf_tcp tcp; /* the client's end */
     xf_client client;
-    uint32_t t0;         /* start of the tour */
-    uint32_t mark;       /* start of what a step times */
+    uint32_t t0;   /* start of the tour */
+    uint32_t mark; /* start of what a step times */
     int step;
     /* what the client sends in every packet, refreshed by the loop */
     int rates_on;

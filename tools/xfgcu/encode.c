@@ -90,7 +90,7 @@ typedef struct encode_args {
     const char *json; /* --json OBJECT */
     int help;
     const cmd_spec *spec;
-    int cargc;        /* the command's name and arguments, --protocol and --help taken out */
+    int cargc; /* the command's name and arguments, --protocol and --help taken out */
     char **cargv;
 } encode_args;
 

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #define HOST(m) offsetof(xf_host_packet, m)
-#define GCU(m) offsetof(xf_gcu_packet, m)
+#define GCU(m)  offsetof(xf_gcu_packet, m)
 
 static const field_desc host_fields[] = {
     {"roll_ctrl", HOST(main.roll_ctrl), FT_S16, FU_CTRL, 0, 1},
@@ -98,12 +98,36 @@ long long field_get(const void *pkt, const field_desc *f)
 {
     const unsigned char *p = (const unsigned char *)pkt + f->offset;
     switch ((field_type)f->type) {
-    case FT_U8: { uint8_t v; memcpy(&v, p, sizeof(v)); return v; }
-    case FT_S8: { int8_t v; memcpy(&v, p, sizeof(v)); return v; }
-    case FT_U16: { uint16_t v; memcpy(&v, p, sizeof(v)); return v; }
-    case FT_S16: { int16_t v; memcpy(&v, p, sizeof(v)); return v; }
-    case FT_U32: { uint32_t v; memcpy(&v, p, sizeof(v)); return v; }
-    case FT_S32: { int32_t v; memcpy(&v, p, sizeof(v)); return v; }
+    case FT_U8: {
+        uint8_t v;
+        memcpy(&v, p, sizeof(v));
+        return v;
+    }
+    case FT_S8: {
+        int8_t v;
+        memcpy(&v, p, sizeof(v));
+        return v;
+    }
+    case FT_U16: {
+        uint16_t v;
+        memcpy(&v, p, sizeof(v));
+        return v;
+    }
+    case FT_S16: {
+        int16_t v;
+        memcpy(&v, p, sizeof(v));
+        return v;
+    }
+    case FT_U32: {
+        uint32_t v;
+        memcpy(&v, p, sizeof(v));
+        return v;
+    }
+    case FT_S32: {
+        int32_t v;
+        memcpy(&v, p, sizeof(v));
+        return v;
+    }
     default: return 0;
     }
 }
@@ -112,12 +136,36 @@ void field_set(void *pkt, const field_desc *f, long long v)
 {
     unsigned char *p = (unsigned char *)pkt + f->offset;
     switch ((field_type)f->type) {
-    case FT_U8: { uint8_t x = (uint8_t)v; memcpy(p, &x, sizeof(x)); break; }
-    case FT_S8: { int8_t x = (int8_t)v; memcpy(p, &x, sizeof(x)); break; }
-    case FT_U16: { uint16_t x = (uint16_t)v; memcpy(p, &x, sizeof(x)); break; }
-    case FT_S16: { int16_t x = (int16_t)v; memcpy(p, &x, sizeof(x)); break; }
-    case FT_U32: { uint32_t x = (uint32_t)v; memcpy(p, &x, sizeof(x)); break; }
-    case FT_S32: { int32_t x = (int32_t)v; memcpy(p, &x, sizeof(x)); break; }
+    case FT_U8: {
+        uint8_t x = (uint8_t)v;
+        memcpy(p, &x, sizeof(x));
+        break;
+    }
+    case FT_S8: {
+        int8_t x = (int8_t)v;
+        memcpy(p, &x, sizeof(x));
+        break;
+    }
+    case FT_U16: {
+        uint16_t x = (uint16_t)v;
+        memcpy(p, &x, sizeof(x));
+        break;
+    }
+    case FT_S16: {
+        int16_t x = (int16_t)v;
+        memcpy(p, &x, sizeof(x));
+        break;
+    }
+    case FT_U32: {
+        uint32_t x = (uint32_t)v;
+        memcpy(p, &x, sizeof(x));
+        break;
+    }
+    case FT_S32: {
+        int32_t x = (int32_t)v;
+        memcpy(p, &x, sizeof(x));
+        break;
+    }
     default: break;
     }
 }
@@ -125,12 +173,30 @@ void field_set(void *pkt, const field_desc *f, long long v)
 void field_range(const field_desc *f, long long *lo, long long *hi)
 {
     switch ((field_type)f->type) {
-    case FT_U8: *lo = 0; *hi = UINT8_MAX; break;
-    case FT_S8: *lo = INT8_MIN; *hi = INT8_MAX; break;
-    case FT_U16: *lo = 0; *hi = UINT16_MAX; break;
-    case FT_S16: *lo = INT16_MIN; *hi = INT16_MAX; break;
-    case FT_U32: *lo = 0; *hi = UINT32_MAX; break;
-    default: *lo = INT32_MIN; *hi = INT32_MAX; break;
+    case FT_U8:
+        *lo = 0;
+        *hi = UINT8_MAX;
+        break;
+    case FT_S8:
+        *lo = INT8_MIN;
+        *hi = INT8_MAX;
+        break;
+    case FT_U16:
+        *lo = 0;
+        *hi = UINT16_MAX;
+        break;
+    case FT_S16:
+        *lo = INT16_MIN;
+        *hi = INT16_MAX;
+        break;
+    case FT_U32:
+        *lo = 0;
+        *hi = UINT32_MAX;
+        break;
+    default:
+        *lo = INT32_MIN;
+        *hi = INT32_MAX;
+        break;
     }
 }
 

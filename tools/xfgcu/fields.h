@@ -19,22 +19,22 @@ typedef enum field_type { FT_U8, FT_S8, FT_U16, FT_S16, FT_U32, FT_S32 } field_t
 
 /** How the readable table shows a raw value. */
 typedef enum field_unit {
-    FU_RAW,        /**< the number itself */
-    FU_BYTE_HEX,   /**< a header byte: 0x01 */
-    FU_CTRL,       /**< control quantity: angle or rate, per mode */
-    FU_CDEG,       /**< 0.01 deg */
-    FU_ACCEL,      /**< 0.01 m/s^2 */
-    FU_VEL,        /**< 0.01 m/s */
-    FU_DEG7,       /**< 1e-7 deg */
-    FU_MM,         /**< mm */
-    FU_DISTANCE,   /**< 0.1 m, <= 0: no measurement */
-    FU_ZOOM,       /**< 0.1 x */
-    FU_GCU_RATE,   /**< 0.01 deg/s (V0.1) or 0.1 deg/s (V0.2) */
-    FU_GNSS_MS,    /**< ms of GNSS week */
-    FU_GNSS_WEEK,  /**< GNSS week (with gnss_ms: a UTC time) */
-    FU_HOURS,      /**< hours from UTC */
-    FU_MODE,       /**< gimbal_mode, named */
-    FU_MODEL,      /**< gimbal_code, named */
+    FU_RAW,       /**< the number itself */
+    FU_BYTE_HEX,  /**< a header byte: 0x01 */
+    FU_CTRL,      /**< control quantity: angle or rate, per mode */
+    FU_CDEG,      /**< 0.01 deg */
+    FU_ACCEL,     /**< 0.01 m/s^2 */
+    FU_VEL,       /**< 0.01 m/s */
+    FU_DEG7,      /**< 1e-7 deg */
+    FU_MM,        /**< mm */
+    FU_DISTANCE,  /**< 0.1 m, <= 0: no measurement */
+    FU_ZOOM,      /**< 0.1 x */
+    FU_GCU_RATE,  /**< 0.01 deg/s (V0.1) or 0.1 deg/s (V0.2) */
+    FU_GNSS_MS,   /**< ms of GNSS week */
+    FU_GNSS_WEEK, /**< GNSS week (with gnss_ms: a UTC time) */
+    FU_HOURS,     /**< hours from UTC */
+    FU_MODE,      /**< gimbal_mode, named */
+    FU_MODEL,     /**< gimbal_code, named */
     FU_HOST_STATUS,
     FU_POD_STATUS,
     FU_ERROR_CODE,
@@ -71,8 +71,8 @@ void field_range(const field_desc *f, long long *lo, long long *hi);
  * sub frame's reserved block depends on the version: a GCU packet of V0.1
  * has bytes 63-68 reserved, V0.2 only 67-68. */
 #define RESERVED_MAIN 0
-#define RESERVED_SUB 1
-#define RESERVED_MAX 8
+#define RESERVED_SUB  1
+#define RESERVED_MAX  8
 
 /** Name of a reserved block: "reserved_main" or "reserved_sub". */
 const char *reserved_name(int block);

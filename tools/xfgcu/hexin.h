@@ -34,8 +34,8 @@ typedef struct hex_fault {
 typedef struct hex_reader {
     size_t offset, line, column;                   /* position of the next character */
     size_t group_offset, group_line, group_column; /* where the current group started */
-    size_t digits;    /* digits of the current group, after any 0x */
-    unsigned nibble;  /* high nibble waiting for its partner (digits odd) */
+    size_t digits;                                 /* digits of the current group, after any 0x */
+    unsigned nibble;                               /* high nibble waiting for its partner (digits odd) */
     int in_group;
     int lone_zero;    /* the group so far is the single digit 0: "x" may follow */
     int after_prefix; /* the group so far is "0x" */

@@ -241,7 +241,8 @@ static int check_keys(const reader *r)
     const char *key;
     json_t *value;
     const char *side = (r->dir == XF_DIR_HOST) ? "host" : "gcu";
-    json_object_foreach((json_t *)r->obj, key, value) {
+    json_object_foreach((json_t *)r->obj, key, value)
+    {
         const field_desc *f = field_find(r->dir, key);
         (void)value;
         if (f != NULL && !field_present(f, r->version)) {
@@ -258,8 +259,8 @@ static int check_keys(const reader *r)
 }
 
 /* An optional integer member in [lo, hi]; *present tells whether it was there. */
-static int get_int(const reader *r, const json_t *obj, const char *prefix, const char *key, long long lo,
-                   long long hi, long long *out, int *present)
+static int get_int(const reader *r, const json_t *obj, const char *prefix, const char *key, long long lo, long long hi,
+                   long long *out, int *present)
 {
     json_t *v = json_object_get(obj, key);
     *present = (v != NULL);
@@ -341,16 +342,31 @@ static void member_range(xf_field f, long long *lo, long long *hi)
 {
     switch (f) {
     case XF_F_CAMERAS:
-    case XF_F_VALUE: *lo = 0; *hi = UINT8_MAX; break;
-    case XF_F_HOURS: *lo = INT8_MIN; *hi = INT8_MAX; break;
+    case XF_F_VALUE:
+        *lo = 0;
+        *hi = UINT8_MAX;
+        break;
+    case XF_F_HOURS:
+        *lo = INT8_MIN;
+        *hi = INT8_MAX;
+        break;
     case XF_F_X0:
     case XF_F_Y0:
     case XF_F_X1:
-    case XF_F_Y1: *lo = 0; *hi = UINT16_MAX; break;
+    case XF_F_Y1:
+        *lo = 0;
+        *hi = UINT16_MAX;
+        break;
     case XF_F_LONGITUDE:
     case XF_F_LATITUDE:
-    case XF_F_ALTITUDE: *lo = INT32_MIN; *hi = INT32_MAX; break;
-    default: *lo = INT16_MIN; *hi = INT16_MAX; break;
+    case XF_F_ALTITUDE:
+        *lo = INT32_MIN;
+        *hi = INT32_MAX;
+        break;
+    default:
+        *lo = INT16_MIN;
+        *hi = INT16_MAX;
+        break;
     }
 }
 
@@ -385,7 +401,8 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
         return fail_at(r, "command must be an object of %s's parameters", info->name);
     }
     xf_command_init(&cmd, r->order);
-    json_object_foreach((json_t *)c, key, value) {
+    json_object_foreach((json_t *)c, key, value)
+    {
         xf_field f = XF_F_CAMERAS;
         long long v = 0, lo, hi;
         int present, rc = command_member(r, info, key, &f);

@@ -175,7 +175,6 @@ static int parse_host(const char *opt, const char *text, int port_allowed)
     return XFGCU_EXIT_OK;
 }
 
-
 /* One link option at argv[*i]; returns -1 when argv[*i] is none. */
 static int take_link_option(cli_link *l, int argc, char **argv, int *i)
 {

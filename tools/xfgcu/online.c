@@ -51,8 +51,7 @@ int cli_real_in(const char *context, const char *opt, const char *text, double l
     return XFGCU_EXIT_OK;
 }
 
-int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what,
-                long *out)
+int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what, long *out)
 {
     long long v;
     if (text == NULL) {

@@ -32,8 +32,7 @@ int cli_stop_requested(void);
 int cli_real_in(const char *context, const char *opt, const char *text, double lo, double hi, const char *what,
                 double *out);
 /** Same for an integer. */
-int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what,
-                long *out);
+int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what, long *out);
 /**
  * Is argv[*i] option @p name ("--name V" or "--name=V")? If not, -1. If so,
  * its value parsed as a real in [lo, hi] into *out, *given set (a second
@@ -57,8 +56,8 @@ double cli_wrap180(double deg);
 typedef struct online_hooks {
     xf_on_bytes_fn on_bytes; /**< every packet sent and received */
     xf_on_link_fn on_link;
-    xf_tap_fn tap;           /**< every chunk the link moved, both ways (record) */
-    void *user;              /**< for on_bytes, on_link and tap */
+    xf_tap_fn tap; /**< every chunk the link moved, both ways (record) */
+    void *user;    /**< for on_bytes, on_link and tap */
 } online_hooks;
 
 typedef enum online_kind { ONLINE_SERIAL, ONLINE_UDP, ONLINE_TCP } online_kind;
@@ -67,17 +66,17 @@ typedef struct online {
     const cli_link *opt;
     const char *context; /* the command's name, for messages */
     online_kind kind;
-    char desc[320];      /* "tcp 127.0.0.1:2332": where, for messages and captures */
-    char option[300];    /* "--tcp 127.0.0.1:2332": the option that named the link */
+    char desc[320];   /* "tcp 127.0.0.1:2332": where, for messages and captures */
+    char option[300]; /* "--tcp 127.0.0.1:2332": the option that named the link */
     xf_serial serial;
     xf_udp udp;
     xf_tcp tcp;
     int opened;
-    xf_hal raw;          /* the link's own hal */
+    xf_hal raw; /* the link's own hal */
     xf_tap tap;
-    xf_hal hal;          /* what the client uses: raw, or tapped */
+    xf_hal hal; /* what the client uses: raw, or tapped */
     xf_client client;
-    uint32_t up_ms;      /* how long the first reply took */
+    uint32_t up_ms; /* how long the first reply took */
 } online;
 
 /** The link options name a link? Prints the usage error if not. @return an exit code. */

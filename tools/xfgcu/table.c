@@ -23,26 +23,33 @@ typedef struct bit_name {
 
 static const bit_name host_status_bits[] = {
     {XF_STATUS_INS_VALID, "ins_valid"}, {XF_STATUS_CTRL_VALID, "ctrl_valid"}, {0, NULL}};
-static const bit_name pod_bits[] = {
-    {XF_POD_TRACKING_OK, "tracking_ok"},  {XF_POD_TARGET_VALID, "target_valid"},
-    {XF_POD_RANGING_ON, "ranging_on"},    {XF_POD_NIGHT_VISION_ON, "night_vision_on"},
-    {XF_POD_LIGHTING_ON, "lighting_on"},  {XF_POD_UPWARD_MOUNT, "upward_mount"},
-    {0, NULL}};
-static const bit_name error_bits[] = {
-    {XF_ERROR_POD_HW_FAULT, "pod_hw_fault"},         {XF_ERROR_MAVLINK_RATE, "mavlink_rate_abnormal"},
-    {XF_ERROR_GNSS_NOT_FIXED, "gnss_not_positioned"}, {XF_ERROR_GCU_HW_FAULT, "gcu_hw_fault"},
-    {0, NULL}};
-static const bit_name thermal_bits[] = {
-    {XF_THERMAL_LOW_TEMP_ALARM, "low_temp_alarm"}, {XF_THERMAL_HIGH_TEMP_ALARM, "high_temp_alarm"},
-    {XF_THERMAL_SPOT_ON, "spot_temp_on"},          {XF_THERMAL_ISOTHERM_ON, "isotherm_on"},
-    {XF_THERMAL_ALARM_ON, "temp_alarm_on"},        {XF_THERMAL_AREA_ON, "area_temp_on"},
-    {XF_THERMAL_MEASURE_AVAILABLE, "temp_measurement_available"},
-    {0, NULL}};
-static const bit_name camera_bits[] = {
-    {XF_CAMERA_RECORDING, "recording"},         {XF_CAMERA_AUTO_FLIP_OFF, "auto_flip_off"},
-    {XF_CAMERA_OSD_TARGET, "osd_shows_target"}, {XF_CAMERA_OSD_ON, "osd_on"},
-    {XF_CAMERA_DIGITAL_ZOOM_ON, "digital_zoom_on"}, {XF_CAMERA_DETECTION_ON, "target_detection_on"},
-    {0, NULL}};
+static const bit_name pod_bits[] = {{XF_POD_TRACKING_OK, "tracking_ok"},
+                                    {XF_POD_TARGET_VALID, "target_valid"},
+                                    {XF_POD_RANGING_ON, "ranging_on"},
+                                    {XF_POD_NIGHT_VISION_ON, "night_vision_on"},
+                                    {XF_POD_LIGHTING_ON, "lighting_on"},
+                                    {XF_POD_UPWARD_MOUNT, "upward_mount"},
+                                    {0, NULL}};
+static const bit_name error_bits[] = {{XF_ERROR_POD_HW_FAULT, "pod_hw_fault"},
+                                      {XF_ERROR_MAVLINK_RATE, "mavlink_rate_abnormal"},
+                                      {XF_ERROR_GNSS_NOT_FIXED, "gnss_not_positioned"},
+                                      {XF_ERROR_GCU_HW_FAULT, "gcu_hw_fault"},
+                                      {0, NULL}};
+static const bit_name thermal_bits[] = {{XF_THERMAL_LOW_TEMP_ALARM, "low_temp_alarm"},
+                                        {XF_THERMAL_HIGH_TEMP_ALARM, "high_temp_alarm"},
+                                        {XF_THERMAL_SPOT_ON, "spot_temp_on"},
+                                        {XF_THERMAL_ISOTHERM_ON, "isotherm_on"},
+                                        {XF_THERMAL_ALARM_ON, "temp_alarm_on"},
+                                        {XF_THERMAL_AREA_ON, "area_temp_on"},
+                                        {XF_THERMAL_MEASURE_AVAILABLE, "temp_measurement_available"},
+                                        {0, NULL}};
+static const bit_name camera_bits[] = {{XF_CAMERA_RECORDING, "recording"},
+                                       {XF_CAMERA_AUTO_FLIP_OFF, "auto_flip_off"},
+                                       {XF_CAMERA_OSD_TARGET, "osd_shows_target"},
+                                       {XF_CAMERA_OSD_ON, "osd_on"},
+                                       {XF_CAMERA_DIGITAL_ZOOM_ON, "digital_zoom_on"},
+                                       {XF_CAMERA_DETECTION_ON, "target_detection_on"},
+                                       {0, NULL}};
 
 static void append(char *buf, size_t cap, const char *s)
 {
@@ -232,8 +239,8 @@ static void print_head(const uint8_t *buf, size_t len, xf_direction dir, const c
     size_t n = len - XF_PACKET_MIN_LEN;
     const char *name = xf_order_name(order);
     char hex[3 * XF_PARAMS_MAX + 1], text[256], raw[8];
-    fprintf(out, "%s packet (%s): %zu bytes, version %u, CRC 0x%02X%02X\n", dir == XF_DIR_HOST ? "host" : "gcu",
-            where, len, (unsigned)version, buf[len - 2u], buf[len - 1u]);
+    fprintf(out, "%s packet (%s): %zu bytes, version %u, CRC 0x%02X%02X\n", dir == XF_DIR_HOST ? "host" : "gcu", where,
+            len, (unsigned)version, buf[len - 2u], buf[len - 1u]);
     row(out, "field", "raw", "value");
     snprintf(raw, sizeof(raw), "0x%02X", order);
     row(out, "order", raw, name != NULL ? name : "unknown order");
