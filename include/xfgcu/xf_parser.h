@@ -17,7 +17,9 @@
  * soon as it is complete, and returned if intact. Which frame comes out
  * never depends on how the bytes were chunked.
  *
- * Cost. On a clean stream every byte is copied once and CRC'd once. After a
+ * Cost. On a clean stream a packet that arrives whole in one chunk is
+ * checked where it lies (no copy); others are copied once; every byte is
+ * CRC'd once. After a
  * CRC failure the parser keeps, for each held byte, the CRC of the stream
  * before it (computed once per byte), and checks every further candidate in
  * constant time from two of those values (crc(i..j) = P(j) ^ P(i) * x^(8(j-i))),
@@ -55,7 +57,12 @@ typedef struct xf_parser_stats {
     uint32_t bytes_skipped; /**< bytes dropped as part of no valid frame */
 } xf_parser_stats;
 
-/** A frame returned by the parser; the bytes stay valid until the next call on the parser. */
+/**
+ * A frame returned by the parser. The bytes are in the parser or, when a
+ * whole packet arrived in one chunk, in the caller's own data; either way
+ * they stay valid until the next call on the parser, as long as the caller
+ * does not change its data meanwhile.
+ */
 typedef struct xf_frame {
     const uint8_t *data;
     size_t len;
@@ -390,6 +397,35 @@ XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame)
     }
 }
 
+/* Nothing held, and the caller's bytes at d hold a whole intact packet that
+ * no contender could beat (no header byte where one would have to start):
+ * return it from there, with no copy (the common case on a clean link). */
+static inline int xf__direct(xf_parser *p, const uint8_t *d, size_t avail, xf_frame *frame)
+{
+    size_t len;
+    uint16_t want;
+    if (avail < 4u || d[1] != p->h1) {
+        return 0;
+    }
+    len = (size_t)d[2] | ((size_t)d[3] << 8);
+    if (len < XF_PACKET_MIN_LEN || len > XF_PACKET_MAX_LEN || len > avail) {
+        return 0;
+    }
+    /* A contender starts at offset 1 .. len - 73 (see xf__contend). */
+    if (len > XF_PACKET_MIN_LEN + 1u && XF_MEMCHR(d + 1, p->h0, len - XF_PACKET_MIN_LEN - 1u) != NULL) {
+        return 0;
+    }
+    want = (uint16_t)(((uint16_t)d[len - 2u] << 8) | d[len - 1u]);
+    if (xf_crc16(d, len - 2u) != want) {
+        return 0; /* the general path rescans it */
+    }
+    frame->data = d;
+    frame->len = len;
+    p->stats.frames++;
+    p->stats.bytes_in += (uint32_t)len;
+    return 1;
+}
+
 XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     size_t used = 0;
@@ -415,6 +451,11 @@ XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t 
             p->stats.bytes_in += (uint32_t)skip;
             used += skip;
             if (hit == NULL) {
+                break;
+            }
+            if (xf__direct(p, hit, len - used, frame)) {
+                used += frame->len;
+                found = 1;
                 break;
             }
             need = 4; /* header and length: every packet is longer than that */
