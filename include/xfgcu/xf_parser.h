@@ -182,7 +182,7 @@ static inline void xf__memo_start(xf_parser *p)
     for (pos = p->head; pos != p->end; pos++) {
         uint8_t b = xf__rb(p, pos);
         p->memo[pos & XF__RMASK] = c;
-        c = xf_crc16_update(c, &b, 1);
+        c = xf__crc_byte(c, b);
     }
     p->memo_crc = c;
     p->memo_on = 1;
@@ -199,7 +199,7 @@ static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
             size_t k = (p->end + i) & XF__RMASK;
             p->memo[k] = c;
             p->ring[k] = data[i];
-            c = xf_crc16_update(c, data + i, 1);
+            c = xf__crc_byte(c, data[i]);
         }
         p->memo_crc = c;
     } else
