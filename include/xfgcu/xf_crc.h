@@ -91,23 +91,29 @@ XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
 }
 #undef XF__CRC_STEP
 #else
-/* One byte (the parser's memo mode goes byte by byte). */
-static inline uint16_t xf__crc_byte(uint16_t crc, uint8_t b) { return xf_crc16_update(crc, &b, 1); }
-
-/* The vendor's routine: a nibble at a time, high nibble first (kept in 16
- * bits: in 32, the compiler's code is longer here). */
-XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
+/* The vendor's table: the CRC of each 4-bit value. */
+static inline const uint16_t *xf__crc_nibbles(void)
 {
-    /* The vendor's table: the CRC of each 4-bit value. */
     static const uint16_t table[16] = {
         0x0000, 0x1021, 0x2042, 0x3063, 0x4084, 0x50A5, 0x60C6, 0x70E7,
         0x8108, 0x9129, 0xA14A, 0xB16B, 0xC18C, 0xD1AD, 0xE1CE, 0xF1EF,
     };
+    return table;
+}
+
+/* The vendor's routine for one byte: high nibble, then low nibble. */
+static inline uint16_t xf__crc_byte(uint16_t crc, uint8_t b)
+{
+    const uint16_t *table = xf__crc_nibbles();
+    crc = (uint16_t)((uint16_t)(crc << 4) ^ table[(uint8_t)((crc >> 12) ^ (b >> 4))]);
+    return (uint16_t)((uint16_t)(crc << 4) ^ table[(uint8_t)((crc >> 12) ^ (b & 0x0Fu))]);
+}
+
+XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
+{
     size_t i;
     for (i = 0; i < len; i++) {
-        uint8_t b = data[i];
-        crc = (uint16_t)((uint16_t)(crc << 4) ^ table[(uint8_t)((crc >> 12) ^ (b >> 4))]);
-        crc = (uint16_t)((uint16_t)(crc << 4) ^ table[(uint8_t)((crc >> 12) ^ (b & 0x0Fu))]);
+        crc = xf__crc_byte(crc, data[i]);
     }
     return crc;
 }
