@@ -4,9 +4,10 @@
 # The HAL tests (ptys, namespaces, an LD_PRELOAD shim) are left to the native runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Exits 0 where the first byte of the int 1 is 0, that is on a big-endian machine.
 printf 'int x = 1; int main(void) { return *(char *)&x; }\n' > /tmp/xfgcu-endian.c
 s390x-linux-gnu-gcc /tmp/xfgcu-endian.c -o /tmp/xfgcu-endian
-if qemu-s390x /tmp/xfgcu-endian; then
+if ! qemu-s390x /tmp/xfgcu-endian; then
   echo "bigendian: the s390x target is not big-endian?" >&2; exit 1
 fi
 echo "target: s390x, big-endian (checked), under $(qemu-s390x --version | head -1)"
