@@ -1,0 +1,590 @@
+/*
+ * xfgcu_bench - benchmark of the codec: streaming parser, pack, unpack.
+ *
+ *   xfgcu_bench parse FILE                 feed FILE to the parser (GCU -> host) in
+ *                                          chunks of at most 4096 bytes; prints the
+ *                                          number of valid frames first, then counters
+ *   xfgcu_bench decode FILE                parse + xf_gcu_unpack + xf_feedback_decode
+ *   xfgcu_bench gen KIND N_BYTES FILE      write an N_BYTES test stream (deterministic);
+ *                                          KIND: valid | noisy | adversarial | dense
+ *   xfgcu_bench pack N                     pack N host packets; prints N
+ *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
+ *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
+ *                                          stream (informative only)
+ *   xfgcu_bench selftest                   generate and parse every kind in memory;
+ *                                          exit 1 if the parser misses a frame
+ *
+ * N_BYTES and N accept a k or m suffix (KiB, MiB). Streams (docs/performance.md):
+ *   valid        back-to-back GCU replies of 72 bytes (null order) and 73 bytes (a
+ *                feedback byte), every field varied
+ *   noisy        the same with random noise bursts between frames (1 in 4, 1..64
+ *                bytes), 1 in 16 frames with a flipped bit, 1 in 32 cut short
+ *   adversarial  worst case mixed with real frames: runs of dense false candidates
+ *                (8A 5E LL 00 repeated), nested bogus lengths (each claim shorter
+ *                than the one before, so each is checked as a contender), near-valid
+ *                frames with a bad CRC, false headers with bad lengths, 8A runs
+ *   dense        only the densest false candidates: 8A 5E LL 00 with LL random in
+ *                [72, 255]; no frame at all (the parser's worst case)
+ *
+ * The parse loop allocates nothing: the file is read into memory once.
+ */
+#define _POSIX_C_SOURCE 200112L
+
+#include <errno.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "xfgcu/xfgcu.h"
+
+#if defined(__GNUC__)
+#define XB_NOINLINE __attribute__((noinline))
+#else
+#define XB_NOINLINE
+#endif
+
+#define XB_CHUNK 4096u
+
+/* ---- deterministic PRNG (xorshift64*) ---------------------------------- */
+
+typedef struct xb_rng {
+    uint64_t s;
+} xb_rng;
+
+static uint32_t xb_next(xb_rng *r)
+{
+    r->s ^= r->s >> 12;
+    r->s ^= r->s << 25;
+    r->s ^= r->s >> 27;
+    return (uint32_t)((r->s * 2685821657736338717ull) >> 32);
+}
+
+/* Uniform-ish in [0, n). */
+static uint32_t xb_below(xb_rng *r, uint32_t n) { return (uint32_t)(((uint64_t)xb_next(r) * n) >> 32); }
+
+/* ---- stream writer: stops at exactly cap bytes --------------------------- */
+
+typedef struct xb_out {
+    uint8_t *d;
+    size_t n, cap;
+    size_t frames; /* real frames written whole */
+} xb_out;
+
+static int xb_full(const xb_out *o) { return o->n >= o->cap; }
+
+static void xb_put(xb_out *o, const uint8_t *d, size_t n)
+{
+    size_t room = o->cap - o->n;
+    size_t k = (n < room) ? n : room;
+    memcpy(o->d + o->n, d, k);
+    o->n += k;
+}
+
+static void xb_put1(xb_out *o, uint8_t b) { xb_put(o, &b, 1); }
+
+/* A GCU reply with every field drawn from r: 72 bytes (null order) or 73. */
+static size_t xb_gcu_frame(xb_rng *r, uint8_t *buf)
+{
+    static const uint8_t modes[] = {0x10, 0x11, 0x12, 0x13, 0x14, 0x16, 0x17, 0x1C};
+    static const uint8_t orders[] = {0x01, 0x03, 0x10, 0x11, 0x15, 0x17, 0x1A,
+                                     0x1B, 0x20, 0x21, 0x22, 0x25, 0x2A, 0x81};
+    xf_gcu_packet g;
+    size_t n = 0;
+    memset(&g, 0, sizeof(g));
+    g.version = (xb_below(r, 4) == 0) ? XF_PROTOCOL_V2 : XF_PROTOCOL_V1;
+    g.main.gimbal_mode = modes[xb_below(r, sizeof(modes))];
+    g.main.pod_status = (uint16_t)(xb_next(r) & 0x1781u);
+    g.main.target_offset_x = (int16_t)((int32_t)xb_below(r, 2001) - 1000);
+    g.main.target_offset_y = (int16_t)((int32_t)xb_below(r, 2001) - 1000);
+    g.main.rel_angle_x = (int16_t)((int32_t)xb_below(r, 36000) - 18000);
+    g.main.rel_angle_y = (int16_t)((int32_t)xb_below(r, 36000) - 18000);
+    g.main.rel_angle_z = (int16_t)((int32_t)xb_below(r, 36000) - 18000);
+    g.main.cam_roll = (int16_t)((int32_t)xb_below(r, 18001) - 9000);
+    g.main.cam_pitch = (int16_t)((int32_t)xb_below(r, 36000) - 18000);
+    g.main.cam_yaw = (uint16_t)xb_below(r, 36000);
+    g.main.rate_x = (int16_t)((int32_t)xb_below(r, 2001) - 1000);
+    g.main.rate_y = (int16_t)((int32_t)xb_below(r, 2001) - 1000);
+    g.main.rate_z = (int16_t)((int32_t)xb_below(r, 2001) - 1000);
+    g.sub.sub_header = XF_SUB_HEADER;
+    g.sub.hw_version = 3;
+    g.sub.fw_version = (uint8_t)xb_below(r, 40);
+    g.sub.gimbal_code = 30;
+    g.sub.target_distance = (int32_t)xb_below(r, 30000) - 10;
+    g.sub.target_longitude = (int32_t)xb_next(r);
+    g.sub.target_latitude = (int32_t)xb_next(r);
+    g.sub.target_altitude = (int32_t)xb_below(r, 1000000);
+    g.sub.zoom_cam1 = (uint16_t)(10 + xb_below(r, 300));
+    g.sub.zoom_cam2 = (uint16_t)(10 + xb_below(r, 80));
+    if (g.version == XF_PROTOCOL_V2) {
+        g.sub.thermal_status = (uint8_t)xb_next(r);
+        g.sub.camera_status = (uint16_t)xb_next(r);
+        g.sub.time_zone = (int8_t)((int)xb_below(r, 27) - 12);
+    }
+    if (xb_below(r, 2) == 0) {
+        g.order = orders[xb_below(r, sizeof(orders))];
+        g.params_len = 1;
+        g.params[0] = (uint8_t)xb_below(r, 3);
+    }
+    if (xf_gcu_pack(&g, buf, XF_PACKET_MAX_LEN, &n) != XF_OK) {
+        fprintf(stderr, "xfgcu_bench: pack failed\n");
+        exit(2);
+    }
+    return n;
+}
+
+/* A real frame: counted when it fits whole. */
+static void xb_real(xb_out *o, xb_rng *r)
+{
+    uint8_t f[XF_PACKET_MAX_LEN];
+    size_t n = xb_gcu_frame(r, f);
+    if (o->n + n <= o->cap) {
+        o->frames++;
+    }
+    xb_put(o, f, n);
+}
+
+static void xb_noise(xb_out *o, xb_rng *r, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        xb_put1(o, (uint8_t)xb_next(r));
+    }
+}
+
+/* A length claim in [72, 255]. */
+static uint8_t xb_len(xb_rng *r) { return (uint8_t)(XF_PACKET_MIN_LEN + xb_below(r, 256u - XF_PACKET_MIN_LEN)); }
+
+static void xb_false_cand(xb_out *o, uint8_t len)
+{
+    uint8_t c[4];
+    c[0] = XF_GCU_HEADER0;
+    c[1] = XF_GCU_HEADER1;
+    c[2] = len;
+    c[3] = 0;
+    xb_put(o, c, 4);
+}
+
+typedef enum xb_kind { XB_VALID, XB_NOISY, XB_ADVERSARIAL, XB_DENSE } xb_kind;
+
+static int xb_kind_of(const char *s, xb_kind *k)
+{
+    if (strcmp(s, "valid") == 0) {
+        *k = XB_VALID;
+    } else if (strcmp(s, "noisy") == 0) {
+        *k = XB_NOISY;
+    } else if (strcmp(s, "adversarial") == 0) {
+        *k = XB_ADVERSARIAL;
+    } else if (strcmp(s, "dense") == 0) {
+        *k = XB_DENSE;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
+/* Fill o (o->cap bytes) with a stream of the given kind; the same seed
+ * for every size, so a shorter stream is a prefix of a longer one. */
+static void xb_generate(xb_kind kind, xb_out *o)
+{
+    xb_rng r;
+    uint8_t f[XF_PACKET_MAX_LEN];
+    size_t i, n;
+    r.s = 0x9E3779B97F4A7C15ull ^ (uint64_t)kind;
+    o->n = 0;
+    o->frames = 0;
+    while (!xb_full(o)) {
+        switch (kind) {
+        case XB_VALID: xb_real(o, &r); break;
+        case XB_NOISY: {
+            uint32_t what = xb_below(&r, 32);
+            if (xb_below(&r, 4) == 0) {
+                xb_noise(o, &r, 1u + xb_below(&r, 64));
+            }
+            if (what < 2) {
+                /* a flipped bit: never a valid frame */
+                n = xb_gcu_frame(&r, f);
+                f[xb_below(&r, (uint32_t)n)] ^= (uint8_t)(1u << xb_below(&r, 8));
+                xb_put(o, f, n);
+            } else if (what == 2) {
+                n = xb_gcu_frame(&r, f);
+                xb_put(o, f, 1u + xb_below(&r, (uint32_t)n - 1u));
+            } else {
+                xb_real(o, &r);
+            }
+            break;
+        }
+        case XB_ADVERSARIAL: {
+            uint32_t what = xb_below(&r, 20);
+            if (what < 7) {
+                /* dense false candidates, one claimed length per run */
+                uint8_t len = xb_len(&r);
+                size_t reps = 16u + xb_below(&r, 49);
+                for (i = 0; i < reps; i++) {
+                    xb_false_cand(o, len);
+                }
+            } else if (what < 10) {
+                /* nested bogus lengths: each claim ends sooner than the one before */
+                uint8_t len = (uint8_t)(200u + xb_below(&r, 56));
+                while (len >= XF_PACKET_MIN_LEN + 8u) {
+                    xb_false_cand(o, len);
+                    xb_noise(o, &r, xb_below(&r, 4));
+                    len = (uint8_t)(len - 5u - xb_below(&r, 4));
+                }
+                xb_real(o, &r);
+            } else if (what < 13) {
+                /* near-valid: a real frame with a bad CRC */
+                n = xb_gcu_frame(&r, f);
+                f[n - 1u - xb_below(&r, 2)] ^= (uint8_t)(1u + xb_below(&r, 255));
+                xb_put(o, f, n);
+            } else if (what < 14) {
+                /* false headers with bad lengths, and a run of header bytes */
+                for (i = 0; i < 16u; i++) {
+                    uint8_t c[4] = {XF_GCU_HEADER0, XF_GCU_HEADER1, (uint8_t)xb_below(&r, 72),
+                                    (uint8_t)xb_below(&r, 2)};
+                    xb_put(o, c, 4);
+                }
+                for (i = 0; i < 32u; i++) {
+                    xb_put1(o, XF_GCU_HEADER0);
+                }
+            } else {
+                xb_real(o, &r);
+            }
+            break;
+        }
+        default: /* XB_DENSE */ xb_false_cand(o, xb_len(&r)); break;
+        }
+    }
+}
+
+/* ---- the measured loops ---------------------------------------------------- */
+
+/* What a parse run found. */
+typedef struct xb_result {
+    size_t frames;      /* valid frames (decode: also unpacked and decoded) */
+    size_t frame_bytes; /* their bytes */
+    size_t pending;     /* bytes held at the end */
+    uint32_t sum;       /* a checksum of the frames, so that nothing is optimised away */
+    xf_parser_stats st;
+} xb_result;
+
+void xb_parse(const uint8_t *d, size_t n, int decode, xb_result *res);
+uint32_t xb_pack(size_t count);
+uint32_t xb_unpack(size_t count);
+
+/* Feed d[0..n) in chunks of at most 4096 bytes. decode: also unpack each
+ * frame and decode its feedback (the whole receive path). */
+XB_NOINLINE void xb_parse(const uint8_t *d, size_t n, int decode, xb_result *res)
+{
+    xf_parser p;
+    size_t off, frames = 0, bytes = 0;
+    uint32_t s = 0;
+    (void)xf_parser_init(&p, XF_DIR_GCU);
+    for (off = 0; off < n; off += XB_CHUNK) {
+        const uint8_t *c = d + off;
+        size_t left = (n - off < XB_CHUNK) ? (n - off) : XB_CHUNK;
+        size_t used;
+        xf_frame f;
+        while (xf_parser_feed(&p, c, left, &used, &f) == XF_PARSE_FRAME) {
+            c += used;
+            left -= used;
+            if (decode) {
+                xf_gcu_packet g;
+                xf_feedback fb;
+                if (xf_gcu_unpack(f.data, f.len, &g) != XF_OK ||
+                    xf_feedback_decode(g.order, g.params, g.params_len, &fb) != XF_OK) {
+                    continue;
+                }
+                s += (uint32_t)g.main.cam_yaw + fb.result;
+            } else {
+                s += f.data[f.len - 1u];
+            }
+            frames++;
+            bytes += f.len;
+        }
+    }
+    res->frames = frames;
+    res->frame_bytes = bytes;
+    res->pending = xf_parser_pending(&p);
+    res->sum = s;
+    res->st = p.stats;
+}
+
+/* Pack count host packets, every one different (attitude, velocity, GNSS, order). */
+XB_NOINLINE uint32_t xb_pack(size_t count)
+{
+    xf_host_packet h;
+    uint8_t buf[XF_PACKET_MAX_LEN];
+    uint32_t s = 0;
+    size_t i, n;
+    xf_host_packet_init(&h, XF_PROTOCOL_V1);
+    h.main.status = XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID;
+    h.sub.sub_header = XF_SUB_HEADER;
+    h.sub.satellites = 14;
+    for (i = 0; i < count; i++) {
+        uint32_t k = (uint32_t)i;
+        h.main.yaw_ctrl = (int16_t)(k % 3001u) - 1500;
+        h.main.pitch_ctrl = (int16_t)(k % 2001u) - 1000;
+        h.main.carrier_roll = (int16_t)(k % 36000u) - 18000;
+        h.main.carrier_yaw = (uint16_t)(k % 36000u);
+        h.main.vel_north = (int16_t)(k & 0x3FFu);
+        h.sub.longitude = (int32_t)(1139000000u + k);
+        h.sub.latitude = (int32_t)(225000000u + k);
+        h.sub.gnss_ms = k * 33u;
+        if ((k & 7u) == 0u) {
+            /* a zoom_to every 8th packet: 75 bytes */
+            h.order = XF_ORDER_ZOOM_TO;
+            h.params_len = 3;
+            h.params[0] = XF_CAM1;
+            h.params[1] = (uint8_t)(k & 0xFFu);
+            h.params[2] = 0x01;
+        } else {
+            h.order = XF_ORDER_NULL;
+            h.params_len = 0;
+        }
+        if (xf_host_pack(&h, buf, sizeof(buf), &n) == XF_OK) {
+            s += buf[n - 1u];
+        }
+    }
+    return s;
+}
+
+/* Unpack count GCU packets (64 different ones, in turn). */
+XB_NOINLINE uint32_t xb_unpack(size_t count)
+{
+    static uint8_t pk[64][XF_PACKET_MAX_LEN];
+    static size_t len[64];
+    xb_rng r;
+    size_t i;
+    uint32_t s = 0;
+    r.s = 12345;
+    for (i = 0; i < 64u; i++) {
+        len[i] = xb_gcu_frame(&r, pk[i]);
+    }
+    for (i = 0; i < count; i++) {
+        xf_gcu_packet g;
+        if (xf_gcu_unpack(pk[i & 63u], len[i & 63u], &g) == XF_OK) {
+            s += g.main.cam_yaw;
+        }
+    }
+    return s;
+}
+
+/* ---- driver ------------------------------------------------------------------ */
+
+static int xb_size(const char *s, size_t *out)
+{
+    char *end;
+    unsigned long long v;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (errno != 0 || end == s) {
+        return -1;
+    }
+    if (*end == 'k' || *end == 'K') {
+        v *= 1024u;
+        end++;
+    } else if (*end == 'm' || *end == 'M') {
+        v *= 1024u * 1024u;
+        end++;
+    }
+    if (*end != '\0' || v > (unsigned long long)SIZE_MAX / 2u) {
+        return -1;
+    }
+    *out = (size_t)v;
+    return 0;
+}
+
+static uint8_t *xb_read_file(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    uint8_t *d = NULL;
+    size_t cap = 0, len = 0;
+    if (f == NULL) {
+        fprintf(stderr, "xfgcu_bench: cannot open %s\n", path);
+        return NULL;
+    }
+    for (;;) {
+        size_t got;
+        if (len == cap) {
+            uint8_t *nd;
+            cap = (cap == 0u) ? (1u << 20) : cap * 2u;
+            nd = (uint8_t *)realloc(d, cap);
+            if (nd == NULL) {
+                free(d);
+                fclose(f);
+                return NULL;
+            }
+            d = nd;
+        }
+        got = fread(d + len, 1, cap - len, f);
+        len += got;
+        if (got == 0u) {
+            break;
+        }
+    }
+    if (ferror(f)) {
+        fprintf(stderr, "xfgcu_bench: cannot read %s\n", path);
+        free(d);
+        fclose(f);
+        return NULL;
+    }
+    fclose(f);
+    *n = len;
+    return d;
+}
+
+static void xb_print_stats(const xf_parser_stats *st)
+{
+    printf("bytes_in=%lu crc_errors=%lu length_errors=%lu bytes_skipped=%lu", (unsigned long)st->bytes_in,
+           (unsigned long)st->crc_errors, (unsigned long)st->length_errors, (unsigned long)st->bytes_skipped);
+}
+
+static int xb_usage(void)
+{
+    fprintf(stderr, "usage: xfgcu_bench parse FILE | decode FILE\n"
+                    "       xfgcu_bench gen valid|noisy|adversarial|dense N_BYTES FILE\n"
+                    "       xfgcu_bench pack N | unpack N\n"
+                    "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+                    "       xfgcu_bench selftest\n"
+                    "(N_BYTES, N: k and m suffixes are KiB and MiB)\n");
+    return 2;
+}
+
+static int xb_cmd_parse(const char *path, int decode)
+{
+    size_t n = 0;
+    xb_result res;
+    uint8_t *d = xb_read_file(path, &n);
+    if (d == NULL) {
+        return 1;
+    }
+    xb_parse(d, n, decode, &res);
+    printf("%lu frames (%lu bytes) in %lu bytes; ", (unsigned long)res.frames, (unsigned long)res.frame_bytes,
+           (unsigned long)n);
+    xb_print_stats(&res.st);
+    printf(" pending=%lu sum=%lu\n", (unsigned long)res.pending, (unsigned long)res.sum);
+    free(d);
+    return 0;
+}
+
+static int xb_cmd_gen(const char *kind_s, const char *size_s, const char *path)
+{
+    xb_kind kind;
+    xb_out o;
+    FILE *f;
+    if (xb_kind_of(kind_s, &kind) != 0 || xb_size(size_s, &o.cap) != 0) {
+        return xb_usage();
+    }
+    o.d = (uint8_t *)malloc(o.cap > 0u ? o.cap : 1u);
+    if (o.d == NULL) {
+        return 1;
+    }
+    xb_generate(kind, &o);
+    f = fopen(path, "wb");
+    if (f == NULL || fwrite(o.d, 1, o.n, f) != o.n || fclose(f) != 0) {
+        fprintf(stderr, "xfgcu_bench: cannot write %s\n", path);
+        free(o.d);
+        return 1;
+    }
+    printf("%lu frames inserted whole, %lu bytes of %s written to %s\n", (unsigned long)o.frames, (unsigned long)o.n,
+           kind_s, path);
+    free(o.d);
+    return 0;
+}
+
+static double xb_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static int xb_cmd_time(const char *kind_s, const char *size_s, const char *reps_s)
+{
+    xb_kind kind;
+    xb_out o;
+    size_t reps = 20, i;
+    xb_result res;
+    double t0, dt;
+    if (xb_kind_of(kind_s, &kind) != 0 || xb_size(size_s, &o.cap) != 0 ||
+        (reps_s != NULL && (xb_size(reps_s, &reps) != 0 || reps == 0u))) {
+        return xb_usage();
+    }
+    o.d = (uint8_t *)malloc(o.cap > 0u ? o.cap : 1u);
+    if (o.d == NULL) {
+        return 1;
+    }
+    xb_generate(kind, &o);
+    t0 = xb_now();
+    for (i = 0; i < reps; i++) {
+        xb_parse(o.d, o.n, 0, &res);
+    }
+    dt = xb_now() - t0;
+    printf("%lu frames; %s: %.1f MB/s (%lu x %lu bytes in %.3f s; wall clock, informative)\n",
+           (unsigned long)res.frames, kind_s, (double)o.n * (double)reps / dt / 1e6, (unsigned long)reps,
+           (unsigned long)o.n, dt);
+    free(o.d);
+    return 0;
+}
+
+static int xb_cmd_selftest(void)
+{
+    static const char *names[] = {"valid", "noisy", "adversarial", "dense"};
+    xb_out o;
+    int k, bad = 0;
+    o.cap = 256u * 1024u;
+    o.d = (uint8_t *)malloc(o.cap);
+    if (o.d == NULL) {
+        return 1;
+    }
+    for (k = 0; k < 4; k++) {
+        xb_result res;
+        xb_generate((xb_kind)k, &o);
+        xb_parse(o.d, o.n, 0, &res);
+        printf("selftest %-12s inserted %6lu found %6lu  ", names[k], (unsigned long)o.frames,
+               (unsigned long)res.frames);
+        xb_print_stats(&res.st);
+        printf("\n");
+        if (res.frames != o.frames || res.st.bytes_in != (uint32_t)o.n ||
+            res.st.bytes_in != (uint32_t)(res.frame_bytes + res.st.bytes_skipped + res.pending)) {
+            bad = 1;
+        }
+    }
+    free(o.d);
+    printf("selftest: %s\n", bad ? "FAILED" : "ok");
+    return bad;
+}
+
+int main(int argc, char **argv)
+{
+    size_t n;
+    if (argc < 2) {
+        return xb_usage();
+    }
+    if ((strcmp(argv[1], "parse") == 0 || strcmp(argv[1], "decode") == 0) && argc == 3) {
+        return xb_cmd_parse(argv[2], argv[1][0] == 'd');
+    }
+    if (strcmp(argv[1], "gen") == 0 && argc == 5) {
+        return xb_cmd_gen(argv[2], argv[3], argv[4]);
+    }
+    if (strcmp(argv[1], "pack") == 0 && argc == 3 && xb_size(argv[2], &n) == 0) {
+        uint32_t s = xb_pack(n);
+        printf("%lu packets packed (sum %lu)\n", (unsigned long)n, (unsigned long)s);
+        return 0;
+    }
+    if (strcmp(argv[1], "unpack") == 0 && argc == 3 && xb_size(argv[2], &n) == 0) {
+        uint32_t s = xb_unpack(n);
+        printf("%lu packets unpacked (sum %lu)\n", (unsigned long)n, (unsigned long)s);
+        return 0;
+    }
+    if (strcmp(argv[1], "time") == 0 && (argc == 4 || argc == 5)) {
+        return xb_cmd_time(argv[2], argv[3], (argc == 5) ? argv[4] : NULL);
+    }
+    if (strcmp(argv[1], "selftest") == 0 && argc == 2) {
+        return xb_cmd_selftest();
+    }
+    return xb_usage();
+}
