@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite: what CI runs (.ci/run). Installs what it needs first (Debian packages).
-# Stages: gcc -Werror build + ctest; clang ASan+UBSan build + ctest; compiler matrix; static
-# analysis; MCU builds with sizes; big-endian tests under qemu; package consumers.
+# Stages: gcc -Werror build + ctest; clang ASan+UBSan build + ctest; fuzz smoke; compiler matrix;
+# static analysis; MCU builds with sizes; big-endian tests under qemu; package consumers;
+# benchmark figures (printed, never asserted).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh --dev
@@ -19,6 +20,9 @@ cmake --preset debug >/dev/null
 cmake --build --preset debug --parallel "$jobs"
 ctest --preset debug --parallel "$jobs"
 
+stage "fuzz smoke: libFuzzer harnesses over the saved corpus and a short run"
+scripts/fuzz.sh smoke
+
 stage "compiler matrix: gcc/clang x C99/C11, headers as C++"
 scripts/matrix.sh
 
@@ -33,6 +37,11 @@ scripts/bigendian.sh
 
 stage "package: find_package, add_subdirectory, pkg-config consumers"
 scripts/check_package.sh
+
+stage "benchmarks: parser instructions per byte (callgrind), client latency and CPU"
+scripts/bench.sh
+build/gcc/bench/xfgcu_client_bench latency 500
+build/gcc/bench/xfgcu_client_bench cpu 3
 
 stage "done"
 echo "all stages passed"
