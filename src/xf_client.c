@@ -224,7 +224,7 @@ static void xf__match(xf_client *c, const xf_gcu_packet *p)
 static void xf__on_frame(xf_client *c, const xf_frame *f)
 {
     xf_gcu_packet p;
-    if (xf_gcu_unpack(f->data, f->len, &p) != XF_OK) {
+    if (xf_frame_gcu(f, &p) != XF_OK) {
         return; /* cannot happen: the parser checked it */
     }
     if (c->cfg.on_bytes != NULL) {

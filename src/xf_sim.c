@@ -675,7 +675,7 @@ static void xf__feed(xf_sim *s, const uint8_t *data, size_t n)
         if (r != XF_PARSE_FRAME) {
             break;
         }
-        if (xf_host_unpack(f.data, f.len, &p) == XF_OK) {
+        if (xf_frame_host(&f, &p) == XF_OK) {
             xf__on_packet(s, &p);
         }
     }

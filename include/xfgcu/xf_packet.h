@@ -341,18 +341,11 @@ XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, si
     return XF_OK;
 }
 
-XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt)
+/* The fields of a host packet already checked (header, length, CRC). */
+static inline void xf__host_fields(const uint8_t *buf, size_t len, xf_host_packet *pkt)
 {
     xf_host_main *m;
     xf_host_sub *s;
-    xf_err err;
-    if (pkt == NULL) {
-        return XF_ERR_ARG;
-    }
-    err = xf_packet_check(buf, len, XF_DIR_HOST);
-    if (err != XF_OK) {
-        return err;
-    }
     m = &pkt->main;
     s = &pkt->sub;
     pkt->version = buf[XF_OFF_VERSION];
@@ -383,21 +376,13 @@ XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt
     pkt->order = buf[XF_OFF_ORDER];
     pkt->params_len = (uint8_t)(len - XF_PACKET_MIN_LEN);
     XF_MEMCPY(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
-    return XF_OK;
 }
 
-XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
+/* The fields of a GCU packet already checked (header, length, CRC). */
+static inline void xf__gcu_fields(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
 {
     xf_gcu_main *m;
     xf_gcu_sub *s;
-    xf_err err;
-    if (pkt == NULL) {
-        return XF_ERR_ARG;
-    }
-    err = xf_packet_check(buf, len, XF_DIR_GCU);
-    if (err != XF_OK) {
-        return err;
-    }
     m = &pkt->main;
     s = &pkt->sub;
     pkt->version = buf[XF_OFF_VERSION];
@@ -433,7 +418,32 @@ XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
     pkt->order = buf[XF_OFF_ORDER];
     pkt->params_len = (uint8_t)(len - XF_PACKET_MIN_LEN);
     XF_MEMCPY(pkt->params, buf + XF_OFF_PARAMS, pkt->params_len);
-    return XF_OK;
+}
+
+XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt)
+{
+    xf_err err;
+    if (pkt == NULL) {
+        return XF_ERR_ARG;
+    }
+    err = xf_packet_check(buf, len, XF_DIR_HOST);
+    if (err == XF_OK) {
+        xf__host_fields(buf, len, pkt);
+    }
+    return err;
+}
+
+XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
+{
+    xf_err err;
+    if (pkt == NULL) {
+        return XF_ERR_ARG;
+    }
+    err = xf_packet_check(buf, len, XF_DIR_GCU);
+    if (err == XF_OK) {
+        xf__gcu_fields(buf, len, pkt);
+    }
+    return err;
 }
 
 #endif /* XF_EMIT_DEFINITIONS */

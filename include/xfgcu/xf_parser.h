@@ -35,6 +35,7 @@
 #include <stdint.h>
 #include "xf_config.h"
 #include "xf_mem.h"
+#include "xf_packet.h"
 #include "xf_crc.h"
 #include "xf_error.h"
 #include "xf_protocol.h"
@@ -111,6 +112,17 @@ XF_API size_t xf_parser_pending(const xf_parser *p);
  *     }
  */
 XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
+
+/**
+ * Decode a frame this parser returned, without computing its CRC again
+ * (the parser has checked header, length and CRC; only the header and
+ * length are looked at again, cheaply). For bytes from anywhere else use
+ * xf_gcu_unpack / xf_host_unpack.
+ * @return XF_OK, XF_ERR_ARG, XF_ERR_HEADER (a frame of the other
+ *   direction), XF_ERR_LENGTH.
+ */
+XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt);
+XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt);
 
 /**
  * The input has ended (end of file, link closed): give up the candidates
@@ -374,6 +386,37 @@ static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
          * or a contender that failed. Jump over them. */
         xf__drop_to(p, (p->look_done || p->look > p->head + 1u) ? p->look : p->head + 1u);
     }
+}
+
+/* Header and length of a frame the parser returned, before decoding it. */
+static inline xf_err xf__frame_ok(const xf_frame *f, uint8_t h0, uint8_t h1)
+{
+    if (f == NULL || f->data == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (f->len < XF_PACKET_MIN_LEN || f->len > XF_PACKET_MAX_LEN ||
+        ((size_t)f->data[2] | ((size_t)f->data[3] << 8)) != f->len) {
+        return XF_ERR_LENGTH;
+    }
+    return (f->data[0] == h0 && f->data[1] == h1) ? XF_OK : XF_ERR_HEADER;
+}
+
+XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt)
+{
+    xf_err err = (pkt == NULL) ? XF_ERR_ARG : xf__frame_ok(frame, XF_GCU_HEADER0, XF_GCU_HEADER1);
+    if (err == XF_OK) {
+        xf__gcu_fields(frame->data, frame->len, pkt);
+    }
+    return err;
+}
+
+XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt)
+{
+    xf_err err = (pkt == NULL) ? XF_ERR_ARG : xf__frame_ok(frame, XF_HOST_HEADER0, XF_HOST_HEADER1);
+    if (err == XF_OK) {
+        xf__host_fields(frame->data, frame->len, pkt);
+    }
+    return err;
 }
 
 XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame)
