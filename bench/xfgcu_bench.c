@@ -4,7 +4,7 @@
  *   xfgcu_bench parse FILE                 feed FILE to the parser (GCU -> host) in
  *                                          chunks of at most 4096 bytes; prints the
  *                                          number of valid frames first, then counters
- *   xfgcu_bench decode FILE                parse + xf_gcu_unpack + xf_feedback_decode
+ *   xfgcu_bench decode FILE                parse + xf_frame_gcu (no second CRC) + xf_feedback_decode
  *   xfgcu_bench gen KIND N_BYTES FILE      write an N_BYTES test stream (deterministic);
  *                                          KIND: valid | noisy | adversarial | dense
  *   xfgcu_bench pack N                     pack N host packets; prints N
@@ -293,7 +293,7 @@ XB_NOINLINE void xb_parse(const uint8_t *d, size_t n, int decode, xb_result *res
             if (decode) {
                 xf_gcu_packet g;
                 xf_feedback fb;
-                if (xf_gcu_unpack(f.data, f.len, &g) != XF_OK ||
+                if (xf_frame_gcu(&f, &g) != XF_OK ||
                     xf_feedback_decode(g.order, g.params, g.params_len, &fb) != XF_OK) {
                     continue;
                 }

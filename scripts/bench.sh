@@ -105,7 +105,7 @@ for t in nibble t256 nomemo; do
   i1=$(ir "$b" xb_parse decode "$streams/valid-1m.bin")
   i2=$(ir "$b" xb_parse decode "$streams/valid-2m.bin")
   res[$t.decode]=$(per "$i2" "$i1" "$MiB")
-  printf '%-8s %-12s %10s %8s %16s\n' "$t" "valid+decode" "${res[$t.decode]}" "" "(parse+unpack+feedback)"
+  printf '%-8s %-12s %10s %8s %16s\n' "$t" "valid+decode" "${res[$t.decode]}" "" "(parse+xf_frame_gcu+feedback)"
 done
 
 echo
