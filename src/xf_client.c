@@ -109,7 +109,7 @@ static void xf__fail_all(xf_client *c, xf_cmd_status st)
 static xf_link_state xf__link_now(const xf_client *c)
 {
     uint32_t age;
-    if (c->hal_closed || c->health.replies == 0u) {
+    if (c->health.transport_closed || c->health.replies == 0u) {
         return XF_LINK_DOWN;
     }
     age = xf_ms_since(c->now_ms, c->health.last_rx_ms);
@@ -140,7 +140,14 @@ static void xf__update_window(xf_client *c)
         return;
     }
     c->health.reply_rate_hz = (uint16_t)((c->window_replies > 65535u) ? 65535u : c->window_replies);
-    c->health.replies_missing = (c->window_sent > c->window_replies) ? c->window_sent - c->window_replies : 0u;
+    {
+        /* Question and answer: at most one reply is in flight across a window's edge, so
+         * count the one awaited at the start and not the one awaited at the end. */
+        int64_t missing =
+            (int64_t)c->window_sent - (int64_t)c->window_replies - (int64_t)c->awaiting + (int64_t)c->window_awaiting;
+        c->health.replies_missing = (missing > 0) ? (uint32_t)missing : 0u;
+        c->window_awaiting = c->awaiting;
+    }
     c->window_start_ms = c->now_ms;
     c->window_sent = 0;
     c->window_replies = 0;
@@ -232,8 +239,9 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     }
     c->health.replies++;
     c->window_replies++;
+    c->awaiting = 0;
     c->health.last_rx_ms = c->now_ms;
-    c->hal_closed = 0; /* a GCU answers over the (reopened) transport */
+    c->health.transport_closed = 0; /* a GCU answers over the (reopened) transport */
     if (p.order != c->guard_order) {
         c->guard_open = 0; /* the separating null's reply: no late reply of guard_order can follow */
     }
@@ -253,7 +261,7 @@ static xf_err xf__receive(xf_client *c)
         size_t n = 0, off = 0;
         xf_err err = c->hal.read(c->hal.ctx, buf, sizeof(buf), &n);
         if (err == XF_ERR_CLOSED) {
-            c->hal_closed = 1;
+            c->health.transport_closed = 1;
             return err;
         }
         if (err != XF_OK) {
@@ -402,12 +410,13 @@ static xf_err xf__send(xf_client *c)
     if (err != XF_OK) {
         c->health.send_errors++;
         if (err == XF_ERR_CLOSED) {
-            c->hal_closed = 1;
+            c->health.transport_closed = 1;
         }
         return err;
     }
     c->health.packets_sent++;
     c->window_sent++;
+    c->awaiting = 1;
     if (c->active) {
         c->packets++;
     }

@@ -120,12 +120,13 @@ typedef struct xf_telemetry {
 
 /** Link health figures. */
 typedef struct xf_health {
-    uint8_t link;            /**< xf_link_state */
-    uint8_t watchdog_active; /**< zero rates are being sent because rates went stale */
-    uint32_t last_rx_ms;     /**< when the last valid reply arrived */
+    uint8_t link;             /**< xf_link_state */
+    uint8_t watchdog_active;  /**< zero rates are being sent because rates went stale */
+    uint8_t transport_closed; /**< the transport said the link is closed (a backend may be restoring it) */
+    uint32_t last_rx_ms;      /**< when the last valid reply arrived */
     uint32_t packets_sent;
     uint32_t replies;         /**< valid GCU packets received */
-    uint32_t replies_missing; /**< packets sent minus replies, over the last full second */
+    uint32_t replies_missing; /**< packets of the last full second that got no reply */
     uint16_t reply_rate_hz;   /**< replies in the last full second */
     uint32_t send_errors;     /**< HAL writes that failed */
     uint32_t watchdog_trips;
@@ -218,8 +219,9 @@ typedef struct xf_client {
     uint32_t period_ms;
     uint32_t next_send_ms;
     uint8_t started;
-    uint8_t hal_closed;
     uint32_t window_start_ms, window_sent, window_replies;
+    uint8_t awaiting;        /* the last packet sent has had no reply yet */
+    uint8_t window_awaiting; /* the same, when the window started */
     uint32_t now_ms;
 } xf_client;
 

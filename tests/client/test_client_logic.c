@@ -721,6 +721,47 @@ static void test_reopened_transport_down_until_reply(void **state)
 }
 
 /* Health figures: packets, replies, the reply rate, what is missing, parser errors. */
+/* replies_missing is exact under question and answer: 0 on a perfect link
+ * from the first window on (the reply in flight at a window's edge is not
+ * missing), and exactly the replies lost in a window. */
+static void test_replies_missing_exact(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    const xf_health *h = xf_client_health(&r->c);
+    (void)state;
+    ct_run(r, 1001);
+    assert_int_equal(h->replies_missing, 0);
+    ct_run(r, 1000);
+    assert_int_equal(h->replies_missing, 0);
+    r->s.fault.drop_next = 7;
+    ct_run(r, 1000);
+    assert_int_equal(r->s.stats.dropped, 7);
+    assert_int_equal(h->replies_missing, 7);
+    ct_run(r, 1000);
+    assert_int_equal(h->replies_missing, 0);
+    ct_rig_free(r);
+}
+
+/* transport_closed follows the transport: set when it says closed, cleared
+ * when a GCU answers over it again. */
+static void test_transport_closed_flag(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    const xf_health *h = xf_client_health(&r->c);
+    (void)state;
+    ct_run(r, 200);
+    assert_int_equal(h->transport_closed, 0);
+    r->host.closed = 1;
+    ct_run(r, 100);
+    assert_int_equal(h->transport_closed, 1);
+    assert_int_equal(h->link, XF_LINK_DOWN);
+    r->host.closed = 0;
+    ct_run(r, 200);
+    assert_int_equal(h->transport_closed, 0);
+    assert_int_equal(h->link, XF_LINK_UP);
+    ct_rig_free(r);
+}
+
 static void test_health_figures(void **state)
 {
     ct_rig *r = ct_rig_new(NULL, NULL);
@@ -1338,6 +1379,8 @@ int main(void)
         cmocka_unit_test(test_link_lost_fails_commands),
         cmocka_unit_test(test_reopened_transport_down_until_reply),
         cmocka_unit_test(test_health_figures),
+        cmocka_unit_test(test_replies_missing_exact),
+        cmocka_unit_test(test_transport_closed_flag),
         cmocka_unit_test(test_telemetry_and_ages),
         cmocka_unit_test(test_protocol_v2_rates),
         cmocka_unit_test(test_protocol_v2_orders),

@@ -263,7 +263,7 @@ static const char *link_error(const online *o)
     const char *text = (o->kind == ONLINE_SERIAL) ? o->serial.error.text
                        : (o->kind == ONLINE_UDP)  ? o->udp.error.text
                                                   : o->tcp.error.text;
-    return o->client.hal_closed && text[0] != '\0' ? text : NULL;
+    return xf_client_health(&o->client)->transport_closed && text[0] != '\0' ? text : NULL;
 }
 
 static int wait_first_reply(online *o)
