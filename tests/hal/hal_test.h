@@ -19,6 +19,9 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+#include <signal.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <cmocka.h>
 
@@ -54,6 +57,38 @@ static inline uint32_t ht_since(uint32_t t0) { return xf_ms_since(xf_posix_now_m
 static inline void ht_sleep_ms(unsigned ms) { (void)poll(NULL, 0, (int)ms); }
 
 /* Wait until @p fd is readable, at most @p ms: 1 readable (or hung up), 0 not. */
+/* Wait for the child @p pid, at most 5 s (then kill it and fail the test); its exit status. */
+static inline int ht_wait_child(pid_t pid)
+{
+    int status = 0;
+    uint32_t t0 = ht_now();
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+        if (ht_since(t0) > 5000u) {
+            kill(pid, SIGKILL);
+            (void)waitpid(pid, &status, 0);
+            fail_msg("the child did not finish");
+        }
+        ht_sleep_ms(2);
+    }
+    assert_true(WIFEXITED(status));
+    return WEXITSTATUS(status);
+}
+
+/* Run @p fn in a forked child (which must not outlive 5 s) and return its exit status:
+ * for checks that need their own namespace or credentials. */
+static inline int ht_run_child(int (*fn)(void))
+{
+    pid_t pid;
+    fflush(NULL);
+    pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        alarm(5);
+        _exit(fn());
+    }
+    return ht_wait_child(pid);
+}
+
 static inline int ht_wait_readable(int fd, int ms)
 {
     struct pollfd pfd;

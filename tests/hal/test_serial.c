@@ -407,7 +407,6 @@ static void test_permission_denied(void **state)
     fixture *f = *state;
     pid_t pid;
     int status = 0;
-    uint32_t t0;
     if (geteuid() != 0) {
         /* not root: our own slave, with no permission bits, does it */
         assert_int_equal(chmod(f->pty.slave, 0), 0);
@@ -442,20 +441,11 @@ static void test_permission_denied(void **state)
         }
         _exit(CHILD_OK);
     }
-    t0 = ht_now();
-    while (waitpid(pid, &status, WNOHANG) == 0) {
-        if (ht_since(t0) > 5000u) {
-            kill(pid, SIGKILL);
-            (void)waitpid(pid, &status, 0);
-            fail_msg("the child did not finish");
-        }
-        ht_sleep_ms(2);
-    }
-    assert_true(WIFEXITED(status));
-    if (WEXITSTATUS(status) == CHILD_NO_DROP) {
+    status = ht_wait_child(pid);
+    if (status == CHILD_NO_DROP) {
         skip(); /* a container that forbids setuid: nothing to test */
     }
-    assert_int_equal(WEXITSTATUS(status), CHILD_OK);
+    assert_int_equal(status, CHILD_OK);
 }
 
 static int list_count;

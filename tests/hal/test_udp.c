@@ -437,31 +437,13 @@ static int send_error_child(void)
 
 static void test_send_error_is_io(void **state)
 {
-    pid_t pid;
-    int status = 0;
-    uint32_t t0;
+    int code;
     (void)state;
-    fflush(NULL);
-    pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        alarm(5);
-        _exit(send_error_child());
-    }
-    t0 = ht_now();
-    while (waitpid(pid, &status, WNOHANG) == 0) {
-        if (ht_since(t0) > 5000u) {
-            kill(pid, SIGKILL);
-            (void)waitpid(pid, &status, 0);
-            fail_msg("the child did not finish");
-        }
-        ht_sleep_ms(2);
-    }
-    assert_true(WIFEXITED(status));
-    if (WEXITSTATUS(status) == SEND_SKIP) {
+    code = ht_run_child(send_error_child);
+    if (code == SEND_SKIP) {
         skip(); /* no network namespace here (not root): nothing to test */
     }
-    assert_int_equal(WEXITSTATUS(status), SEND_OK);
+    assert_int_equal(code, SEND_OK);
 }
 
 int main(void)
