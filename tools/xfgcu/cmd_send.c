@@ -38,32 +38,15 @@ void help_send(FILE *out)
     fputs("\nexample: xfgcu --tcp 192.168.144.108 send zoom-to --rate 5.5\n", out);
 }
 
-typedef struct send_args {
-    uint8_t version;
-    int help;
-    const cmd_spec *spec;
-    int cargc; /* the command's name and arguments, --protocol and --help taken out */
-    char **cargv;
-} send_args;
+typedef cmd_line send_args;
 
 static int take_arg(send_args *a, int argc, char **argv, int *i)
 {
-    const char *v = NULL;
-    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
-        return cli_parse_protocol(v, &a->version);
+    int rc;
+    if (cmd_line_take(a, argc, argv, i, &rc)) {
+        return rc;
     }
-    if (strcmp(argv[*i], "--help") == 0) {
-        a->help = 1;
-    } else if (a->spec != NULL) {
-        a->cargv[a->cargc++] = argv[*i];
-    } else if (argv[*i][0] == '-') {
-        return cli_fail("send: unknown option '%s' (see 'xfgcu send --help')", argv[*i]);
-    } else if ((a->spec = cmdargs_find(argv[*i])) == NULL) {
-        return cli_fail("send: unknown command '%s' (see 'xfgcu send --help')", argv[*i]);
-    } else {
-        a->cargv[a->cargc++] = argv[*i];
-    }
-    return XFGCU_EXIT_OK;
+    return cmd_line_command(a, "send", argv[*i]);
 }
 
 static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_ms)

@@ -756,3 +756,31 @@ int cmdargs_parse(const cmd_spec *spec, const char *context, int argc, char **ar
     *cmd = st.cmd;
     return XFGCU_EXIT_OK;
 }
+
+int cmd_line_take(cmd_line *c, int argc, char **argv, int *i, int *rc)
+{
+    const char *v = NULL;
+    *rc = XFGCU_EXIT_OK;
+    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
+        *rc = cli_parse_protocol(v, &c->version);
+    } else if (strcmp(argv[*i], "--help") == 0) {
+        c->help = 1;
+    } else if (c->spec != NULL) {
+        c->cargv[c->cargc++] = argv[*i];
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+int cmd_line_command(cmd_line *c, const char *who, char *arg)
+{
+    if (arg[0] == '-') {
+        return cli_fail("%s: unknown option '%s' (see 'xfgcu %s --help')", who, arg, who);
+    }
+    if ((c->spec = cmdargs_find(arg)) == NULL) {
+        return cli_fail("%s: unknown command '%s' (see 'xfgcu %s --help')", who, arg, who);
+    }
+    c->cargv[c->cargc++] = arg;
+    return XFGCU_EXIT_OK;
+}

@@ -42,4 +42,20 @@ void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out);
 /** One usage line per command, for `encode --help`. */
 void cmdargs_list(FILE *out);
 
+/* "[--protocol N] [--help] COMMAND [ARGS...]", as send and encode take it. */
+typedef struct cmd_line {
+    uint8_t version;
+    int help;
+    const cmd_spec *spec; /* NULL until COMMAND */
+    int cargc;            /* the command's name and arguments, --protocol and --help taken out */
+    char **cargv;         /* caller's storage, argc + 1 entries */
+} cmd_line;
+
+/* argv[*i] if it is --protocol, --help, or after COMMAND one of the command's: returns 1 with
+ * *rc the exit status (XFGCU_EXIT_OK, or the one-line error's), 0 when it is none of these. */
+int cmd_line_take(cmd_line *c, int argc, char **argv, int *i, int *rc);
+
+/* argv[*i] where COMMAND is due: unknown options and commands are errors named for @p who. */
+int cmd_line_command(cmd_line *c, const char *who, char *arg);
+
 #endif /* XFGCU_CMDARGS_H */

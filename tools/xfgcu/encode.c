@@ -86,26 +86,19 @@ static int encode_lines(uint8_t version)
 /* ---- arguments ------------------------------------------------------------------ */
 
 typedef struct encode_args {
-    uint8_t version;
+    cmd_line line;    /* [--protocol N] [--help] COMMAND ARGS */
     const char *json; /* --json OBJECT */
-    int help;
-    const cmd_spec *spec;
-    int cargc; /* the command's name and arguments, --protocol and --help taken out */
-    char **cargv;
 } encode_args;
 
 /* Before COMMAND: --protocol, --json, --help. After it, everything but --protocol and --help is the command's. */
 static int take_arg(encode_args *a, int argc, char **argv, int *i)
 {
     const char *v = NULL;
-    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
-        return cli_parse_protocol(v, &a->version);
+    int rc;
+    if (cmd_line_take(&a->line, argc, argv, i, &rc)) {
+        return rc;
     }
-    if (strcmp(argv[*i], "--help") == 0) {
-        a->help = 1;
-    } else if (a->spec != NULL) {
-        a->cargv[a->cargc++] = argv[*i];
-    } else if (cli_take_option(argc, argv, i, "--json", &v)) {
+    if (cli_take_option(argc, argv, i, "--json", &v)) {
         if (v == NULL) {
             return cli_fail("encode: --json needs an OBJECT (or - for JSON Lines on stdin)");
         }
@@ -113,16 +106,12 @@ static int take_arg(encode_args *a, int argc, char **argv, int *i)
             return cli_fail("encode: --json given twice");
         }
         a->json = v;
-    } else if (argv[*i][0] == '-') {
-        return cli_fail("encode: unknown option '%s' (see 'xfgcu encode --help')", argv[*i]);
-    } else if (a->json != NULL) {
-        return cli_fail("encode: --json takes one OBJECT; unexpected '%s'", argv[*i]);
-    } else if ((a->spec = cmdargs_find(argv[*i])) == NULL) {
-        return cli_fail("encode: unknown command '%s' (see 'xfgcu encode --help')", argv[*i]);
-    } else {
-        a->cargv[a->cargc++] = argv[*i];
+        return XFGCU_EXIT_OK;
     }
-    return XFGCU_EXIT_OK;
+    if (argv[*i][0] != '-' && a->json != NULL) {
+        return cli_fail("encode: --json takes one OBJECT; unexpected '%s'", argv[*i]);
+    }
+    return cmd_line_command(&a->line, "encode", argv[*i]);
 }
 
 static int encode_named(const encode_args *a)
@@ -133,17 +122,17 @@ static int encode_named(const encode_args *a)
     size_t len = 0;
     const char *bad = NULL;
     xf_err err;
-    int rc = cmdargs_parse(a->spec, "encode", a->cargc, a->cargv, a->version, &cmd);
+    int rc = cmdargs_parse(a->line.spec, "encode", a->line.cargc, a->line.cargv, a->line.version, &cmd);
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }
-    xf_host_packet_init(&pkt, a->version); /* no carrier data; sub_request = 0x01 */
+    xf_host_packet_init(&pkt, a->line.version); /* no carrier data; sub_request = 0x01 */
     err = xf_host_set_command(&pkt, &cmd, &bad);
     if (err == XF_OK) {
         err = xf_host_pack(&pkt, buf, sizeof(buf), &len);
     }
     if (err != XF_OK) {
-        return cli_fail("encode %s: %s%s%s", cmdargs_name(a->spec), xf_strerror(err), bad != NULL ? ": " : "",
+        return cli_fail("encode %s: %s%s%s", cmdargs_name(a->line.spec), xf_strerror(err), bad != NULL ? ": " : "",
                         bad != NULL ? bad : "");
     }
     print_hex(buf, len);
@@ -152,19 +141,19 @@ static int encode_named(const encode_args *a)
 
 static int run(encode_args *a)
 {
-    if (a->help) {
-        if (a->spec != NULL) {
-            cmdargs_help(a->spec, "encode", stdout);
+    if (a->line.help) {
+        if (a->line.spec != NULL) {
+            cmdargs_help(a->line.spec, "encode", stdout);
         } else {
             help_encode(stdout);
         }
         return XFGCU_EXIT_OK;
     }
     if (a->json != NULL) {
-        return (strcmp(a->json, "-") == 0) ? encode_lines(a->version)
-                                           : encode_object(a->json, a->version, "encode --json");
+        return (strcmp(a->json, "-") == 0) ? encode_lines(a->line.version)
+                                           : encode_object(a->json, a->line.version, "encode --json");
     }
-    if (a->spec == NULL) {
+    if (a->line.spec == NULL) {
         return cli_fail("encode: give --json OBJECT or a COMMAND (see 'xfgcu encode --help')");
     }
     return encode_named(a);
@@ -175,9 +164,9 @@ int cmd_encode(const cli_link *link, int argc, char **argv)
     encode_args a;
     int i, rc = XFGCU_EXIT_OK;
     memset(&a, 0, sizeof(a));
-    a.version = link->protocol;
-    a.cargv = calloc((size_t)argc + 1u, sizeof(*a.cargv));
-    if (a.cargv == NULL) {
+    a.line.version = link->protocol;
+    a.line.cargv = calloc((size_t)argc + 1u, sizeof(*a.line.cargv));
+    if (a.line.cargv == NULL) {
         return cli_fail("encode: out of memory");
     }
     for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
@@ -186,6 +175,6 @@ int cmd_encode(const cli_link *link, int argc, char **argv)
     if (rc == XFGCU_EXIT_OK) {
         rc = run(&a);
     }
-    free(a.cargv);
+    free(a.line.cargv);
     return rc;
 }
