@@ -20,6 +20,8 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "xf_test_assert.h"
+
 #include "xfgcu/xfgcu.h"
 
 #define ARRAY_LEN(a) (sizeof(a) / sizeof((a)[0]))
@@ -38,15 +40,7 @@
     } while (0)
 
 /* An xf_err (or parser return) compared with its expected value, by name. */
-#define assert_err(expr, want)                                                                                         \
-    do {                                                                                                               \
-        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
-        if (got_ != want_) {                                                                                           \
-            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,              \
-                        xf_strerror(want_));                                                                           \
-            fail();                                                                                                    \
-        }                                                                                                              \
-    } while (0)
+#define assert_err assert_xf
 
 /* |a - b| <= eps in double precision (cmocka's assert_float_equal works in
  * float); NaN never passes. */

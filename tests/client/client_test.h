@@ -28,17 +28,7 @@
 #include "xfgcu/xf_client.h"
 #include "xfgcu/xf_sim.h"
 #include "xfgcu/xfgcu.h"
-
-/* An xf_err compared with its expected value, printed by name. */
-#define assert_xf(expr, want)                                                                                          \
-    do {                                                                                                               \
-        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
-        if (got_ != want_) {                                                                                           \
-            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,              \
-                        xf_strerror(want_));                                                                           \
-            fail();                                                                                                    \
-        }                                                                                                              \
-    } while (0)
+#include "../xf_test_assert.h"
 
 /* A command status compared with its expected value, printed by name. */
 #define assert_status(expr, want)                                                                                      \

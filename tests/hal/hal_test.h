@@ -27,27 +27,7 @@
 
 #include "xfgcu/xf_posix.h"
 #include "xfgcu/xfgcu.h"
-
-/* An xf_err compared with its expected value, printed by name. */
-#define assert_xf(expr, want)                                                                                          \
-    do {                                                                                                               \
-        int got_ = (int)(expr), want_ = (int)(want);                                                                   \
-        if (got_ != want_) {                                                                                           \
-            print_error("%s returned %d (%s), expected %d (%s)\n", #expr, got_, xf_strerror(got_), want_,              \
-                        xf_strerror(want_));                                                                           \
-            fail();                                                                                                    \
-        }                                                                                                              \
-    } while (0)
-
-/* A string that must contain a fragment (error texts). */
-#define assert_contains(hay, needle)                                                                                   \
-    do {                                                                                                               \
-        const char *hay_ = (hay), *needle_ = (needle);                                                                 \
-        if (hay_ == NULL || strstr(hay_, needle_) == NULL) {                                                           \
-            print_error("\"%s\" does not contain \"%s\"\n", hay_ != NULL ? hay_ : "(null)", needle_);                  \
-            fail();                                                                                                    \
-        }                                                                                                              \
-    } while (0)
+#include "../xf_test_assert.h"
 
 static inline uint32_t ht_now(void) { return xf_posix_now_ms(); }
 
