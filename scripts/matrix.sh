@@ -29,3 +29,15 @@ for cxx in g++ clang++; do
   done
 done
 echo "compiler matrix: $n compilations, all clean"
+
+# The README's example must compile as printed (compiled only: it would talk to a real GCU).
+awk '/^## Example/ {inex = 1} inex && /^```c/ {code = 1; next} code && /^```/ {exit} code {print}' README.md \
+  > "$out/readme_example.body"
+{
+  grep '^#include' "$out/readme_example.body"
+  printf '#include <stdio.h>\nextern xf_carrier my_ins;\nxf_carrier my_ins;\nint readme_example(void);\nint readme_example(void)\n{\n'
+  grep -v '^#include' "$out/readme_example.body"
+  printf '}\n'
+} > "$out/readme_example.c"
+gcc -std=c99 -Wall -Wextra -Werror -Iinclude -c "$out/readme_example.c" -o "$out/readme_example.o"
+echo "README example: compiles"
