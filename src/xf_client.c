@@ -67,7 +67,7 @@ static void xf__result_of(const xf_client *c, const xf_cmd_slot *slot, xf_cmd_st
 {
     XF_MEMSET(r, 0, sizeof(*r));
     r->id = slot->id;
-    r->order = slot->cmd.order;
+    r->order = slot->order;
     r->status = (uint8_t)st;
     if (c->active && slot == &c->queue[c->q_head]) {
         r->packets = c->packets;
@@ -86,8 +86,8 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
         r.failed_cameras = fb->failed_cameras;
     }
     if (c->active) {
-        c->nulls_owed = 1;                /* back to null packets: the next command of any order is separated */
-        c->guard_order = slot->cmd.order; /* replies of this order may still be in flight */
+        c->nulls_owed = 1;            /* back to null packets: the next command of any order is separated */
+        c->guard_order = slot->order; /* replies of this order may still be in flight */
         c->guard_open = 1;
     }
     c->active = 0;
@@ -201,11 +201,11 @@ static void xf__update_telemetry(xf_client *c, const xf_gcu_packet *p)
 static void xf__match(xf_client *c, const xf_gcu_packet *p)
 {
     xf_feedback fb;
-    const xf_command *cmd;
+    const xf_cmd_slot *cmd;
     if (!c->active) {
         return;
     }
-    cmd = &c->queue[c->q_head].cmd;
+    cmd = &c->queue[c->q_head];
     if (p->order != cmd->order) {
         return;
     }
@@ -270,21 +270,14 @@ static xf_err xf__receive(xf_client *c)
         if (n == 0u) {
             break;
         }
-        while (off < n) {
+        /* Until no frame is left: also after the input is used up, since
+         * more intact frames can be held behind one just returned. */
+        for (;;) {
             size_t used = 0;
             xf_frame f;
             int r = xf_parser_feed(&c->parser, buf + off, n - off, &used, &f);
             off += used;
             if (r != XF_PARSE_FRAME) {
-                break;
-            }
-            xf__on_frame(c, &f);
-        }
-        /* Frames may remain in bytes the parser holds. */
-        for (;;) {
-            size_t used = 0;
-            xf_frame f;
-            if (xf_parser_feed(&c->parser, NULL, 0, &used, &f) != XF_PARSE_FRAME) {
                 break;
             }
             xf__on_frame(c, &f);
@@ -360,10 +353,10 @@ static void xf__put_control(xf_client *c, xf_host_packet *pkt)
 }
 
 /* Choose the order of the next packet: a command, an owed null, the stream, or null. */
-static const xf_command *xf__next_order(xf_client *c)
+static const xf_cmd_slot *xf__next_order(xf_client *c)
 {
     if (!c->active && c->q_count > 0u && c->nulls_owed == 0u) {
-        const xf_command *cmd = &c->queue[c->q_head].cmd;
+        const xf_cmd_slot *cmd = &c->queue[c->q_head];
         if (c->guard_open && cmd->order == c->guard_order && c->health.link != XF_LINK_DOWN) {
             /* Replies to the previous packets of this order may still be on
              * their way, each with that command's state. Replies come in
@@ -377,7 +370,7 @@ static const xf_command *xf__next_order(xf_client *c)
         c->started_ms = c->now_ms;
     }
     if (c->active) {
-        return &c->queue[c->q_head].cmd;
+        return &c->queue[c->q_head];
     }
     if (c->nulls_owed > 0u) {
         c->nulls_owed--;
@@ -389,7 +382,7 @@ static const xf_command *xf__next_order(xf_client *c)
 static xf_err xf__send(xf_client *c)
 {
     xf_host_packet pkt;
-    const xf_command *cmd;
+    const xf_cmd_slot *cmd;
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = 0;
     xf_err err;
@@ -398,10 +391,10 @@ static xf_err xf__send(xf_client *c)
     xf__put_gnss(c, &pkt);
     xf__put_control(c, &pkt);
     cmd = xf__next_order(c);
-    if (cmd != NULL && xf_host_set_command(&pkt, cmd, NULL) != XF_OK) {
-        xf__finish(c, XF_CMD_FAILED, NULL); /* checked at submit; only a version change could get here */
-        pkt.order = XF_ORDER_NULL;
-        pkt.params_len = 0;
+    if (cmd != NULL) { /* checked and encoded at submit */
+        pkt.order = cmd->order;
+        pkt.params_len = cmd->params_len;
+        XF_MEMCPY(pkt.params, cmd->params, cmd->params_len);
     }
     if (xf_host_pack(&pkt, buf, sizeof(buf), &len) != XF_OK) {
         return XF_ERR_ARG;
@@ -523,14 +516,28 @@ void xf_client_clear_control(xf_client *c)
 
 /* ---- commands ------------------------------------------------------------------ */
 
+/* Check @p cmd and encode it into @p slot once: every packet then copies the bytes. */
+static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t version, const char **bad_field)
+{
+    size_t n = 0;
+    xf_err err = xf_command_encode(cmd, version, slot->params, sizeof(slot->params), &n, bad_field);
+    if (err != XF_OK) {
+        return err;
+    }
+    slot->id = 0;
+    slot->order = cmd->order;
+    slot->params_len = (uint8_t)n;
+    return XF_OK;
+}
+
 xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const char **bad_field)
 {
-    xf_cmd_slot *slot;
+    xf_cmd_slot encoded, *slot;
     xf_err err;
     if (c == NULL || cmd == NULL) {
         return XF_ERR_ARG;
     }
-    err = xf_command_check(cmd, c->cfg.protocol_version, bad_field);
+    err = xf__slot_encode(&encoded, cmd, c->cfg.protocol_version, bad_field);
     if (err != XF_OK) {
         return err;
     }
@@ -538,7 +545,7 @@ xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const
         return XF_ERR_BUSY;
     }
     slot = &c->queue[(c->q_head + c->q_count) % XF_CLIENT_QUEUE];
-    slot->cmd = *cmd;
+    *slot = encoded;
     slot->id = c->next_id++;
     if (c->next_id == 0u) {
         c->next_id = 1; /* 0 never names a command */
@@ -588,6 +595,7 @@ void xf_client_cancel_all(xf_client *c)
 xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16_t dy)
 {
     xf_command cmd;
+    xf_cmd_slot encoded;
     xf_err err;
     if (c == NULL) {
         return XF_ERR_ARG;
@@ -597,9 +605,9 @@ xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16
     cmd.dx = dx;
     cmd.dy = dy;
     cmd.value = 2; /* start / keep tracking */
-    err = xf_command_check(&cmd, c->cfg.protocol_version, NULL);
-    if (err == XF_OK) {
-        c->stream = cmd;
+    err = xf__slot_encode(&encoded, &cmd, c->cfg.protocol_version, NULL);
+    if (err == XF_OK) { /* a refused call leaves a running stream as it was */
+        c->stream = encoded;
         c->stream_on = 1;
     }
     return err;
@@ -613,7 +621,7 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
     }
     xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
     if (c->stream_on) {
-        cmd.cameras = c->stream.cameras;
+        cmd.cameras = c->stream.params[0]; /* external_track's parameters start with KK */
         /* The stream's replies (same order, with their own state) may still
          * be in flight: the exit's result must be its own. */
         c->guard_order = XF_ORDER_EXTERNAL_TRACK;

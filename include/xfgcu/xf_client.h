@@ -177,9 +177,12 @@ typedef struct xf_client_config {
     void *user;
 } xf_client_config;
 
+/* A command as it goes on the wire: checked and encoded once, at submit. */
 typedef struct xf_cmd_slot {
-    xf_command cmd;
     uint32_t id;
+    uint8_t order;
+    uint8_t params_len;
+    uint8_t params[XF_PARAMS_KNOWN_MAX];
 } xf_cmd_slot;
 
 /** Client state: treat the members as private; use the functions. */
@@ -201,7 +204,7 @@ typedef struct xf_client {
     uint32_t ctrl_ms;
     /* streamed external track */
     uint8_t stream_on;
-    xf_command stream;
+    xf_cmd_slot stream;
     /* commands */
     xf_cmd_slot queue[XF_CLIENT_QUEUE];
     uint8_t q_head, q_count;
