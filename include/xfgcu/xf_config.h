@@ -7,8 +7,8 @@
  * signature.
  *
  *   XF_CRC_TABLE_256      0 (default): the vendor's 16-entry nibble table
- *                         (32 bytes of flash, two lookups per byte).
- *                         1: a 256-entry table (512 bytes of flash, about
+ *                         (64 bytes of flash, two lookups per byte).
+ *                         1: a 256-entry table (1 KB of flash, about
  *                         half the instructions per byte).
  *   XF_PACKET_MAX_LEN     largest packet the parser and the packet structs
  *                         hold, 84..255 (default 255, the protocol's own
