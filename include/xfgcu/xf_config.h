@@ -92,6 +92,14 @@
 #define XF_EMIT_DEFINITIONS 0
 #endif
 
+/* Internal: the parser's per-candidate check is inlined into its hot loop
+ * even where the compiler's size heuristics would not (GCC, clang). */
+#if defined(__GNUC__)
+#define XF__HOT_INLINE __attribute__((always_inline)) static inline
+#else
+#define XF__HOT_INLINE static inline
+#endif
+
 /* C99 has no static_assert: a negative array size fails the build. */
 #define XF_STATIC_ASSERT(cond, name) typedef char xf__static_assert_##name[(cond) ? 1 : -1]
 

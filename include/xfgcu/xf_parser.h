@@ -75,14 +75,14 @@ typedef struct xf_parser {
 #if XF_PARSER_MEMO
     uint16_t memo[XF_PARSER_RING]; /* CRC of the stream before each held byte (memo mode) */
 #endif
-    uint8_t scratch[XF_PACKET_MAX_LEN]; /* a frame that wraps round the ring is copied here */
-    uint32_t head;                      /* stream position of the first held byte: the earliest candidate */
-    uint32_t end;                       /* one past the last held byte */
+    uint32_t head;     /* stream position of the first held byte: the earliest candidate */
+    uint32_t end;      /* one past the last held byte */
     uint32_t look;     /* positions in (head, look) are examined: no candidate, or a failed contender */
     uint16_t memo_crc; /* CRC of the stream before `end` (memo mode) */
     uint8_t memo_on;
     uint8_t look_done; /* no contender can follow for this head */
     uint8_t h0, h1;    /* header bytes of the direction parsed */
+    uint8_t rotated;   /* the last frame wrapped round the ring, which was rotated (tests look) */
     xf_parser_stats stats;
 } xf_parser;
 
@@ -189,36 +189,47 @@ static inline void xf__memo_start(xf_parser *p)
 #if !XF_PARSER_MEMO
     (void)p;
 #else
-    uint32_t pos;
-    uint16_t c = 0;
+    const uint32_t *table = xf__crc_table();
+    uint32_t pos, c = 0;
     for (pos = p->head; pos != p->end; pos++) {
-        uint8_t b = xf__rb(p, pos);
-        p->memo[pos & XF__RMASK] = c;
-        c = xf__crc_byte(c, b);
+        p->memo[pos & XF__RMASK] = (uint16_t)(c >> 16);
+        c = xf__crc_step(c, table, xf__rb(p, pos));
     }
-    p->memo_crc = c;
+    p->memo_crc = (uint16_t)(c >> 16);
     p->memo_on = 1;
 #endif
 }
 
+#if XF_PARSER_MEMO
+/* Memo mode: store n bytes at ring index i0 (no wrap) with the CRC before each. */
+static inline uint32_t xf__append_memo(xf_parser *p, size_t i0, const uint8_t *data, size_t n, uint32_t c)
+{
+    const uint32_t *table = xf__crc_table();
+    uint8_t *r = p->ring + i0;
+    uint16_t *m = p->memo + i0;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        uint8_t b = data[i]; /* read once: the ring store may alias data */
+        m[i] = (uint16_t)(c >> 16);
+        r[i] = b;
+        c = xf__crc_step(c, table, b);
+    }
+    return c;
+}
+#endif
+
 static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
 {
+    size_t i0 = p->end & XF__RMASK;
+    size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
 #if XF_PARSER_MEMO
-    size_t i;
     if (p->memo_on) {
-        uint16_t c = p->memo_crc;
-        for (i = 0; i < n; i++) {
-            size_t k = (p->end + i) & XF__RMASK;
-            p->memo[k] = c;
-            p->ring[k] = data[i];
-            c = xf__crc_byte(c, data[i]);
-        }
-        p->memo_crc = c;
+        uint32_t c = xf__append_memo(p, i0, data, first, (uint32_t)p->memo_crc << 16);
+        c = xf__append_memo(p, 0, data + first, n - first, c);
+        p->memo_crc = (uint16_t)(c >> 16);
     } else
 #endif
     {
-        size_t i0 = p->end & XF__RMASK;
-        size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
         XF_MEMCPY(p->ring + i0, data, first);
         XF_MEMCPY(p->ring, data + first, n - first);
     }
@@ -226,7 +237,7 @@ static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
 }
 
 /* Is the candidate of length len at pos intact? Needs memo mode unless pos is head. */
-static inline int xf__intact(const xf_parser *p, uint32_t pos, size_t len)
+XF__HOT_INLINE int xf__intact(const xf_parser *p, uint32_t pos, size_t len)
 {
     uint32_t crc_pos = pos + (uint32_t)len - 2u;
     uint16_t want = (uint16_t)(((uint16_t)xf__rb(p, crc_pos) << 8) | xf__rb(p, crc_pos + 1u));
@@ -251,18 +262,51 @@ static inline void xf__drop_to(xf_parser *p, uint32_t pos)
     p->look_done = 0;
 }
 
+/* Reverse ring[i..j) (and the memo alongside). */
+static inline void xf__reverse(xf_parser *p, size_t i, size_t j)
+{
+    while (i + 1u < j) {
+        uint8_t t = p->ring[i];
+        j--;
+        p->ring[i] = p->ring[j];
+        p->ring[j] = t;
+#if XF_PARSER_MEMO
+        {
+            uint16_t m = p->memo[i];
+            p->memo[i] = p->memo[j];
+            p->memo[j] = m;
+        }
+#endif
+        i++;
+    }
+}
+
+/* Make position pos sit at ring index 0: rotate the ring left by pos's
+ * index (three reversals) and renumber every position by as much, so
+ * held bytes keep their index = position mod ring. Rare: frames wrap only
+ * after noise has left the ring misaligned, and this costs less than a
+ * scratch copy of a whole packet would in RAM. */
+static inline void xf__rotate(xf_parser *p, uint32_t pos)
+{
+    size_t s = pos & XF__RMASK;
+    xf__reverse(p, 0, s);
+    xf__reverse(p, s, XF_PARSER_RING);
+    xf__reverse(p, 0, XF_PARSER_RING);
+    p->head -= (uint32_t)s;
+    p->end -= (uint32_t)s;
+    p->look -= (uint32_t)s;
+}
+
 /* Return the frame of length len at pos and drop everything before it. */
 static inline void xf__emit(xf_parser *p, uint32_t pos, size_t len, xf_frame *frame)
 {
-    size_t i0 = pos & XF__RMASK;
-    if (i0 + len <= XF_PARSER_RING) {
-        frame->data = p->ring + i0;
-    } else {
-        size_t first = XF_PARSER_RING - i0;
-        XF_MEMCPY(p->scratch, p->ring + i0, first);
-        XF_MEMCPY(p->scratch + first, p->ring, len - first);
-        frame->data = p->scratch;
+    p->rotated = 0;
+    if ((pos & XF__RMASK) + len > XF_PARSER_RING) {
+        xf__rotate(p, pos);
+        pos -= pos & XF__RMASK;
+        p->rotated = 1;
     }
+    frame->data = p->ring + (pos & XF__RMASK);
     frame->len = len;
     xf__drop_to(p, pos);
     p->head = pos + (uint32_t)len;
@@ -305,40 +349,61 @@ static inline int xf__candidate(xf_parser *p, uint32_t pos, size_t *len, size_t 
  * once per head. Returns 1 with a frame, 0 when done or *need > 0. */
 static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size_t *need)
 {
+    /* The parser's hot spot on adversarial input: every position after a
+     * failed candidate is examined here, so the loop keeps its state in
+     * locals and jumps from one header byte to the next. A contender
+     * starts at least 72 bytes before pend (at a position before lim): a
+     * clean reply of 72 or 73 bytes never has one, so the fast path costs
+     * nothing. */
+    const uint32_t end = p->end;
+    const uint32_t lim = pend - XF_PACKET_MIN_LEN;
+    const uint8_t h0 = p->h0;
+    uint32_t look = p->look;
+    uint32_t stop; /* end or lim, whichever comes first */
     *need = 0;
-    /* A contender starts at least 72 bytes before pend: a clean reply of
-     * 72 or 73 bytes never has one, so the fast path costs nothing. */
-    while (!p->look_done && (uint32_t)(pend - p->look) > XF_PACKET_MIN_LEN) {
-        size_t len = 0;
-        int r;
-        if (p->look == p->end) {
-            *need = 1;
-            return 0;
-        }
-        r = xf__candidate(p, p->look, &len, need);
-        if (r == XF__WAIT) {
-            return 0;
-        }
-        if (r == XF__NO) {
-            p->look++;
+    if (p->look_done || (uint32_t)(pend - look) <= XF_PACKET_MIN_LEN) {
+        p->look_done = 1;
+        return 0;
+    }
+    stop = ((uint32_t)(end - look) < (uint32_t)(lim - look)) ? end : lim;
+    while (look != stop) {
+        size_t len = 0, avail;
+        if (p->ring[look & XF__RMASK] != h0) {
+            look++;
             continue;
         }
-        if ((uint32_t)(pend - p->look) <= len) {
+        if (xf__candidate(p, look, &len, need) != XF__YES) {
+            if (*need != 0u) {
+                p->look = look; /* XF__WAIT: the header or length is incomplete */
+                return 0;
+            }
+            look++;
+            continue;
+        }
+        if ((uint32_t)(pend - look) <= len) {
             break; /* the first candidate ends no sooner: leave it to the rescan */
         }
-        if ((size_t)(p->end - p->look) < len) {
-            *need = len - (size_t)(p->end - p->look);
+        avail = (size_t)(end - look);
+        if (avail < len) {
+            *need = len - avail;
+            p->look = look;
             return 0;
         }
         if (!p->memo_on) {
             xf__memo_start(p); /* from here on every check is O(1) */
         }
-        if (xf__intact(p, p->look, len)) {
-            xf__emit(p, p->look, len, frame);
+        if (xf__intact(p, look, len)) {
+            p->look = look;
+            xf__emit(p, look, len, frame);
             return 1;
         }
         p->stats.crc_errors++;
-        p->look++;
+        look++;
+    }
+    p->look = look;
+    if (look == end && look != lim) {
+        *need = 1; /* every held position examined; later ones may hold a contender */
+        return 0;
     }
     p->look_done = 1;
     return 0;
@@ -464,14 +529,38 @@ static inline int xf__direct(xf_parser *p, const uint8_t *d, size_t avail, xf_fr
     }
     frame->data = d;
     frame->len = len;
+    p->rotated = 0;
     p->stats.frames++;
     p->stats.bytes_in += (uint32_t)len;
     return 1;
 }
 
+/* A frame came from the ring: the bytes held past its end that were taken
+ * in this call go back to the caller, who still has them, so `consumed`
+ * ends at the frame whatever was appended (and when nothing else is held,
+ * the parser is empty again and the next packets take the fast path).
+ * Nothing past a frame's end has been examined yet: the scan goes in order
+ * of position and stops at the first frame. */
+static inline void xf__give_back(xf_parser *p, size_t *used, size_t appended)
+{
+    size_t past = (size_t)(p->end - p->head);
+    size_t back = (past < appended) ? past : appended;
+    if (back == 0u) {
+        return;
+    }
+    p->end -= (uint32_t)back;
+    p->stats.bytes_in -= (uint32_t)back;
+    *used -= back;
+#if XF_PARSER_MEMO
+    if (p->memo_on) {
+        p->memo_crc = p->memo[p->end & XF__RMASK]; /* the CRC before the first byte given back */
+    }
+#endif
+}
+
 XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
-    size_t used = 0;
+    size_t used = 0, appended = 0;
     int found = 0;
     if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
         return XF_ERR_ARG;
@@ -498,15 +587,31 @@ XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t 
             }
             if (xf__direct(p, hit, len - used, frame)) {
                 used += frame->len;
-                found = 1;
+                found = 2; /* in the caller's data */
                 break;
             }
             need = 4; /* header and length: every packet is longer than that */
         }
         take = (need < len - used) ? need : (len - used);
+#if XF_PARSER_MEMO
+        if (p->memo_on) {
+            /* After a CRC failure: take all the ring can hold, so the scan
+             * works through many candidates per call instead of asking for
+             * a few bytes at a time; what lies past a frame found is given
+             * back below. */
+            size_t room = XF_PARSER_RING - (size_t)(p->end - p->head);
+            if (room > take) {
+                take = (room < len - used) ? room : (len - used);
+            }
+        }
+#endif
         xf__append(p, data + used, take);
         p->stats.bytes_in += (uint32_t)take;
         used += take;
+        appended += take;
+    }
+    if (found == 1) {
+        xf__give_back(p, &used, appended);
     }
     if (consumed != NULL) {
         *consumed = used;
