@@ -69,8 +69,10 @@ int main(int argc, char **argv)
     }
     {
         const xf_telemetry *t = xf_client_telemetry(&client);
-        printf("%s (hw %u, fw %u) via %s: yaw %.2f deg, relative yaw %.2f deg\n", t->model ? t->model : "unknown model",
-               t->hw_version, t->fw_version, xf_serial_backend(&serial), (double)t->cam_yaw_deg, (double)t->rel_z_deg);
+        const char *model = xf_gimbal_model(t->gimbal_code);
+        printf("%s (hw %u, fw %u) via %s: yaw %.2f deg, relative yaw %.2f deg\n", model ? model : "unknown model",
+               t->hw_version, t->fw_version, xf_serial_backend(&serial), (double)xf_cdeg(t->cam_yaw),
+               (double)xf_cdeg(t->rel_angle_z));
     }
     xf_serial_close(&serial);
     return xf_client_command_status(&client, id, NULL) == XF_CMD_OK ? 0 : 1;

@@ -65,8 +65,8 @@ int main(int argc, char **argv)
         const xf_telemetry *t = xf_client_telemetry(&clients[i]);
         up += xf_client_link(&clients[i]) == XF_LINK_UP;
         printf("gimbal %2d: link %-5s pitch %7.2f yaw %7.2f, %u Hz\n", i,
-               xf_link_state_name(xf_client_link(&clients[i])), (double)t->cam_pitch_deg, (double)t->cam_yaw_deg,
-               xf_client_health(&clients[i])->reply_rate_hz);
+               xf_link_state_name(xf_client_link(&clients[i])), (double)xf_cdeg(t->cam_pitch),
+               (double)xf_cdeg(t->cam_yaw), xf_client_health(&clients[i])->reply_rate_hz);
     }
     printf("%d of %ld gimbals up\n", up, n);
     return up == n ? 0 : 3;

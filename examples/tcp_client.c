@@ -67,14 +67,16 @@ int main(int argc, char **argv)
     start = xf_posix_now_ms();
     while (xf_ms_since(xf_posix_now_ms(), start) < 3000u) {
         uint32_t now = xf_posix_now_ms();
+        xf_telemetry_units u; /* the client keeps wire integers: physical units on read */
         const xf_telemetry *t = xf_client_telemetry(&client);
         xf_client_set_rates(&client, 0.0f, -5.0f, 20.0f, now); /* refresh, or the watchdog stops the gimbal */
         xf_posix_poll(clients, 1, sims, n_sims, 20);
         if (xf_ms_since(now, last_print) >= 500u) {
             last_print = now;
+            xf_telemetry_convert(t, &u);
             printf("link %-5s  mode %-10s  pitch %7.2f  yaw %7.2f  zoom %4.1fx\n",
                    xf_link_state_name(xf_client_link(&client)), t->have_main ? xf_mode_name(t->gimbal_mode) : "-",
-                   (double)t->cam_pitch_deg, (double)t->cam_yaw_deg, (double)t->zoom_cam1);
+                   (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1);
         }
     }
     xf_tcp_close(&tcp);

@@ -62,8 +62,8 @@ int main(int argc, char **argv)
     {
         const xf_telemetry *t = xf_client_telemetry(&client);
         const xf_health *h = xf_client_health(&client);
-        printf("pitch %.2f yaw %.2f zoom %.1fx; %u replies at %u Hz, %s\n", (double)t->cam_pitch_deg,
-               (double)t->cam_yaw_deg, (double)t->zoom_cam1, h->replies, h->reply_rate_hz,
+        printf("pitch %.2f yaw %.2f zoom %.1fx; %u replies at %u Hz, %s\n", (double)xf_cdeg(t->cam_pitch),
+               (double)xf_cdeg(t->cam_yaw), (double)xf_zoom_x(t->zoom_cam1), h->replies, h->reply_rate_hz,
                xf_link_state_name((xf_link_state)h->link));
     }
     xf_udp_close(&udp);

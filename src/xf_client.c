@@ -38,19 +38,29 @@ xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *c
         xf_client_config_init(&def);
         cfg = &def;
     }
-    if (cfg->rate_hz == 0u || cfg->rate_hz > 200u || cfg->protocol_version == 0u) {
-        return XF_ERR_RANGE;
+    if (cfg->rate_hz == 0u || cfg->rate_hz > 200u || cfg->protocol_version == 0u || cfg->stale_ms == 0u ||
+        cfg->down_ms <= cfg->stale_ms || cfg->command_timeout_ms == 0u || cfg->operating_timeout_ms == 0u) {
+        return XF_ERR_RANGE; /* a link that is never up, or commands that time out before they are sent */
     }
     XF_MEMSET(c, 0, sizeof(*c));
     c->cfg = *cfg;
     c->hal = *hal;
     xf_parser_init(&c->parser, XF_DIR_GCU);
-    c->period_ms = (1000u + cfg->rate_hz / 2u) / cfg->rate_hz;
+    c->period_ms = (uint16_t)((1000u + cfg->rate_hz / 2u) / cfg->rate_hz);
     c->next_id = 1;
     return (cfg->rate_hz < 30u || cfg->rate_hz > 50u) ? XF_WARN_RATE : XF_OK;
 }
 
 /* ---- results ------------------------------------------------------------------ */
+
+/* The id of queue position @p i (0: the head). Ids are handed out in
+ * submission order and commands leave the queue from its head only, so the
+ * queued ones hold the q_count ids before next_id, 0 skipped on the wrap. */
+static uint32_t xf__queued_id(const xf_client *c, size_t i)
+{
+    uint32_t back = (uint32_t)(c->q_count - i);
+    return (back < c->next_id) ? c->next_id - back : c->next_id - back - 1u;
+}
 
 static void xf__publish(xf_client *c, const xf_cmd_result *r)
 {
@@ -63,13 +73,14 @@ static void xf__publish(xf_client *c, const xf_cmd_result *r)
     }
 }
 
-static void xf__result_of(const xf_client *c, const xf_cmd_slot *slot, xf_cmd_status st, xf_cmd_result *r)
+/* The result of the queue's head. */
+static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r)
 {
     XF_MEMSET(r, 0, sizeof(*r));
-    r->id = slot->id;
-    r->order = slot->order;
+    r->id = xf__queued_id(c, 0);
+    r->order = c->queue[c->q_head].order;
     r->status = (uint8_t)st;
-    if (c->active && slot == &c->queue[c->q_head]) {
+    if (c->active) {
         r->packets = c->packets;
         r->elapsed_ms = xf_ms_since(c->now_ms, c->started_ms);
     }
@@ -79,15 +90,14 @@ static void xf__result_of(const xf_client *c, const xf_cmd_slot *slot, xf_cmd_st
 static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
 {
     xf_cmd_result r;
-    xf_cmd_slot *slot = &c->queue[c->q_head];
-    xf__result_of(c, slot, st, &r);
+    xf__result_of(c, st, &r);
     if (fb != NULL) {
         r.state = fb->state;
         r.failed_cameras = fb->failed_cameras;
     }
     if (c->active) {
-        c->nulls_owed = 1;            /* back to null packets: the next command of any order is separated */
-        c->guard_order = slot->order; /* replies of this order may still be in flight */
+        c->nulls_owed = 1;        /* back to null packets: the next command of any order is separated */
+        c->guard_order = r.order; /* replies of this order may still be in flight */
         c->guard_open = 1;
     }
     c->active = 0;
@@ -139,12 +149,12 @@ static void xf__update_window(xf_client *c)
     if (xf_ms_since(c->now_ms, c->window_start_ms) < 1000u) {
         return;
     }
-    c->health.reply_rate_hz = (uint16_t)((c->window_replies > 65535u) ? 65535u : c->window_replies);
+    c->health.reply_rate_hz = c->window_replies;
     {
         /* Question and answer: at most one reply is in flight across a window's edge, so
          * count the one awaited at the start and not the one awaited at the end. */
-        int64_t missing =
-            (int64_t)c->window_sent - (int64_t)c->window_replies - (int64_t)c->awaiting + (int64_t)c->window_awaiting;
+        int32_t missing =
+            (int32_t)c->window_sent - (int32_t)c->window_replies - (int32_t)c->awaiting + (int32_t)c->window_awaiting;
         c->health.replies_missing = (missing > 0) ? (uint32_t)missing : 0u;
         c->window_awaiting = c->awaiting;
     }
@@ -155,46 +165,45 @@ static void xf__update_window(xf_client *c)
 
 /* ---- receiving ---------------------------------------------------------------- */
 
+/* Keep the wire's integers: converting on read costs nothing here, and
+ * floats or a copy of the packet would double the client's RAM on an MCU. */
 static void xf__update_telemetry(xf_client *c, const xf_gcu_packet *p)
 {
     xf_telemetry *t = &c->tele;
     const xf_gcu_main *m = &p->main;
     const xf_gcu_sub *s = &p->sub;
+    t->have_main = 1;
     t->version = p->version;
     t->gimbal_mode = m->gimbal_mode;
     t->pod_status = m->pod_status;
-    t->cam_roll_deg = xf_cdeg(m->cam_roll);
-    t->cam_pitch_deg = xf_cdeg(m->cam_pitch);
-    t->cam_yaw_deg = xf_cdeg(m->cam_yaw);
-    t->rel_x_deg = xf_cdeg(m->rel_angle_x);
-    t->rel_y_deg = xf_cdeg(m->rel_angle_y);
-    t->rel_z_deg = xf_cdeg(m->rel_angle_z);
-    t->rate_x_dps = xf_gcu_rate_dps(m->rate_x, p->version);
-    t->rate_y_dps = xf_gcu_rate_dps(m->rate_y, p->version);
-    t->rate_z_dps = xf_gcu_rate_dps(m->rate_z, p->version);
+    t->cam_roll = m->cam_roll;
+    t->cam_pitch = m->cam_pitch;
+    t->cam_yaw = m->cam_yaw;
+    t->rel_angle_x = m->rel_angle_x;
+    t->rel_angle_y = m->rel_angle_y;
+    t->rel_angle_z = m->rel_angle_z;
+    t->rate_x = m->rate_x;
+    t->rate_y = m->rate_y;
+    t->rate_z = m->rate_z;
     t->target_offset_x = m->target_offset_x;
     t->target_offset_y = m->target_offset_y;
-    t->have_main = 1;
-    t->main_ms = c->now_ms;
     if (s->sub_header == XF_SUB_HEADER) {
+        t->have_sub = 1;
         t->hw_version = s->hw_version;
         t->fw_version = s->fw_version;
         t->gimbal_code = s->gimbal_code;
-        t->model = xf_gimbal_model(s->gimbal_code);
-        t->error_code = s->error_code;
-        t->distance_valid = (uint8_t)xf_distance_m(s->target_distance, &t->target_distance_m);
-        t->target_lat_e7 = s->target_latitude;
-        t->target_lon_e7 = s->target_longitude;
-        t->target_alt_mm = s->target_altitude;
-        t->zoom_cam1 = xf_zoom_x(s->zoom_cam1);
-        t->zoom_cam2 = xf_zoom_x(s->zoom_cam2);
         t->thermal_status = s->thermal_status;
-        t->camera_status = s->camera_status;
         t->time_zone = s->time_zone;
-        t->have_sub = 1;
+        t->error_code = s->error_code;
+        t->camera_status = s->camera_status;
+        t->zoom_cam1 = s->zoom_cam1;
+        t->zoom_cam2 = s->zoom_cam2;
+        t->target_distance = s->target_distance;
+        t->target_longitude = s->target_longitude;
+        t->target_latitude = s->target_latitude;
+        t->target_altitude = s->target_altitude;
         t->sub_ms = c->now_ms;
     }
-    t->last = *p;
 }
 
 /* Match a reply against the running command. */
@@ -219,7 +228,7 @@ static void xf__match(xf_client *c, const xf_gcu_packet *p)
             xf_cmd_result r;
             c->operating = 1;
             c->operating_ms = c->now_ms;
-            xf__result_of(c, &c->queue[c->q_head], XF_CMD_OPERATING, &r);
+            xf__result_of(c, XF_CMD_OPERATING, &r);
             r.state = fb.state;
             xf__publish(c, &r);
         }
@@ -238,7 +247,9 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
         c->cfg.on_bytes(c->cfg.user, XF_DIR_GCU, f->data, f->len, c->now_ms);
     }
     c->health.replies++;
-    c->window_replies++;
+    if (c->window_replies < UINT16_MAX) {
+        c->window_replies++; /* a flooding peer saturates the count */
+    }
     c->awaiting = 0;
     c->health.last_rx_ms = c->now_ms;
     c->health.transport_closed = 0; /* a GCU answers over the (reopened) transport */
@@ -290,20 +301,20 @@ static xf_err xf__receive(xf_client *c)
 
 static void xf__put_carrier(const xf_client *c, xf_host_packet *pkt)
 {
-    const xf_carrier *k = &c->carrier;
+    const xf_carrier_wire *k = &c->carrier;
     if (!c->have_carrier || xf_ms_since(c->now_ms, c->carrier_ms) > c->cfg.carrier_max_age_ms) {
         return; /* zeros with ins_valid clear: never invent carrier data */
     }
     pkt->main.status |= XF_STATUS_INS_VALID;
-    pkt->main.carrier_roll = xf_carrier_roll_raw(k->roll_deg);
-    pkt->main.carrier_pitch = xf_carrier_pitch_raw(k->pitch_deg);
-    pkt->main.carrier_yaw = xf_carrier_yaw_raw(k->yaw_deg);
-    pkt->main.accel_north = xf_accel_raw(k->accel_north);
-    pkt->main.accel_east = xf_accel_raw(k->accel_east);
-    pkt->main.accel_up = xf_accel_raw(k->accel_up);
-    pkt->main.vel_north = xf_velocity_raw(k->vel_north);
-    pkt->main.vel_east = xf_velocity_raw(k->vel_east);
-    pkt->main.vel_up = xf_velocity_raw(k->vel_up);
+    pkt->main.carrier_roll = k->roll;
+    pkt->main.carrier_pitch = k->pitch;
+    pkt->main.carrier_yaw = k->yaw;
+    pkt->main.accel_north = k->accel_north;
+    pkt->main.accel_east = k->accel_east;
+    pkt->main.accel_up = k->accel_up;
+    pkt->main.vel_north = k->vel_north;
+    pkt->main.vel_east = k->vel_east;
+    pkt->main.vel_up = k->vel_up;
 }
 
 static void xf__put_gnss(const xf_client *c, xf_host_packet *pkt)
@@ -345,44 +356,46 @@ static void xf__put_control(xf_client *c, xf_host_packet *pkt)
     }
     {
         /* One raw unit is 0.1 deg/s divided by the main screen's zoom. */
-        float zoom = (c->tele.have_sub && c->tele.zoom_cam1 >= 1.0f) ? c->tele.zoom_cam1 : 1.0f;
+        float zoom = xf_zoom_x(c->tele.zoom_cam1); /* 0 until a sub frame came: counts as 1 */
         m->roll_ctrl = xf_ctrl_rate_raw(c->ctrl[0], zoom);
         m->pitch_ctrl = xf_ctrl_rate_raw(c->ctrl[1], zoom);
         m->yaw_ctrl = xf_ctrl_rate_raw(c->ctrl[2], zoom);
     }
 }
 
-/* Choose the order of the next packet: a command, an owed null, the stream, or null. */
-static const xf_cmd_slot *xf__next_order(xf_client *c)
+/* The order of the next packet: a command, an owed null, the stream, or null. */
+static void xf__put_order(xf_client *c, xf_host_packet *pkt)
 {
+    const xf_cmd_slot *cmd = &c->queue[c->q_head];
     if (!c->active && c->q_count > 0u && c->nulls_owed == 0u) {
-        const xf_cmd_slot *cmd = &c->queue[c->q_head];
         if (c->guard_open && cmd->order == c->guard_order && c->health.link != XF_LINK_DOWN) {
             /* Replies to the previous packets of this order may still be on
              * their way, each with that command's state. Replies come in
              * order: keep sending nulls until one of theirs is back, then
              * every reply of this order answers this command. */
-            return NULL;
+            return;
         }
         c->active = 1;
         c->operating = 0;
         c->packets = 0;
         c->started_ms = c->now_ms;
     }
-    if (c->active) {
-        return &c->queue[c->q_head];
-    }
-    if (c->nulls_owed > 0u) {
+    if (c->active) { /* checked and encoded at submit */
+        pkt->order = cmd->order;
+        pkt->params_len = cmd->params_len;
+        XF_MEMCPY(pkt->params, cmd->params, cmd->params_len);
+    } else if (c->nulls_owed > 0u) {
         c->nulls_owed--;
-        return NULL;
+    } else if (c->stream_on) {
+        pkt->order = XF_ORDER_EXTERNAL_TRACK;
+        pkt->params_len = (uint8_t)sizeof(c->stream);
+        XF_MEMCPY(pkt->params, c->stream, sizeof(c->stream));
     }
-    return c->stream_on ? &c->stream : NULL;
 }
 
 static xf_err xf__send(xf_client *c)
 {
     xf_host_packet pkt;
-    const xf_cmd_slot *cmd;
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = 0;
     xf_err err;
@@ -390,12 +403,7 @@ static xf_err xf__send(xf_client *c)
     xf__put_carrier(c, &pkt);
     xf__put_gnss(c, &pkt);
     xf__put_control(c, &pkt);
-    cmd = xf__next_order(c);
-    if (cmd != NULL) { /* checked and encoded at submit */
-        pkt.order = cmd->order;
-        pkt.params_len = cmd->params_len;
-        XF_MEMCPY(pkt.params, cmd->params, cmd->params_len);
-    }
+    xf__put_order(c, &pkt);
     if (xf_host_pack(&pkt, buf, sizeof(buf), &len) != XF_OK) {
         return XF_ERR_ARG;
     }
@@ -456,7 +464,6 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
         xf__update_link(c);
     }
     xf__update_window(c);
-    c->health.parser = c->parser.stats;
     return (rx != XF_OK) ? rx : tx;
 }
 
@@ -467,7 +474,16 @@ uint32_t xf_client_next_deadline(const xf_client *c) { return (c == NULL) ? 0u :
 void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now_ms)
 {
     if (c != NULL && carrier != NULL) {
-        c->carrier = *carrier;
+        xf_carrier_wire *k = &c->carrier;
+        k->roll = xf_carrier_roll_raw(carrier->roll_deg);
+        k->pitch = xf_carrier_pitch_raw(carrier->pitch_deg);
+        k->yaw = xf_carrier_yaw_raw(carrier->yaw_deg);
+        k->accel_north = xf_accel_raw(carrier->accel_north);
+        k->accel_east = xf_accel_raw(carrier->accel_east);
+        k->accel_up = xf_accel_raw(carrier->accel_up);
+        k->vel_north = xf_velocity_raw(carrier->vel_north);
+        k->vel_east = xf_velocity_raw(carrier->vel_east);
+        k->vel_up = xf_velocity_raw(carrier->vel_up);
         c->carrier_ms = now_ms;
         c->have_carrier = 1;
     }
@@ -524,7 +540,6 @@ static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t 
     if (err != XF_OK) {
         return err;
     }
-    slot->id = 0;
     slot->order = cmd->order;
     slot->params_len = (uint8_t)n;
     return XF_OK;
@@ -546,14 +561,14 @@ xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const
     }
     slot = &c->queue[(c->q_head + c->q_count) % XF_CLIENT_QUEUE];
     *slot = encoded;
-    slot->id = c->next_id++;
+    if (id != NULL) {
+        *id = c->next_id;
+    }
+    c->next_id++;
     if (c->next_id == 0u) {
         c->next_id = 1; /* 0 never names a command */
     }
     c->q_count++;
-    if (id != NULL) {
-        *id = slot->id;
-    }
     return XF_OK;
 }
 
@@ -564,8 +579,7 @@ xf_cmd_status xf_client_command_status(const xf_client *c, uint32_t id, xf_cmd_r
         return XF_CMD_UNKNOWN;
     }
     for (i = 0; i < c->q_count; i++) {
-        const xf_cmd_slot *slot = &c->queue[(c->q_head + i) % XF_CLIENT_QUEUE];
-        if (slot->id == id) {
+        if (xf__queued_id(c, i) == id) {
             if (i == 0u && c->active) {
                 return c->operating ? XF_CMD_OPERATING : XF_CMD_SENDING;
             }
@@ -607,7 +621,7 @@ xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16
     cmd.value = 2; /* start / keep tracking */
     err = xf__slot_encode(&encoded, &cmd, c->cfg.protocol_version, NULL);
     if (err == XF_OK) { /* a refused call leaves a running stream as it was */
-        c->stream = encoded;
+        XF_MEMCPY(c->stream, encoded.params, sizeof(c->stream));
         c->stream_on = 1;
     }
     return err;
@@ -621,7 +635,7 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
     }
     xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
     if (c->stream_on) {
-        cmd.cameras = c->stream.params[0]; /* external_track's parameters start with KK */
+        cmd.cameras = c->stream[0]; /* external_track's parameters start with KK */
         /* The stream's replies (same order, with their own state) may still
          * be in flight: the exit's result must be its own. */
         c->guard_order = XF_ORDER_EXTERNAL_TRACK;
@@ -635,6 +649,28 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
 
 const xf_telemetry *xf_client_telemetry(const xf_client *c) { return (c == NULL) ? NULL : &c->tele; }
 const xf_health *xf_client_health(const xf_client *c) { return (c == NULL) ? NULL : &c->health; }
+const xf_parser_stats *xf_client_parser_stats(const xf_client *c) { return (c == NULL) ? NULL : &c->parser.stats; }
+
+xf_err xf_telemetry_convert(const xf_telemetry *t, xf_telemetry_units *u)
+{
+    if (t == NULL || u == NULL) {
+        return XF_ERR_ARG;
+    }
+    u->cam_roll_deg = xf_cdeg(t->cam_roll);
+    u->cam_pitch_deg = xf_cdeg(t->cam_pitch);
+    u->cam_yaw_deg = xf_cdeg(t->cam_yaw);
+    u->rel_x_deg = xf_cdeg(t->rel_angle_x);
+    u->rel_y_deg = xf_cdeg(t->rel_angle_y);
+    u->rel_z_deg = xf_cdeg(t->rel_angle_z);
+    u->rate_x_dps = xf_gcu_rate_dps(t->rate_x, t->version);
+    u->rate_y_dps = xf_gcu_rate_dps(t->rate_y, t->version);
+    u->rate_z_dps = xf_gcu_rate_dps(t->rate_z, t->version);
+    u->zoom_cam1 = xf_zoom_x(t->zoom_cam1);
+    u->zoom_cam2 = xf_zoom_x(t->zoom_cam2);
+    u->target_distance_m = 0.0f;
+    u->distance_valid = (uint8_t)xf_distance_m(t->target_distance, &u->target_distance_m);
+    return XF_OK;
+}
 xf_link_state xf_client_link(const xf_client *c) { return (c == NULL) ? XF_LINK_DOWN : (xf_link_state)c->health.link; }
 
 const char *xf_link_state_name(xf_link_state s)

@@ -90,47 +90,67 @@ typedef struct xf_cmd_result {
     uint32_t elapsed_ms;    /**< from first sent to this result */
 } xf_cmd_result;
 
-/** The gimbal's state in physical units, with when each part last arrived. */
+/**
+ * The gimbal's state as the GCU sent it: the wire's integers under the
+ * spec's names (xf_gcu_main, xf_gcu_sub), 64 bytes rather than a copy of
+ * every packet in floats. Physical units on read: xf_telemetry_convert()
+ * for all of them at once, or xf_units.h's function named at each member.
+ */
 typedef struct xf_telemetry {
+    /* main frame: in every reply, received at xf_health.last_rx_ms */
+    uint8_t have_main;   /**< 0 until the first reply */
     uint8_t version;     /**< protocol version the GCU speaks */
     uint8_t gimbal_mode; /**< xf_mode */
     uint16_t pod_status; /**< XF_POD_* */
-    float cam_roll_deg, cam_pitch_deg, cam_yaw_deg;
-    float rel_x_deg, rel_y_deg, rel_z_deg;
-    float rate_x_dps, rate_y_dps, rate_z_dps; /**< unit picked by version */
+    int16_t cam_roll;    /**< 0.01 deg, absolute (xf_cdeg) */
+    int16_t cam_pitch;
+    uint16_t cam_yaw;    /**< [0, 36000) */
+    int16_t rel_angle_x; /**< 0.01 deg relative to the carrier (xf_cdeg) */
+    int16_t rel_angle_y;
+    int16_t rel_angle_z;
+    int16_t rate_x; /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 (xf_gcu_rate_dps(raw, version)) */
+    int16_t rate_y;
+    int16_t rate_z;
     int16_t target_offset_x, target_offset_y; /**< [-1000, 1000] */
-    /* sub frame */
-    uint8_t hw_version, fw_version, gimbal_code;
-    const char *model; /**< from gimbal_code, NULL if unknown */
-    uint16_t error_code;
-    uint8_t distance_valid;
-    float target_distance_m;
-    int32_t target_lat_e7, target_lon_e7; /**< 1e-7 deg (xf_deg7() for degrees) */
-    int32_t target_alt_mm;
-    float zoom_cam1, zoom_cam2; /**< x */
-    uint8_t thermal_status;     /**< V0.2 */
-    uint16_t camera_status;     /**< V0.2 */
-    int8_t time_zone;           /**< V0.2 */
-    /* freshness: xf_client_step's clock; 0 with have_* clear means never */
-    uint8_t have_main, have_sub;
-    uint32_t main_ms;   /**< when the main frame was last received */
-    uint32_t sub_ms;    /**< when a sub frame (sub_header 0x01) was last received */
-    xf_gcu_packet last; /**< the last packet as received */
+    /* sub frame (sub_header 0x01): kept from the last one received */
+    uint8_t have_sub; /**< 0 until the first sub frame */
+    uint8_t hw_version, fw_version;
+    uint8_t gimbal_code;    /**< xf_gimbal_model() */
+    uint8_t thermal_status; /**< V0.2: XF_THERMAL_* */
+    int8_t time_zone;       /**< V0.2 */
+    uint16_t error_code;    /**< V0.2: XF_ERROR_* */
+    uint16_t camera_status; /**< V0.2: XF_CAMERA_* */
+    uint16_t zoom_cam1;     /**< 0.1 x (xf_zoom_x) */
+    uint16_t zoom_cam2;
+    int32_t target_distance;  /**< 0.1 m; <= 0: no valid measurement (xf_distance_m) */
+    int32_t target_longitude; /**< 1e-7 deg (xf_deg7) */
+    int32_t target_latitude;
+    int32_t target_altitude; /**< mm */
+    uint32_t sub_ms;         /**< when the last sub frame arrived (xf_client_step's clock) */
 } xf_telemetry;
 
-/** Link health figures. */
+/** The telemetry's quantities in physical units (xf_telemetry_convert). */
+typedef struct xf_telemetry_units {
+    float cam_roll_deg, cam_pitch_deg, cam_yaw_deg;
+    float rel_x_deg, rel_y_deg, rel_z_deg;
+    float rate_x_dps, rate_y_dps, rate_z_dps; /**< unit of the wire picked by the version */
+    float zoom_cam1, zoom_cam2;               /**< x */
+    float target_distance_m;                  /**< 0 when distance_valid is 0 */
+    uint8_t distance_valid;
+} xf_telemetry_units;
+
+/** Link health figures. The receive parser's counters: xf_client_parser_stats(). */
 typedef struct xf_health {
     uint8_t link;             /**< xf_link_state */
     uint8_t watchdog_active;  /**< zero rates are being sent because rates went stale */
     uint8_t transport_closed; /**< the transport said the link is closed (a backend may be restoring it) */
+    uint16_t reply_rate_hz;   /**< replies in the last full second */
     uint32_t last_rx_ms;      /**< when the last valid reply arrived */
     uint32_t packets_sent;
     uint32_t replies;         /**< valid GCU packets received */
     uint32_t replies_missing; /**< packets of the last full second that got no reply */
-    uint16_t reply_rate_hz;   /**< replies in the last full second */
     uint32_t send_errors;     /**< HAL writes that failed */
     uint32_t watchdog_trips;
-    xf_parser_stats parser; /**< the receive parser's counters */
 } xf_health;
 
 /** Carrier state; gravity excluded from the accelerations. */
@@ -160,30 +180,46 @@ typedef void (*xf_on_link_fn)(void *user, xf_link_state state);
 /** Every packet sent and received, raw (for tracing and recording). */
 typedef void (*xf_on_bytes_fn)(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
 
+/**
+ * Limits: the ages and link times are uint16_t, up to 65535 ms (a minute
+ * is far longer than a 30-50 Hz link can stay silent and still be useful);
+ * the two command timeouts are uint32_t. xf_client_init refuses values
+ * that cannot work (XF_ERR_RANGE).
+ */
 typedef struct xf_client_config {
-    uint8_t protocol_version;      /**< sent in byte 4; default 1 */
-    uint16_t rate_hz;              /**< packets per second, 1..200; default 50 (30-50 recommended) */
-    uint32_t carrier_max_age_ms;   /**< default 200 */
-    uint32_t gnss_max_age_ms;      /**< default 2000 */
-    uint32_t stale_ms;             /**< default 250 */
-    uint32_t down_ms;              /**< default 1000 */
-    uint32_t command_timeout_ms;   /**< no execution state within this: timeout; default 1000 */
-    uint32_t operating_timeout_ms; /**< after "operating", the final state within this; default 60000 */
-    uint32_t rate_watchdog_ms;     /**< default 500; 0 = off (not recommended) */
     xf_on_result_fn on_result;
     xf_on_telemetry_fn on_telemetry;
     xf_on_link_fn on_link;
     xf_on_bytes_fn on_bytes;
     void *user;
+    uint32_t command_timeout_ms;   /**< no execution state within this: timeout; >= 1, default 1000 */
+    uint32_t operating_timeout_ms; /**< after "operating", the final state within this; >= 1, default 60000 */
+    uint16_t rate_hz;              /**< packets per second, 1..200; default 50 (30-50 recommended) */
+    uint16_t carrier_max_age_ms;   /**< default 200 */
+    uint16_t gnss_max_age_ms;      /**< default 2000 */
+    uint16_t stale_ms;             /**< >= 1, default 250 */
+    uint16_t down_ms;              /**< > stale_ms, default 1000 */
+    uint16_t rate_watchdog_ms;     /**< default 500; 0 = off (not recommended) */
+    uint8_t protocol_version;      /**< sent in byte 4; >= 1, default 1 */
 } xf_client_config;
 
-/* A command as it goes on the wire: checked and encoded once, at submit. */
+/* A command as it goes on the wire: checked and encoded once, at submit.
+ * Its id is not kept: ids are handed out in queue order (xf_client.c's
+ * xf__queued_id), which saves 4 bytes a slot. */
 typedef struct xf_cmd_slot {
-    uint32_t id;
     uint8_t order;
     uint8_t params_len;
     uint8_t params[XF_PARAMS_KNOWN_MAX];
 } xf_cmd_slot;
+
+/* Carrier state as it goes on the wire (xf_host_main's units), converted
+ * once by xf_client_set_carrier rather than kept as nine floats. */
+typedef struct xf_carrier_wire {
+    int16_t roll, pitch; /* 0.01 deg */
+    uint16_t yaw;
+    int16_t accel_north, accel_east, accel_up; /* 0.01 m/s^2 */
+    int16_t vel_north, vel_east, vel_up;       /* 0.01 m/s */
+} xf_carrier_wire;
 
 /** Client state: treat the members as private; use the functions. */
 typedef struct xf_client {
@@ -192,40 +228,38 @@ typedef struct xf_client {
     xf_parser parser;
     xf_telemetry tele;
     xf_health health;
-    /* inputs */
-    xf_carrier carrier;
-    uint32_t carrier_ms;
-    uint8_t have_carrier;
+    /* inputs; times on xf_client_step's clock */
     xf_gnss gnss;
-    uint32_t gnss_ms;
-    uint8_t have_gnss;
+    uint32_t gnss_ms, carrier_ms, ctrl_ms;
+    float ctrl[3]; /* roll, pitch, yaw: deg/s or deg as ctrl_kind says */
+    xf_carrier_wire carrier;
+    uint8_t have_carrier, have_gnss;
     uint8_t ctrl_kind; /* 0 none, 1 rates, 2 angles */
-    float ctrl[3];     /* roll, pitch, yaw */
-    uint32_t ctrl_ms;
-    /* streamed external track */
+    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
     uint8_t stream_on;
-    xf_cmd_slot stream;
+    uint8_t stream[6];
     /* commands */
     xf_cmd_slot queue[XF_CLIENT_QUEUE];
     uint8_t q_head, q_count;
     uint8_t active;      /* queue[q_head] is being sent */
+    uint8_t operating;   /* ... and the GCU said "operating" */
     uint8_t guard_order; /* order of the last finished command (or of the stopped stream) */
     uint8_t guard_open;  /* no reply of another order seen since: a command of guard_order waits */
-    uint8_t operating;
-    uint8_t nulls_owed; /* null packets to send before the next command */
-    uint16_t packets;
+    uint8_t nulls_owed;  /* null packets to send before the next command */
+    uint8_t r_next;      /* results[r_next] is overwritten next */
     uint32_t started_ms, operating_ms;
-    uint32_t next_id;
+    uint32_t next_id; /* the id the next submitted command gets; never 0 */
     xf_cmd_result results[XF_CLIENT_RESULTS];
-    uint8_t r_next;
     /* timing */
-    uint32_t period_ms;
+    uint32_t now_ms;
     uint32_t next_send_ms;
+    uint32_t window_start_ms;
+    uint16_t window_sent, window_replies; /* in the window: at most a second's worth (replies saturate) */
+    uint16_t period_ms;
+    uint16_t packets; /* packets that carried the running command */
     uint8_t started;
-    uint32_t window_start_ms, window_sent, window_replies;
     uint8_t awaiting;        /* the last packet sent has had no reply yet */
     uint8_t window_awaiting; /* the same, when the window started */
-    uint32_t now_ms;
 } xf_client;
 
 /** Defaults, as documented in xf_client_config. */
@@ -235,7 +269,7 @@ void xf_client_config_init(xf_client_config *cfg);
  * Start a client on @p hal (copied). @p cfg NULL means defaults.
  * @return XF_OK, XF_WARN_RATE (accepted; rate outside 30-50 Hz),
  *   XF_ERR_ARG (NULL, incomplete hal), XF_ERR_RANGE (rate 0 or > 200,
- *   version 0).
+ *   version 0, stale_ms 0, down_ms <= stale_ms, a command timeout 0).
  */
 xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *cfg);
 
@@ -292,7 +326,14 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id);
 /* ---- state ------------------------------------------------------------------- */
 
 const xf_telemetry *xf_client_telemetry(const xf_client *c);
+/**
+ * @p t in physical units (computed on read: the client keeps the wire's
+ * integers). @return XF_OK, XF_ERR_ARG (NULL).
+ */
+xf_err xf_telemetry_convert(const xf_telemetry *t, xf_telemetry_units *u);
 const xf_health *xf_client_health(const xf_client *c);
+/** The receive parser's counters (frames, CRC and length errors, bytes skipped); NULL if @p c is NULL. */
+const xf_parser_stats *xf_client_parser_stats(const xf_client *c);
 xf_link_state xf_client_link(const xf_client *c);
 const char *xf_link_state_name(xf_link_state s);
 const char *xf_cmd_status_name(xf_cmd_status s);

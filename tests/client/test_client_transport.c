@@ -247,19 +247,19 @@ static void test_telemetry_ages(void **state)
     uint32_t seen;
     pump(t, 100);
     assert_true(tel->have_main && tel->have_sub);
-    assert_true(xf_ms_since(now(), tel->main_ms) < 60u);
+    assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) < 60u);
     assert_true(xf_ms_since(now(), tel->sub_ms) < 60u);
-    assert_string_equal(tel->model, "D-80AI");
+    assert_string_equal(xf_gimbal_model(tel->gimbal_code), "D-80AI");
     assert_int_equal(tel->gimbal_mode, XF_MODE_HEAD_LOCK);
     t->sim.fault.silent = 1;
     pump(t, 30);
-    seen = tel->main_ms;
+    seen = xf_client_health(&t->c)->last_rx_ms;
     pump(t, 300);
-    assert_int_equal(tel->main_ms, seen);
-    assert_true(xf_ms_since(now(), tel->main_ms) >= 300u);
+    assert_int_equal(xf_client_health(&t->c)->last_rx_ms, seen);
+    assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) >= 300u);
     t->sim.fault.silent = 0;
     pump(t, 100);
-    assert_true(xf_ms_since(now(), tel->main_ms) < 60u);
+    assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) < 60u);
 }
 
 /*

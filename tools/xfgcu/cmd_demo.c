@@ -52,6 +52,24 @@ static void print_intro(const demo *d)
     fflush(stdout);
 }
 
+/* ---- the telemetry's wire integers in physical units ------------------------------------------ */
+
+static double deg(int32_t raw) { return (double)xf_cdeg(raw); }
+static double zoom_x(const xf_telemetry *t) { return (double)xf_zoom_x(t->zoom_cam1); }
+
+static double distance_m(const xf_telemetry *t)
+{
+    float m = 0.0f;
+    (void)xf_distance_m(t->target_distance, &m);
+    return (double)m;
+}
+
+static const char *model_name(const xf_telemetry *t)
+{
+    const char *m = xf_gimbal_model(t->gimbal_code);
+    return (m != NULL) ? m : "unknown model";
+}
+
 /* ---- conditions ------------------------------------------------------------------------ */
 
 static int link_up(const demo *d) { return xf_client_link(&d->client) == XF_LINK_UP; }
@@ -59,18 +77,18 @@ static int link_up(const demo *d) { return xf_client_link(&d->client) == XF_LINK
 static int at_target(const demo *d)
 {
     const xf_telemetry *t = demo_tele(d);
-    return fabs((double)t->cam_pitch_deg - d->target_pitch) <= 0.5 &&
-           fabs(cli_wrap180((double)t->cam_yaw_deg - d->target_yaw)) <= 0.5;
+    return fabs(deg(t->cam_pitch) - d->target_pitch) <= 0.5 &&
+           fabs(cli_wrap180(deg(t->cam_yaw) - d->target_yaw)) <= 0.5;
 }
 
-static int at_pitch(const demo *d) { return fabs((double)demo_tele(d)->cam_pitch_deg - d->target_pitch) <= 0.5; }
+static int at_pitch(const demo *d) { return fabs(deg(demo_tele(d)->cam_pitch) - d->target_pitch) <= 0.5; }
 
-static int at_zoom(const demo *d) { return fabs((double)demo_tele(d)->zoom_cam1 - d->target_zoom) < 0.05; }
+static int at_zoom(const demo *d) { return fabs(zoom_x(demo_tele(d)) - d->target_zoom) < 0.05; }
 
 static int has_distance(const demo *d)
 {
     const xf_telemetry *t = demo_tele(d);
-    return t->distance_valid && (t->pod_status & XF_POD_TARGET_VALID) != 0u;
+    return xf_distance_m(t->target_distance, NULL) && (t->pod_status & XF_POD_TARGET_VALID) != 0u;
 }
 
 /* ---- the steps ------------------------------------------------------------------------------ */
@@ -84,8 +102,8 @@ static void step_connect(demo *d)
     ms = demo_pump_until(d, 2000, link_up);
     if (demo_check(d, ms >= 0, "no answer from the simulated GCU within 2 s")) {
         demo_got("first reply after %ld ms: %s, hardware %u, firmware %u, mode %s, pitch %.2f yaw %.2f deg", ms,
-                 t->model ? t->model : "unknown model", t->hw_version, t->fw_version, xf_mode_name(t->gimbal_mode),
-                 (double)t->cam_pitch_deg, (double)t->cam_yaw_deg);
+                 model_name(t), t->hw_version, t->fw_version, xf_mode_name(t->gimbal_mode), deg(t->cam_pitch),
+                 deg(t->cam_yaw));
     }
 }
 
@@ -93,7 +111,7 @@ static void step_pan(demo *d)
 {
     const xf_telemetry *t = demo_tele(d);
     xf_command cmd;
-    double yaw0 = (double)t->cam_yaw_deg, moved;
+    double yaw0 = deg(t->cam_yaw), moved;
     int k;
     demo_step(d, "head lock, then pan at 30 deg/s for 2 s");
     xf_command_init(&cmd, XF_ORDER_HEAD_LOCK);
@@ -102,13 +120,13 @@ static void step_pan(demo *d)
     demo_rates(d, 0.0f, 30.0f);
     demo_mark(d);
     for (k = 1; k <= 4 && demo_pump(d, 500); k++) {
-        demo_got("t %.1f s   yaw %6.2f deg   yaw rate %5.1f deg/s", demo_since(d), (double)t->cam_yaw_deg,
-                 (double)t->rate_z_dps);
+        demo_got("t %.1f s   yaw %6.2f deg   yaw rate %5.1f deg/s", demo_since(d), deg(t->cam_yaw),
+                 (double)xf_gcu_rate_dps(t->rate_z, t->version));
     }
     demo_sent("zero rates: the gimbal holds its attitude");
     demo_rates_off(d);
-    moved = cli_wrap180((double)t->cam_yaw_deg - yaw0);
-    demo_got("holding at yaw %.2f deg: turned %.1f deg", (double)t->cam_yaw_deg, moved);
+    moved = cli_wrap180(deg(t->cam_yaw) - yaw0);
+    demo_got("holding at yaw %.2f deg: turned %.1f deg", deg(t->cam_yaw), moved);
     demo_check(d, fabs(moved - 60.0) < 6.0, "the gimbal turned %.1f deg, not about 60", moved);
 }
 
@@ -126,12 +144,11 @@ static void step_point(demo *d)
     xf_client_set_angles(&d->client, 0.0f, -30.0f, 45.0f, xf_posix_now_ms());
     demo_mark(d);
     (void)demo_pump(d, 150);
-    demo_got("t %.2f s  on the way: pitch %.2f yaw %.2f deg", demo_since(d), (double)t->cam_pitch_deg,
-             (double)t->cam_yaw_deg);
+    demo_got("t %.2f s  on the way: pitch %.2f yaw %.2f deg", demo_since(d), deg(t->cam_pitch), deg(t->cam_yaw));
     ms = demo_pump_until(d, 5000, at_target);
     if (demo_check(d, ms >= 0, "the gimbal did not reach pitch -30 yaw 45 within 5 s")) {
-        demo_got("arrived after %.2f s: pitch %.2f yaw %.2f deg (within 0.5 deg)", demo_since(d),
-                 (double)t->cam_pitch_deg, (double)t->cam_yaw_deg);
+        demo_got("arrived after %.2f s: pitch %.2f yaw %.2f deg (within 0.5 deg)", demo_since(d), deg(t->cam_pitch),
+                 deg(t->cam_yaw));
     }
     (void)demo_pump(d, 100);
     xf_client_clear_control(&d->client); /* in Euler mode the gimbal holds without them */
@@ -148,12 +165,11 @@ static void step_ranging(demo *d)
     demo_command(d, &cmd, "ranging --on", XF_CMD_OK, NULL);
     ms = demo_pump_until(d, 1000, has_distance);
     if (demo_check(d, ms >= 0, "no valid distance within 1 s")) {
-        demo_got("distance %.1f m (%.0f m high, looking 30 deg down)", (double)t->target_distance_m, HOME_HEIGHT);
+        demo_got("distance %.1f m (%.0f m high, looking 30 deg down)", distance_m(t), HOME_HEIGHT);
         demo_got("target at %.7f N %.7f E, altitude %.1f m: north-east of the carrier, as yaw 45 says",
-                 xf_deg7(t->target_lat_e7), xf_deg7(t->target_lon_e7), (double)t->target_alt_mm / 1000.0);
-        demo_check(d, fabs((double)t->target_distance_m - 240.0) < 10.0, "distance %.1f m, expected about 240",
-                   (double)t->target_distance_m);
-        demo_check(d, xf_deg7(t->target_lat_e7) > HOME_LAT && xf_deg7(t->target_lon_e7) > HOME_LON,
+                 xf_deg7(t->target_latitude), xf_deg7(t->target_longitude), (double)t->target_altitude / 1000.0);
+        demo_check(d, fabs(distance_m(t) - 240.0) < 10.0, "distance %.1f m, expected about 240", distance_m(t));
+        demo_check(d, xf_deg7(t->target_latitude) > HOME_LAT && xf_deg7(t->target_longitude) > HOME_LON,
                    "the target is not north-east of the carrier");
     }
 }
@@ -171,10 +187,9 @@ static void step_orthoview(demo *d)
     if (demo_check(d, ms >= 0, "pitch did not reach -90 within 3 s")) {
         (void)demo_pump(d, 60);
         demo_got("mode %s, pitch %.2f deg after %.2f s; distance now %.1f m (straight down)",
-                 xf_mode_name(t->gimbal_mode), (double)t->cam_pitch_deg, cli_seconds((uint32_t)ms),
-                 (double)t->target_distance_m);
-        demo_check(d, fabs((double)t->target_distance_m - HOME_HEIGHT) < 2.0, "distance %.1f m, expected %.0f",
-                   (double)t->target_distance_m, HOME_HEIGHT);
+                 xf_mode_name(t->gimbal_mode), deg(t->cam_pitch), cli_seconds((uint32_t)ms), distance_m(t));
+        demo_check(d, fabs(distance_m(t) - HOME_HEIGHT) < 2.0, "distance %.1f m, expected %.0f", distance_m(t),
+                   HOME_HEIGHT);
     }
 }
 
@@ -182,7 +197,7 @@ static void step_zoom_to(demo *d)
 {
     const xf_telemetry *t = demo_tele(d);
     xf_command cmd;
-    double zoom0 = (double)t->zoom_cam1;
+    double zoom0 = zoom_x(t);
     long ms;
     demo_step(d, "zoom to 5x");
     xf_command_init(&cmd, XF_ORDER_ZOOM_TO);
@@ -190,8 +205,8 @@ static void step_zoom_to(demo *d)
     demo_command(d, &cmd, "zoom_to --rate 5", XF_CMD_OK, NULL);
     d->target_zoom = 5.0;
     ms = demo_pump_until(d, 3000, at_zoom);
-    if (demo_check(d, ms >= 0, "zoom did not reach 5.0x within 3 s (it is %.1fx)", (double)t->zoom_cam1)) {
-        demo_got("zoom of camera 1: %.1fx -> %.1fx", zoom0, (double)t->zoom_cam1);
+    if (demo_check(d, ms >= 0, "zoom did not reach 5.0x within 3 s (it is %.1fx)", zoom_x(t))) {
+        demo_got("zoom of camera 1: %.1fx -> %.1fx", zoom0, zoom_x(t));
     }
 }
 
@@ -199,18 +214,18 @@ static void step_zoom_in(demo *d)
 {
     const xf_telemetry *t = demo_tele(d);
     xf_command cmd;
-    double zoom0 = (double)t->zoom_cam1, zoom1, zoom2;
+    double zoom0 = zoom_x(t), zoom1, zoom2;
     demo_step(d, "zoom in for a second, then stop");
     xf_command_init(&cmd, XF_ORDER_ZOOM_IN);
     demo_command(d, &cmd, "zoom_in", XF_CMD_OK, NULL);
     (void)demo_pump(d, 500);
-    demo_got("zooming: %.1fx", (double)t->zoom_cam1);
+    demo_got("zooming: %.1fx", zoom_x(t));
     (void)demo_pump(d, 500);
     xf_command_init(&cmd, XF_ORDER_ZOOM_STOP);
     demo_command(d, &cmd, "zoom_stop", XF_CMD_OK, NULL);
-    zoom1 = (double)t->zoom_cam1;
+    zoom1 = zoom_x(t);
     (void)demo_pump(d, 300);
-    zoom2 = (double)t->zoom_cam1;
+    zoom2 = zoom_x(t);
     demo_got("zoom %.1fx -> %.1fx, and it stays there (%.1fx 0.3 s later)", zoom0, zoom1, zoom2);
     demo_check(d, zoom1 > zoom0 + 2.0, "zoom did not grow (%.1fx -> %.1fx)", zoom0, zoom1);
     demo_check(d, fabs(zoom2 - zoom1) < 0.15, "zoom kept moving after zoom_stop (%.1fx -> %.1fx)", zoom1, zoom2);
@@ -253,7 +268,7 @@ static void step_track(demo *d)
              (t->pod_status & XF_POD_TRACKING_OK) ? "ok" : "lost", t->target_offset_x, t->target_offset_y);
     for (k = 0; k < 4 && demo_pump(d, 150); k++) {
         demo_got("t %.2f s  target offset x %4d y %4d  (the gimbal turns to centre it: yaw %.2f deg)", demo_since(d),
-                 t->target_offset_x, t->target_offset_y, (double)t->cam_yaw_deg);
+                 t->target_offset_x, t->target_offset_y, deg(t->cam_yaw));
     }
     demo_check(d, t->gimbal_mode == XF_MODE_TRACK && (t->pod_status & XF_POD_TRACKING_OK) != 0u,
                "the gimbal is not tracking");
@@ -291,15 +306,16 @@ static void step_calibration(demo *d)
 static void step_health(demo *d)
 {
     const xf_health *h = xf_client_health(&d->client);
+    const xf_parser_stats *ps = xf_client_parser_stats(&d->client);
     demo_step(d, "link health");
     (void)demo_pump(d, 50);
     demo_got("link %s: %u packets sent, %u replies, %u replies/s, %u missing in the last second",
              xf_link_state_name((xf_link_state)h->link), (unsigned)h->packets_sent, (unsigned)h->replies,
              (unsigned)h->reply_rate_hz, (unsigned)h->replies_missing);
     demo_got("parser: %u frames, %u CRC errors, %u bytes skipped; simulator: %u correct packets in, %u replies out",
-             (unsigned)h->parser.frames, (unsigned)h->parser.crc_errors, (unsigned)h->parser.bytes_skipped,
+             (unsigned)ps->frames, (unsigned)ps->crc_errors, (unsigned)ps->bytes_skipped,
              (unsigned)d->sim.stats.packets_in, (unsigned)d->sim.stats.replies);
-    demo_check(d, h->link == XF_LINK_UP && h->parser.crc_errors == 0u && h->replies + 5u >= h->packets_sent,
+    demo_check(d, h->link == XF_LINK_UP && ps->crc_errors == 0u && h->replies + 5u >= h->packets_sent,
                "the link was not healthy");
 }
 

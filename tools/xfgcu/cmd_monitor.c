@@ -103,11 +103,11 @@ static void on_link(void *user, xf_link_state state)
 
 static const char *yes_no(unsigned v, const char *yes, const char *no) { return v != 0u ? yes : no; }
 
-static void distance_text(const xf_telemetry *t, char *buf, size_t cap)
+static void distance_text(const xf_telemetry *t, const xf_telemetry_units *u, char *buf, size_t cap)
 {
-    if (t->distance_valid && (t->pod_status & XF_POD_TARGET_VALID) != 0u) {
-        snprintf(buf, cap, "%.1f m, target lat %.7f lon %.7f alt %.1f m", (double)t->target_distance_m,
-                 xf_deg7(t->target_lat_e7), xf_deg7(t->target_lon_e7), (double)t->target_alt_mm / 1000.0);
+    if (u->distance_valid && (t->pod_status & XF_POD_TARGET_VALID) != 0u) {
+        snprintf(buf, cap, "%.1f m, target lat %.7f lon %.7f alt %.1f m", (double)u->target_distance_m,
+                 xf_deg7(t->target_latitude), xf_deg7(t->target_longitude), (double)t->target_altitude / 1000.0);
     } else {
         snprintf(buf, cap, "no target");
     }
@@ -138,22 +138,26 @@ static void draw_screen(const monitor *m)
 {
     const xf_telemetry *t = xf_client_telemetry(&m->o->client);
     const xf_health *h = xf_client_health(&m->o->client);
+    const xf_parser_stats *ps = xf_client_parser_stats(&m->o->client);
+    const char *model = xf_gimbal_model(t->gimbal_code);
+    xf_telemetry_units u;
     char dist[160], rate[64];
     const char *mode = xf_mode_name(t->gimbal_mode);
-    distance_text(t, dist, sizeof(dist));
+    (void)xf_telemetry_convert(t, &u);
+    distance_text(t, &u, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     printf("\033[H\033[2J"); /* cursor home, clear */
     printf("xfgcu monitor: %s   (Ctrl-C to quit)\n\n", m->o->desc);
-    printf("gimbal      %s (code %u), hardware %u, firmware %u, protocol %u\n", t->model ? t->model : "unknown model",
+    printf("gimbal      %s (code %u), hardware %u, firmware %u, protocol %u\n", model ? model : "unknown model",
            t->gimbal_code, t->hw_version, t->fw_version, t->version);
     printf("mode        %s (0x%02X)\n", mode ? mode : "unknown", t->gimbal_mode);
-    printf("attitude    roll %8.2f   pitch %8.2f   yaw %8.2f deg\n", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
-           (double)t->cam_yaw_deg);
-    printf("relative    x    %8.2f   y     %8.2f   z   %8.2f deg (to the carrier)\n", (double)t->rel_x_deg,
-           (double)t->rel_y_deg, (double)t->rel_z_deg);
-    printf("rates       x    %8.2f   y     %8.2f   z   %8.2f deg/s\n", (double)t->rate_x_dps, (double)t->rate_y_dps,
-           (double)t->rate_z_dps);
-    printf("zoom        camera 1 %.1fx   camera 2 %.1fx\n", (double)t->zoom_cam1, (double)t->zoom_cam2);
+    printf("attitude    roll %8.2f   pitch %8.2f   yaw %8.2f deg\n", (double)u.cam_roll_deg, (double)u.cam_pitch_deg,
+           (double)u.cam_yaw_deg);
+    printf("relative    x    %8.2f   y     %8.2f   z   %8.2f deg (to the carrier)\n", (double)u.rel_x_deg,
+           (double)u.rel_y_deg, (double)u.rel_z_deg);
+    printf("rates       x    %8.2f   y     %8.2f   z   %8.2f deg/s\n", (double)u.rate_x_dps, (double)u.rate_y_dps,
+           (double)u.rate_z_dps);
+    printf("zoom        camera 1 %.1fx   camera 2 %.1fx\n", (double)u.zoom_cam1, (double)u.zoom_cam2);
     printf("distance    %s\n", dist);
     printf("tracking    %s, target offset x %d y %d\n", yes_no(t->pod_status & XF_POD_TRACKING_OK, "on", "off"),
            t->target_offset_x, t->target_offset_y);
@@ -164,8 +168,8 @@ static void draw_screen(const monitor *m)
     draw_v2(t);
     printf("link        %s, %s, %u sent, %u received\n", xf_link_state_name((xf_link_state)h->link), rate,
            (unsigned)h->packets_sent, (unsigned)h->replies);
-    printf("parser      %u CRC errors, %u length errors, %u bytes skipped\n", (unsigned)h->parser.crc_errors,
-           (unsigned)h->parser.length_errors, (unsigned)h->parser.bytes_skipped);
+    printf("parser      %u CRC errors, %u length errors, %u bytes skipped\n", (unsigned)ps->crc_errors,
+           (unsigned)ps->length_errors, (unsigned)ps->bytes_skipped);
     fflush(stdout);
 }
 
@@ -174,13 +178,15 @@ static void print_line(const monitor *m, uint32_t elapsed)
     const xf_telemetry *t = xf_client_telemetry(&m->o->client);
     const xf_health *h = xf_client_health(&m->o->client);
     const char *mode = xf_mode_name(t->gimbal_mode);
+    xf_telemetry_units u;
     char dist[160], rate[64];
-    distance_text(t, dist, sizeof(dist));
+    (void)xf_telemetry_convert(t, &u);
+    distance_text(t, &u, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
            cli_seconds(elapsed), xf_link_state_name((xf_link_state)h->link), rate, mode ? mode : "unknown",
-           (double)t->cam_roll_deg, (double)t->cam_pitch_deg, (double)t->cam_yaw_deg, (double)t->zoom_cam1,
-           (double)t->zoom_cam2, dist, yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
+           (double)u.cam_roll_deg, (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1,
+           (double)u.zoom_cam2, dist, yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
     fflush(stdout);
 }
 

@@ -76,14 +76,15 @@ static int parse_args(point_args *a, int argc, char **argv)
 }
 
 /* Is the attitude reported since @p since within the tolerance of the target? */
-static int arrived(const xf_telemetry *t, uint32_t since, const point_args *a)
+static int arrived(const xf_client *c, uint32_t since, const point_args *a)
 {
-    if (!t->have_main || (int32_t)(t->main_ms - since) <= 0) {
+    const xf_telemetry *t = xf_client_telemetry(c);
+    if (!t->have_main || (int32_t)(xf_client_health(c)->last_rx_ms - since) <= 0) { /* the main frame's time */
         return 0;
     }
-    return fabs((double)t->cam_pitch_deg - a->pitch) <= TOLERANCE_DEG &&
-           fabs(cli_wrap180((double)t->cam_yaw_deg - a->yaw)) <= TOLERANCE_DEG &&
-           (!a->has_roll || fabs((double)t->cam_roll_deg - a->roll) <= TOLERANCE_DEG);
+    return fabs((double)xf_cdeg(t->cam_pitch) - a->pitch) <= TOLERANCE_DEG &&
+           fabs(cli_wrap180((double)xf_cdeg(t->cam_yaw) - a->yaw)) <= TOLERANCE_DEG &&
+           (!a->has_roll || fabs((double)xf_cdeg(t->cam_roll) - a->roll) <= TOLERANCE_DEG);
 }
 
 static int stream_angles(online *o, const point_args *a)
@@ -91,7 +92,7 @@ static int stream_angles(online *o, const point_args *a)
     uint32_t start = xf_posix_now_ms(), limit = (uint32_t)(a->wait_s * 1000.0);
     const xf_telemetry *t = xf_client_telemetry(&o->client);
     char where[96];
-    while (!arrived(t, start, a)) {
+    while (!arrived(&o->client, start, a)) {
         uint32_t now = xf_posix_now_ms();
         if (cli_stop_requested() || xf_ms_since(now, start) >= limit || xf_client_link(&o->client) == XF_LINK_DOWN) {
             online_attitude_text(t, where, sizeof(where));

@@ -95,13 +95,13 @@ static void stream_rates(online *o, const rate_args *a, uint32_t *elapsed)
 static int turn(online *o, const rate_args *a)
 {
     const xf_telemetry *t = xf_client_telemetry(&o->client);
-    double pitch0 = (double)t->cam_pitch_deg, yaw0 = (double)t->cam_yaw_deg;
+    double pitch0 = (double)xf_cdeg(t->cam_pitch), yaw0 = (double)xf_cdeg(t->cam_yaw);
     uint32_t elapsed = 0;
     char where[96];
     stream_rates(o, a, &elapsed);
     online_attitude_text(t, where, sizeof(where));
     printf("turned %.2f s: pitch %.2f -> %.2f deg, yaw %.2f -> %.2f deg; holding at %s\n", cli_seconds(elapsed), pitch0,
-           (double)t->cam_pitch_deg, yaw0, (double)t->cam_yaw_deg, where);
+           (double)xf_cdeg(t->cam_pitch), yaw0, (double)xf_cdeg(t->cam_yaw), where);
     if (xf_client_link(&o->client) == XF_LINK_DOWN) {
         return cli_fail_link("rate: link lost on %s after %.2f s", o->desc, cli_seconds(elapsed));
     }

@@ -417,6 +417,6 @@ int online_result_exit(const online *o, const char *what, const xf_cmd_result *r
 
 void online_attitude_text(const xf_telemetry *t, char *buf, size_t cap)
 {
-    snprintf(buf, cap, "roll %.2f pitch %.2f yaw %.2f deg", (double)t->cam_roll_deg, (double)t->cam_pitch_deg,
-             (double)t->cam_yaw_deg);
+    snprintf(buf, cap, "roll %.2f pitch %.2f yaw %.2f deg", (double)xf_cdeg(t->cam_roll), (double)xf_cdeg(t->cam_pitch),
+             (double)xf_cdeg(t->cam_yaw));
 }
