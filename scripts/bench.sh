@@ -124,9 +124,13 @@ verdict() { awk -v a="$1" -v m="$2" 'BEGIN { print (a <= m) ? "ok" : "OVER" }'; 
 echo "targets:"
 echo "  valid, nibble table   <= 15 Ir/byte           : ${res[nibble.valid]}  $(verdict "${res[nibble.valid]}" 15)"
 echo "  valid, 256 table      <= 10 Ir/byte (aim)     : ${res[t256.valid]}  $(verdict "${res[t256.valid]}" 10)"
+# "<= 3x that": 3 x the 15 Ir/byte target, and the stricter 3 x the measured clean figure
 for t in nibble t256; do
   lim=$(awk -v v="${res[$t.valid]}" 'BEGIN { printf "%.1f", 3 * v }')
-  echo "  adversarial, $t <= 3 x valid = $lim : ${res[$t.adversarial]}  $(verdict "${res[$t.adversarial]}" "$lim")"
+  for k in adversarial dense; do
+    echo "  $k, $t <= 3 x 15 = 45 : ${res[$t.$k]}  $(verdict "${res[$t.$k]}" 45);" \
+      "<= 3 x its valid = $lim : $(verdict "${res[$t.$k]}" "$lim")"
+  done
 done
 echo "(frames 2 MiB: found by the parser / inserted whole by the generator; a few more found than"
 echo " inserted in adversarial and dense streams are false candidates whose CRC happens to match:"
