@@ -10,12 +10,20 @@
 
 static xf_client g_gimbal;
 
-/* Your INS here. Returning 0 means "no valid data": the client then sends
- * zeros with ins_valid clear rather than anything invented. */
+/* Your INS here: its driver would set this when a solution is ready. */
+static volatile uint8_t g_ins_ready;
+
+/* Returning 0 means "no valid data": the client then sends zeros with
+ * ins_valid clear rather than anything invented. */
 static int read_ins(xf_carrier *out)
 {
-    (void)out;
-    return 0;
+    if (!g_ins_ready) {
+        return 0;
+    }
+    out->roll_deg = out->pitch_deg = out->yaw_deg = 0.0f; /* the stand-in INS: level, facing north, still */
+    out->accel_north = out->accel_east = out->accel_up = 0.0f;
+    out->vel_north = out->vel_east = out->vel_up = 0.0f;
+    return 1;
 }
 
 int main(void)
