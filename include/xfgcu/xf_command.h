@@ -81,7 +81,11 @@ typedef enum xf_field {
 #define XF_ORDER_STREAMED     0x04u /**< exempt from the once-rule: meant to be streamed (external_track) */
 #define XF_ORDER_SETS_MODE    0x08u /**< switches the gimbal mode */
 
-/** One row of the order table. */
+/**
+ * One row of the order table. Its canonical name is xf_order_name(order):
+ * the names are kept apart, so that a firmware that never asks for one
+ * does not carry them (11 bytes a row, no pointer).
+ */
 typedef struct xf_order_info {
     uint8_t order;
     uint8_t since;           /**< protocol version that introduced it: 1 or 2 */
@@ -89,14 +93,13 @@ typedef struct xf_order_info {
     uint8_t default_cameras; /**< the spec's KK default, 0 when the order takes no mask */
     uint8_t nfields;
     uint8_t fields[6]; /**< xf_field, in wire order */
-    const char *name;  /**< canonical name, e.g. "zoom_to" */
 } xf_order_info;
 
 /** The table row of @p order, or NULL for an order the protocol does not define. */
 XF_API const xf_order_info *xf_order_lookup(uint8_t order);
 /** The i-th row (i < XF_ORDER_COUNT), NULL past the end: to list every order. */
 XF_API const xf_order_info *xf_order_at(size_t i);
-/** Canonical name of @p order, or NULL if unknown. */
+/** Canonical name of @p order (e.g. "zoom_to"), or NULL if unknown. */
 XF_API const char *xf_order_name(uint8_t order);
 /** Look an order up by canonical name; '-' and '_' are the same. XF_ERR_RANGE if unknown. */
 XF_API xf_err xf_order_from_name(const char *name, uint8_t *order);
@@ -171,57 +174,75 @@ XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed
 
 #if XF_EMIT_DEFINITIONS
 
+/* The order table, one row per order, read like the spec's table; sorted by
+ * order; 26 orders of V0.1 and 10 of V0.2. Expanded twice: into the rows
+ * and into the packed names (string literals would all share one section
+ * that any single use keeps in a firmware image; an array is its own). */
 /* clang-format off */
+#define XF__ORDER_ROWS(X) \
+    X(XF_ORDER_NULL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "null") \
+    X(XF_ORDER_CALIBRATION, 1, XF_ORDER_OPERATING, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "calibration") \
+    X(XF_ORDER_NEUTRAL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "neutral") \
+    X(XF_ORDER_OSD_COORDINATE, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd_coordinate") \
+    X(XF_ORDER_AUTO_FLIP, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "auto_flip") \
+    X(XF_ORDER_TIME_ZONE, 2, 0, 0, 1, XF_F_HOURS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "time_zone") \
+    X(XF_ORDER_ANGLE_CONTROL, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "angle_control") \
+    X(XF_ORDER_HEAD_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_lock") \
+    X(XF_ORDER_HEAD_FOLLOW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_follow") \
+    X(XF_ORDER_ORTHOVIEW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "orthoview") \
+    X(XF_ORDER_EULER, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "euler") \
+    X(XF_ORDER_GAZE_GEO, 1, XF_ORDER_SETS_MODE, 0, 3, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE, XF__Z, XF__Z, XF__Z, "gaze_geo") \
+    X(XF_ORDER_GAZE_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_lock") \
+    X(XF_ORDER_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_SETS_MODE, XF_CAM1, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "track") \
+    X(XF_ORDER_CLICK_TO_AIM, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 3, XF_F_CAMERAS, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, XF__Z, "click_to_aim") \
+    X(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, "external_track") \
+    X(XF_ORDER_FPV, 2, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "fpv") \
+    X(XF_ORDER_SHUTTER, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "shutter") \
+    X(XF_ORDER_RECORD, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "record") \
+    X(XF_ORDER_ZOOM_IN, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_in") \
+    X(XF_ORDER_ZOOM_OUT, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_out") \
+    X(XF_ORDER_ZOOM_STOP, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_stop") \
+    X(XF_ORDER_ZOOM_TO, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 2, XF_F_CAMERAS, XF_F_ZOOM, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_to") \
+    X(XF_ORDER_FOCUS, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "focus") \
+    X(XF_ORDER_PALETTE, 1, XF_ORDER_MASK_FAILURE, XF_CAM2, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "palette") \
+    X(XF_ORDER_NIGHT_VISION, 1, 0, XF_CAM1, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "night_vision") \
+    X(XF_ORDER_AREA_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "area_temp") \
+    X(XF_ORDER_TEMP_ALARM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "temp_alarm") \
+    X(XF_ORDER_ISOTHERM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "isotherm") \
+    X(XF_ORDER_SPOT_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, "spot_temp") \
+    X(XF_ORDER_OSD, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd") \
+    X(XF_ORDER_PIP, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "pip") \
+    X(XF_ORDER_TARGET_DETECTION, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "target_detection") \
+    X(XF_ORDER_DIGITAL_ZOOM, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "digital_zoom") \
+    X(XF_ORDER_LIGHTING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "lighting") \
+    X(XF_ORDER_RANGING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "ranging")
 #define XF__ROW(o, s, fl, kk, n, a, b, c, d, e, f, nm) \
-    { (uint8_t)(o), (s), (fl), (kk), (n), { (a), (b), (c), (d), (e), (f) }, (nm) }
+    { (uint8_t)(o), (s), (fl), (kk), (n), { (a), (b), (c), (d), (e), (f) } },
+#define XF__NAME(o, s, fl, kk, n, a, b, c, d, e, f, nm) nm "\0"
 /* clang-format on */
 #define XF__Z 0u
 
 static inline const xf_order_info *xf__order_table(void)
 {
-    /* Sorted by order; 26 orders of V0.1 and 10 of V0.2. */
-    /* One row per order, read like the spec's table. */
-    /* clang-format off */
-    static const xf_order_info table[XF_ORDER_COUNT] = {
-        XF__ROW(XF_ORDER_NULL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "null"),
-        XF__ROW(XF_ORDER_CALIBRATION, 1, XF_ORDER_OPERATING, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "calibration"),
-        XF__ROW(XF_ORDER_NEUTRAL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "neutral"),
-        XF__ROW(XF_ORDER_OSD_COORDINATE, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd_coordinate"),
-        XF__ROW(XF_ORDER_AUTO_FLIP, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "auto_flip"),
-        XF__ROW(XF_ORDER_TIME_ZONE, 2, 0, 0, 1, XF_F_HOURS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "time_zone"),
-        XF__ROW(XF_ORDER_ANGLE_CONTROL, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "angle_control"),
-        XF__ROW(XF_ORDER_HEAD_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_lock"),
-        XF__ROW(XF_ORDER_HEAD_FOLLOW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_follow"),
-        XF__ROW(XF_ORDER_ORTHOVIEW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "orthoview"),
-        XF__ROW(XF_ORDER_EULER, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "euler"),
-        XF__ROW(XF_ORDER_GAZE_GEO, 1, XF_ORDER_SETS_MODE, 0, 3, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE, XF__Z, XF__Z, XF__Z, "gaze_geo"),
-        XF__ROW(XF_ORDER_GAZE_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_lock"),
-        XF__ROW(XF_ORDER_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_SETS_MODE, XF_CAM1, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "track"),
-        XF__ROW(XF_ORDER_CLICK_TO_AIM, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 3, XF_F_CAMERAS, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, XF__Z, "click_to_aim"),
-        XF__ROW(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, "external_track"),
-        XF__ROW(XF_ORDER_FPV, 2, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "fpv"),
-        XF__ROW(XF_ORDER_SHUTTER, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "shutter"),
-        XF__ROW(XF_ORDER_RECORD, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "record"),
-        XF__ROW(XF_ORDER_ZOOM_IN, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_in"),
-        XF__ROW(XF_ORDER_ZOOM_OUT, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_out"),
-        XF__ROW(XF_ORDER_ZOOM_STOP, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_stop"),
-        XF__ROW(XF_ORDER_ZOOM_TO, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 2, XF_F_CAMERAS, XF_F_ZOOM, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_to"),
-        XF__ROW(XF_ORDER_FOCUS, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "focus"),
-        XF__ROW(XF_ORDER_PALETTE, 1, XF_ORDER_MASK_FAILURE, XF_CAM2, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "palette"),
-        XF__ROW(XF_ORDER_NIGHT_VISION, 1, 0, XF_CAM1, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "night_vision"),
-        XF__ROW(XF_ORDER_AREA_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "area_temp"),
-        XF__ROW(XF_ORDER_TEMP_ALARM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "temp_alarm"),
-        XF__ROW(XF_ORDER_ISOTHERM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "isotherm"),
-        XF__ROW(XF_ORDER_SPOT_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, "spot_temp"),
-        XF__ROW(XF_ORDER_OSD, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd"),
-        XF__ROW(XF_ORDER_PIP, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "pip"),
-        XF__ROW(XF_ORDER_TARGET_DETECTION, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "target_detection"),
-        XF__ROW(XF_ORDER_DIGITAL_ZOOM, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "digital_zoom"),
-        XF__ROW(XF_ORDER_LIGHTING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "lighting"),
-        XF__ROW(XF_ORDER_RANGING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "ranging"),
-    };
-    /* clang-format on */
+    static const xf_order_info table[XF_ORDER_COUNT] = {XF__ORDER_ROWS(XF__ROW)};
     return table;
+}
+
+/* The names of the table's rows, in its order, each ended by a NUL. */
+static inline const char *xf__order_names(void)
+{
+    static const char names[] = XF__ORDER_ROWS(XF__NAME);
+    return names;
+}
+
+/* The @p i-th of the NUL-ended names packed in @p names. */
+static inline const char *xf__nth_name(const char *names, size_t i)
+{
+    for (; i > 0u; i--) {
+        while (*names++ != '\0') {
+        }
+    }
+    return names;
 }
 
 XF_API const xf_order_info *xf_order_at(size_t i) { return (i < XF_ORDER_COUNT) ? &xf__order_table()[i] : NULL; }
@@ -248,24 +269,22 @@ XF_API const xf_order_info *xf_order_lookup(uint8_t order)
 XF_API const char *xf_order_name(uint8_t order)
 {
     const xf_order_info *info = xf_order_lookup(order);
-    return (info != NULL) ? info->name : NULL;
+    return (info != NULL) ? xf__nth_name(xf__order_names(), (size_t)(info - xf__order_table())) : NULL;
 }
 
 XF_API xf_err xf_order_from_name(const char *name, uint8_t *order)
 {
+    const char *n = xf__order_names();
     size_t i, k;
     if (name == NULL || order == NULL) {
         return XF_ERR_ARG;
     }
-    for (i = 0; i < XF_ORDER_COUNT; i++) {
-        const char *n = xf__order_table()[i].name;
+    for (i = 0; i < XF_ORDER_COUNT; i++, n += k + 1u) {
+        int same = 1;
         for (k = 0; n[k] != '\0'; k++) {
-            char c = (name[k] == '-') ? '_' : name[k];
-            if (c != n[k]) {
-                break;
-            }
+            same = same && name[k] != '\0' && ((name[k] == '-') ? '_' : name[k]) == n[k];
         }
-        if (n[k] == '\0' && name[k] == '\0') {
+        if (same && name[k] == '\0') {
             *order = xf__order_table()[i].order;
             return XF_OK;
         }
@@ -290,24 +309,11 @@ XF_API const char *xf_mode_name(uint8_t mode)
 
 XF_API const char *xf_field_name(xf_field f)
 {
-    switch (f) {
-    case XF_F_CAMERAS: return "cameras";
-    case XF_F_VALUE: return "value";
-    case XF_F_HOURS: return "hours";
-    case XF_F_X0: return "x0";
-    case XF_F_Y0: return "y0";
-    case XF_F_X1: return "x1";
-    case XF_F_Y1: return "y1";
-    case XF_F_DX: return "dx";
-    case XF_F_DY: return "dy";
-    case XF_F_ZOOM: return "zoom";
-    case XF_F_TEMP_HIGH: return "temp_high";
-    case XF_F_TEMP_LOW: return "temp_low";
-    case XF_F_LONGITUDE: return "longitude";
-    case XF_F_LATITUDE: return "latitude";
-    case XF_F_ALTITUDE: return "altitude";
-    default: return "?";
-    }
+    /* An array, not a literal per member: the bad-field reports of
+     * xf_command_check are all a firmware keeps of the codec's names. */
+    static const char names[] = "cameras\0value\0hours\0x0\0y0\0x1\0y1\0dx\0dy\0zoom\0temp_high\0temp_low\0"
+                                "longitude\0latitude\0altitude\0?";
+    return xf__nth_name(names, ((unsigned)f <= (unsigned)XF_F_ALTITUDE) ? (size_t)f : (size_t)XF_F_ALTITUDE + 1u);
 }
 
 XF_API size_t xf_field_size(xf_field f)

@@ -284,7 +284,7 @@ static void test_every_order_gets_feedback(void **state)
         assert_xf(xf_command_check(&cmd, 2, NULL), XF_OK);
         send_cmd(f, 2, &cmd, &r);
         if (f->out_len != 73u) {
-            print_error("order %s: reply of %u bytes\n", info->name, (unsigned)f->out_len);
+            print_error("order %s: reply of %u bytes\n", xf_order_name(info->order), (unsigned)f->out_len);
         }
         assert_int_equal(f->out_len, 73);
         assert_int_equal(r.order, info->order);
@@ -296,7 +296,7 @@ static void test_every_order_gets_feedback(void **state)
         } else if (info->order == XF_ORDER_GAZE_GEO || info->order == XF_ORDER_GAZE_LOCK) {
             assert_int_equal(st, XF_STATE_FAILURE); /* no valid carrier INS data */
         } else if (st != XF_STATE_SUCCESS) {
-            print_error("order %s: state 0x%02X\n", info->name, st);
+            print_error("order %s: state 0x%02X\n", xf_order_name(info->order), st);
             fail();
         }
         free(f);

@@ -157,11 +157,11 @@ static void test_every_order_has_a_command(void **state)
         char name[32], want[48];
         size_t k;
         tool_result r;
-        for (k = 0; info->name[k] != '\0'; k++) {
-            name[k] = info->name[k] == '_' ? '-' : info->name[k];
+        for (k = 0; xf_order_name(info->order)[k] != '\0'; k++) {
+            name[k] = xf_order_name(info->order)[k] == '_' ? '-' : xf_order_name(info->order)[k];
         }
         name[k] = '\0';
-        snprintf(want, sizeof(want), "order 0x%02X %s", info->order, info->name);
+        snprintf(want, sizeof(want), "order 0x%02X %s", info->order, xf_order_name(info->order));
         r = run_tool(NULL, "encode", name, "--help", NULL);
         if (r.status != 0 || strstr(r.out, want) == NULL || strstr(r.out, name) == NULL) {
             print_error("encode %s --help: status %d\n%s%s", name, r.status, r.out, r.err);

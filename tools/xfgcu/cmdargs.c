@@ -398,7 +398,8 @@ void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out)
     fprintf(out, "usage: xfgcu %s [--protocol 1|2] %s%s%s\n\n", context, spec->name, usage[0] != '\0' ? " " : "",
             usage);
     fprintf(out, "%c%s.\norder 0x%02X %s, protocol %u%s", toupper((unsigned char)spec->summary[0]), spec->summary + 1,
-            spec->order, info->name, (unsigned)info->since, info->since > 1u ? " (V0.2) and later" : " and later");
+            spec->order, xf_order_name(info->order), (unsigned)info->since,
+            info->since > 1u ? " (V0.2) and later" : " and later");
     fprintf(out, "; %zu parameter byte%s.\n", xf_order_params_len(spec->order),
             xf_order_params_len(spec->order) == 1u ? "" : "s");
     if (spec->nopts > 0u || takes_cameras(spec)) {

@@ -67,7 +67,8 @@ static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t
         return;
     }
     if (err == XF_ERR_PARAMS) {
-        snprintf(why, sizeof(why), "%s takes %zu parameter bytes, not %zu", info->name, xf_order_params_len(order), n);
+        snprintf(why, sizeof(why), "%s takes %zu parameter bytes, not %zu", xf_order_name(info->order),
+                 xf_order_params_len(order), n);
     } else {
         snprintf(why, sizeof(why), "%s out of range", bad != NULL ? bad : "a parameter");
     }
@@ -382,7 +383,7 @@ static int command_member(const reader *r, const xf_order_info *info, const char
         strncat(names, i > 0u ? ", " : "", sizeof(names) - strlen(names) - 1u);
         strncat(names, xf_field_name((xf_field)info->fields[i]), sizeof(names) - strlen(names) - 1u);
     }
-    return fail_at(r, "command.%s is not a parameter of %s (%s)", key, info->name,
+    return fail_at(r, "command.%s is not a parameter of %s (%s)", key, xf_order_name(info->order),
                    info->nfields > 0u ? names : "it takes none");
 }
 
@@ -398,7 +399,7 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
         return fail_at(r, "command needs a known order; 0x%02X is not one (give params instead)", r->order);
     }
     if (!json_is_object(c)) {
-        return fail_at(r, "command must be an object of %s's parameters", info->name);
+        return fail_at(r, "command must be an object of %s's parameters", xf_order_name(info->order));
     }
     xf_command_init(&cmd, r->order);
     json_object_foreach((json_t *)c, key, value)
@@ -418,8 +419,8 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
     }
     err = xf_command_encode(&cmd, r->version, out, XF_PARAMS_MAX, n, &bad);
     if (err != XF_OK) {
-        return fail_at(r, "command.%s is out of range for %s (protocol %u)", bad != NULL ? bad : "?", info->name,
-                       (unsigned)r->version);
+        return fail_at(r, "command.%s is out of range for %s (protocol %u)", bad != NULL ? bad : "?",
+                       xf_order_name(info->order), (unsigned)r->version);
     }
     return XFGCU_EXIT_OK;
 }

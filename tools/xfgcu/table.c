@@ -205,7 +205,7 @@ static void command_text(uint8_t order, const uint8_t *params, size_t n, uint8_t
     }
     err = xf_command_decode(order, params, n, version, &cmd, &bad);
     if (err == XF_ERR_PARAMS) {
-        snprintf(buf, cap, "(%s takes %zu bytes)", info->name, xf_order_params_len(order));
+        snprintf(buf, cap, "(%s takes %zu bytes)", xf_order_name(info->order), xf_order_params_len(order));
     } else if (err != XF_OK) {
         snprintf(buf, cap, "(%s out of range)", bad != NULL ? bad : "a parameter");
     }
