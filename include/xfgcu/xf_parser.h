@@ -135,6 +135,9 @@ XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame);
 #if XF_EMIT_DEFINITIONS
 
 #define XF__RMASK (XF_PARSER_RING - 1u)
+/* The contender loop skips a failed candidate's second and fourth bytes. */
+XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_GCU_HEADER1 && XF_HOST_HEADER0 != XF_HOST_HEADER1, header_bytes_differ);
+XF_STATIC_ASSERT(XF_GCU_HEADER0 != 0 && XF_HOST_HEADER0 != 0 && XF_PACKET_MAX_LEN < 256, length_high_byte_not_h0);
 XF_STATIC_ASSERT((XF_PARSER_RING & XF__RMASK) == 0u, ring_is_power_of_two);
 XF_STATIC_ASSERT(XF_PARSER_RING >= XF_PACKET_MAX_LEN, ring_holds_a_packet);
 
@@ -398,7 +401,13 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
             return 1;
         }
         p->stats.crc_errors++;
-        look++;
+        /* Its second byte is h1 and its fourth the length's high byte, 0:
+         * neither can start a candidate, so only the third is looked at. */
+        if ((uint32_t)(stop - look) > 4u && p->ring[(look + 2u) & XF__RMASK] != h0) {
+            look += 4u;
+        } else {
+            look += ((uint32_t)(stop - look) > 2u) ? 2u : 1u;
+        }
     }
     p->look = look;
     if (look == end && look != lim) {
@@ -427,7 +436,12 @@ static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
             return 0;
         }
         if (r == XF__NO) {
-            xf__drop_to(p, p->head + 1u);
+            /* positions that hold no header byte are no candidate either */
+            uint32_t pos = p->head + 1u;
+            while (pos != p->end && p->ring[pos & XF__RMASK] != p->h0) {
+                pos++;
+            }
+            xf__drop_to(p, pos);
             continue;
         }
         if (xf__contend(p, p->head + (uint32_t)len, frame, &cneed)) {
