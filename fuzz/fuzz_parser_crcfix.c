@@ -122,6 +122,9 @@ static void check_recovered(const expect_list *want, const fz_span *got, size_t 
         if (j < ngot && got[j].start < e->start) {
             continue; /* swallowed by a valid frame that starts before it */
         }
+        if (j < ngot && got[j].start < e->start + e->len && got[j].start + got[j].len < e->start + e->len) {
+            continue; /* an intact frame inside it ends first: a contender, returned instead */
+        }
         fprintf(stderr, "intact packet at %zu (len %zu) not recovered\n", e->start, e->len);
         FZ_CHECK(0 && "every intact packet is recovered");
     }
