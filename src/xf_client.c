@@ -165,60 +165,82 @@ static void xf__update_window(xf_client *c)
 
 /* ---- receiving ---------------------------------------------------------------- */
 
-/* Keep the wire's integers: converting on read costs nothing here, and
- * floats or a copy of the packet would double the client's RAM on an MCU. */
-static void xf__update_telemetry(xf_client *c, const xf_gcu_packet *p)
+/*
+ * Telemetry is read straight from the frame's bytes (a frame out of the
+ * parser is whole, of the GCU, its CRC checked): one row per field, wire
+ * offset to member, at the offsets of the GCU frames (gcu-protocol.md
+ * section 4, as in xf_frame_gcu; a test checks the two agree). On an MCU
+ * this is 0.3 KB less code than decoding a whole xf_gcu_packet (and 88
+ * bytes less stack) and then copying its fields.
+ */
+typedef struct xf__tele_field {
+    uint8_t wire;   /* byte offset in the packet */
+    uint8_t size;   /* 1, 2 or 4 bytes, little-endian; the member's size */
+    uint8_t member; /* offsetof(xf_telemetry, ...) */
+} xf__tele_field;
+
+#define XF__TF(wire, m)                                                                                                \
+    {                                                                                                                  \
+        (wire), (uint8_t)sizeof(((xf_telemetry *)0)->m), (uint8_t)offsetof(xf_telemetry, m)                            \
+    }
+
+static const xf__tele_field xf__tele_fields[] = {
+    /* main frame, in every reply */
+    XF__TF(4, version), XF__TF(5, gimbal_mode), XF__TF(6, pod_status), XF__TF(8, target_offset_x),
+    XF__TF(10, target_offset_y), XF__TF(12, rel_angle_x), XF__TF(14, rel_angle_y), XF__TF(16, rel_angle_z),
+    XF__TF(18, cam_roll), XF__TF(20, cam_pitch), XF__TF(22, cam_yaw), XF__TF(24, rate_x), XF__TF(26, rate_y),
+    XF__TF(28, rate_z),
+    /* sub frame (byte 37 is its header) */
+    XF__TF(38, hw_version), XF__TF(39, fw_version), XF__TF(40, gimbal_code), XF__TF(41, error_code),
+    XF__TF(43, target_distance), XF__TF(47, target_longitude), XF__TF(51, target_latitude), XF__TF(55, target_altitude),
+    XF__TF(59, zoom_cam1), XF__TF(61, zoom_cam2), XF__TF(63, thermal_status), XF__TF(64, camera_status),
+    XF__TF(66, time_zone)};
+#define XF__TELE_MAIN_FIELDS 14u
+#define XF__GCU_SUB_HEADER   37u
+
+/* Copy rows [from, to) of the table from @p buf into the telemetry. */
+static void xf__tele_read(xf_telemetry *t, const uint8_t *buf, size_t from, size_t to)
+{
+    size_t i, k;
+    for (i = from; i < to; i++) {
+        const xf__tele_field *f = &xf__tele_fields[i];
+        uint32_t v = 0;
+        uint8_t *m = (uint8_t *)t + f->member;
+        for (k = f->size; k > 0u; k--) {
+            v = (v << 8) | buf[f->wire + k - 1u]; /* little-endian on the wire, any order in memory */
+        }
+        if (f->size == 1u) {
+            *m = (uint8_t)v; /* int8_t time_zone: the same two's complement byte */
+        } else if (f->size == 2u) {
+            uint16_t h = (uint16_t)v;
+            XF_MEMCPY(m, &h, sizeof(h));
+        } else {
+            XF_MEMCPY(m, &v, sizeof(v));
+        }
+    }
+}
+
+static void xf__update_telemetry(xf_client *c, const uint8_t *buf)
 {
     xf_telemetry *t = &c->tele;
-    const xf_gcu_main *m = &p->main;
-    const xf_gcu_sub *s = &p->sub;
     t->have_main = 1;
-    t->version = p->version;
-    t->gimbal_mode = m->gimbal_mode;
-    t->pod_status = m->pod_status;
-    t->cam_roll = m->cam_roll;
-    t->cam_pitch = m->cam_pitch;
-    t->cam_yaw = m->cam_yaw;
-    t->rel_angle_x = m->rel_angle_x;
-    t->rel_angle_y = m->rel_angle_y;
-    t->rel_angle_z = m->rel_angle_z;
-    t->rate_x = m->rate_x;
-    t->rate_y = m->rate_y;
-    t->rate_z = m->rate_z;
-    t->target_offset_x = m->target_offset_x;
-    t->target_offset_y = m->target_offset_y;
-    if (s->sub_header == XF_SUB_HEADER) {
+    xf__tele_read(t, buf, 0, XF__TELE_MAIN_FIELDS);
+    if (buf[XF__GCU_SUB_HEADER] == XF_SUB_HEADER) {
         t->have_sub = 1;
-        t->hw_version = s->hw_version;
-        t->fw_version = s->fw_version;
-        t->gimbal_code = s->gimbal_code;
-        t->thermal_status = s->thermal_status;
-        t->time_zone = s->time_zone;
-        t->error_code = s->error_code;
-        t->camera_status = s->camera_status;
-        t->zoom_cam1 = s->zoom_cam1;
-        t->zoom_cam2 = s->zoom_cam2;
-        t->target_distance = s->target_distance;
-        t->target_longitude = s->target_longitude;
-        t->target_latitude = s->target_latitude;
-        t->target_altitude = s->target_altitude;
+        xf__tele_read(t, buf, XF__TELE_MAIN_FIELDS, sizeof(xf__tele_fields) / sizeof(xf__tele_fields[0]));
         t->sub_ms = c->now_ms;
     }
 }
 
 /* Match a reply against the running command. */
-static void xf__match(xf_client *c, const xf_gcu_packet *p)
+static void xf__match(xf_client *c, const xf_frame *f)
 {
+    uint8_t order = f->data[XF_OFF_ORDER];
     xf_feedback fb;
-    const xf_cmd_slot *cmd;
-    if (!c->active) {
+    if (!c->active || order != c->queue[c->q_head].order) {
         return;
     }
-    cmd = &c->queue[c->q_head];
-    if (p->order != cmd->order) {
-        return;
-    }
-    if (xf_feedback_decode(p->order, p->params, p->params_len, &fb) != XF_OK || !fb.has_state) {
+    if (xf_feedback_decode(order, f->data + XF_OFF_PARAMS, f->len - XF_PACKET_MIN_LEN, &fb) != XF_OK || !fb.has_state) {
         return;
     }
     switch (fb.result) {
@@ -237,12 +259,9 @@ static void xf__match(xf_client *c, const xf_gcu_packet *p)
     }
 }
 
+/* A frame out of the parser: whole, of the GCU (the parser's direction), its CRC checked. */
 static void xf__on_frame(xf_client *c, const xf_frame *f)
 {
-    xf_gcu_packet p;
-    if (xf_frame_gcu(f, &p) != XF_OK) {
-        return; /* cannot happen: the parser checked it */
-    }
     if (c->cfg.on_bytes != NULL) {
         c->cfg.on_bytes(c->cfg.user, XF_DIR_GCU, f->data, f->len, c->now_ms);
     }
@@ -253,12 +272,12 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     c->awaiting = 0;
     c->health.last_rx_ms = c->now_ms;
     c->health.transport_closed = 0; /* a GCU answers over the (reopened) transport */
-    if (p.order != c->guard_order) {
+    if (f->data[XF_OFF_ORDER] != c->guard_order) {
         c->guard_open = 0; /* the separating null's reply: no late reply of guard_order can follow */
     }
-    xf__update_telemetry(c, &p);
+    xf__update_telemetry(c, f->data);
     xf__update_link(c);
-    xf__match(c, &p);
+    xf__match(c, f);
     if (c->cfg.on_telemetry != NULL) {
         c->cfg.on_telemetry(c->cfg.user, &c->tele);
     }
@@ -299,81 +318,103 @@ static xf_err xf__receive(xf_client *c)
 
 /* ---- sending ------------------------------------------------------------------- */
 
-static void xf__put_carrier(const xf_client *c, xf_host_packet *pkt)
+/*
+ * Packets are written straight into their bytes, at the offsets of the
+ * host frames (gcu-protocol.md section 3, as in xf_host_pack; a test checks
+ * that the two agree byte for byte): no xf_host_packet filled and then
+ * packed field by field, which on an MCU was 0.6 KB of code and 88 bytes
+ * of stack. Bytes not written are 0, which the protocol wants for data
+ * that is absent.
+ */
+#define XF__H_CTRL        5u  /* roll, pitch, yaw control quantities, S16 each */
+#define XF__H_STATUS      11u /* XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID */
+#define XF__H_CARRIER     12u /* attitude, accelerations, velocities: 9 x 16 bits */
+#define XF__H_SUB_REQUEST 30u
+#define XF__H_GNSS        37u /* sub frame: header, lon, lat, alt, satellites, ms, week, relative height */
+
+/* @p n bytes of @p v, little-endian (one loop for every field: fewer instructions than each put inlined). */
+static void xf__put_le(uint8_t *p, uint32_t v, size_t n)
 {
-    const xf_carrier_wire *k = &c->carrier;
+    for (; n > 0u; n--, v >>= 8) {
+        *p++ = (uint8_t)v;
+    }
+}
+
+static void xf__put_carrier(const xf_client *c, uint8_t *buf)
+{
+    size_t i;
     if (!c->have_carrier || xf_ms_since(c->now_ms, c->carrier_ms) > c->cfg.carrier_max_age_ms) {
         return; /* zeros with ins_valid clear: never invent carrier data */
     }
-    pkt->main.status |= XF_STATUS_INS_VALID;
-    pkt->main.carrier_roll = k->roll;
-    pkt->main.carrier_pitch = k->pitch;
-    pkt->main.carrier_yaw = k->yaw;
-    pkt->main.accel_north = k->accel_north;
-    pkt->main.accel_east = k->accel_east;
-    pkt->main.accel_up = k->accel_up;
-    pkt->main.vel_north = k->vel_north;
-    pkt->main.vel_east = k->vel_east;
-    pkt->main.vel_up = k->vel_up;
+    buf[XF__H_STATUS] |= XF_STATUS_INS_VALID;
+    for (i = 0; i < XF__CARRIER_WORDS; i++) {
+        xf__put_le(buf + XF__H_CARRIER + 2u * i, c->carrier[i], 2);
+    }
 }
 
-static void xf__put_gnss(const xf_client *c, xf_host_packet *pkt)
+static void xf__put_gnss(const xf_client *c, uint8_t *buf)
 {
     const xf_gnss *g = &c->gnss;
+    uint8_t *s = buf + XF__H_GNSS;
     if (!c->have_gnss || xf_ms_since(c->now_ms, c->gnss_ms) > c->cfg.gnss_max_age_ms) {
         return; /* "no sub frame data": bytes 37-68 all zero */
     }
-    pkt->sub.sub_header = XF_SUB_HEADER;
-    pkt->sub.longitude = g->longitude_e7;
-    pkt->sub.latitude = g->latitude_e7;
-    pkt->sub.altitude = g->altitude_mm;
-    pkt->sub.satellites = g->satellites;
-    pkt->sub.gnss_ms = g->ms_of_week;
-    pkt->sub.gnss_week = g->week;
-    pkt->sub.relative_height = g->relative_height_mm;
+    s[0] = XF_SUB_HEADER;
+    xf__put_le(s + 1, (uint32_t)g->longitude_e7, 4);
+    xf__put_le(s + 5, (uint32_t)g->latitude_e7, 4);
+    xf__put_le(s + 9, (uint32_t)g->altitude_mm, 4);
+    s[13] = g->satellites;
+    xf__put_le(s + 14, g->ms_of_week, 4);
+    xf__put_le(s + 18, (uint16_t)g->week, 2);
+    xf__put_le(s + 20, (uint32_t)g->relative_height_mm, 4);
 }
 
-static void xf__put_control(xf_client *c, xf_host_packet *pkt)
+static void xf__put_control(xf_client *c, uint8_t *buf)
 {
-    xf_host_main *m = &pkt->main;
+    int16_t v[3] = {0, 0, 0};
+    size_t i;
     if (c->ctrl_kind == XF_CTRL_NONE) {
         return;
     }
-    m->status |= XF_STATUS_CTRL_VALID;
+    buf[XF__H_STATUS] |= XF_STATUS_CTRL_VALID;
     if (c->ctrl_kind == XF_CTRL_ANGLES) {
         /* Roll and yaw go round: 240 deg is -120 deg, not a clamped 180. */
-        m->roll_ctrl = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[0], -180.0f));
-        m->pitch_ctrl = xf_ctrl_angle_raw(c->ctrl[1]);
-        m->yaw_ctrl = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[2], -180.0f));
-        return;
-    }
-    if (c->cfg.rate_watchdog_ms != 0u && xf_ms_since(c->now_ms, c->ctrl_ms) > c->cfg.rate_watchdog_ms) {
+        v[0] = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[0], -180.0f));
+        v[1] = xf_ctrl_angle_raw(c->ctrl[1]);
+        v[2] = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[2], -180.0f));
+    } else if (c->cfg.rate_watchdog_ms != 0u && xf_ms_since(c->now_ms, c->ctrl_ms) > c->cfg.rate_watchdog_ms) {
         if (!c->health.watchdog_active) {
             c->health.watchdog_active = 1;
             c->health.watchdog_trips++;
         }
-        return; /* zero rates, still valid: the gimbal holds still */
-    }
-    {
+        /* zero rates, still valid: the gimbal holds still */
+    } else {
         /* One raw unit is 0.1 deg/s divided by the main screen's zoom. */
         float zoom = xf_zoom_x(c->tele.zoom_cam1); /* 0 until a sub frame came: counts as 1 */
-        m->roll_ctrl = xf_ctrl_rate_raw(c->ctrl[0], zoom);
-        m->pitch_ctrl = xf_ctrl_rate_raw(c->ctrl[1], zoom);
-        m->yaw_ctrl = xf_ctrl_rate_raw(c->ctrl[2], zoom);
+        for (i = 0; i < 3u; i++) {
+            v[i] = xf_ctrl_rate_raw(c->ctrl[i], zoom);
+        }
+    }
+    for (i = 0; i < 3u; i++) {
+        xf__put_le(buf + XF__H_CTRL + 2u * i, (uint16_t)v[i], 2);
     }
 }
 
-/* The order of the next packet: a command, an owed null, the stream, or null. */
-static void xf__put_order(xf_client *c, xf_host_packet *pkt)
+/* The order of the next packet: a command, an owed null, the stream, or
+ * null. Writes order and parameters; returns the number of parameter bytes. */
+static size_t xf__put_order(xf_client *c, uint8_t *buf)
 {
     const xf_cmd_slot *cmd = &c->queue[c->q_head];
+    const uint8_t *params = c->stream;
+    size_t n = sizeof(c->stream);
+    uint8_t order = XF_ORDER_EXTERNAL_TRACK;
     if (!c->active && c->q_count > 0u && c->nulls_owed == 0u) {
         if (c->guard_open && cmd->order == c->guard_order && c->health.link != XF_LINK_DOWN) {
             /* Replies to the previous packets of this order may still be on
              * their way, each with that command's state. Replies come in
              * order: keep sending nulls until one of theirs is back, then
              * every reply of this order answers this command. */
-            return;
+            return 0; /* null */
         }
         c->active = 1;
         c->operating = 0;
@@ -381,32 +422,39 @@ static void xf__put_order(xf_client *c, xf_host_packet *pkt)
         c->started_ms = c->now_ms;
     }
     if (c->active) { /* checked and encoded at submit */
-        pkt->order = cmd->order;
-        pkt->params_len = cmd->params_len;
-        XF_MEMCPY(pkt->params, cmd->params, cmd->params_len);
+        order = cmd->order;
+        params = cmd->params;
+        n = cmd->params_len;
     } else if (c->nulls_owed > 0u) {
         c->nulls_owed--;
-    } else if (c->stream_on) {
-        pkt->order = XF_ORDER_EXTERNAL_TRACK;
-        pkt->params_len = (uint8_t)sizeof(c->stream);
-        XF_MEMCPY(pkt->params, c->stream, sizeof(c->stream));
+        return 0;
+    } else if (!c->stream_on) {
+        return 0;
     }
+    buf[XF_OFF_ORDER] = order;
+    XF_MEMCPY(buf + XF_OFF_PARAMS, params, n);
+    return n;
 }
 
 static xf_err xf__send(xf_client *c)
 {
-    xf_host_packet pkt;
-    uint8_t buf[XF_PACKET_MAX_LEN];
-    size_t len = 0;
+    uint8_t buf[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX];
+    size_t len;
+    uint16_t crc;
     xf_err err;
-    xf_host_packet_init(&pkt, c->cfg.protocol_version);
-    xf__put_carrier(c, &pkt);
-    xf__put_gnss(c, &pkt);
-    xf__put_control(c, &pkt);
-    xf__put_order(c, &pkt);
-    if (xf_host_pack(&pkt, buf, sizeof(buf), &len) != XF_OK) {
-        return XF_ERR_ARG;
-    }
+    XF_MEMSET(buf, 0, XF_PACKET_MIN_LEN);
+    buf[0] = XF_HOST_HEADER0;
+    buf[1] = XF_HOST_HEADER1;
+    buf[XF_OFF_VERSION] = c->cfg.protocol_version;
+    buf[XF__H_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
+    xf__put_carrier(c, buf);
+    xf__put_gnss(c, buf);
+    xf__put_control(c, buf);
+    len = XF_PACKET_MIN_LEN + xf__put_order(c, buf);
+    xf__put_le(buf + XF_OFF_LENGTH, (uint32_t)len, 2);
+    crc = xf_crc16(buf, len - 2u);
+    buf[len - 2u] = (uint8_t)(crc >> 8); /* the CRC is big-endian */
+    buf[len - 1u] = (uint8_t)(crc & 0xFFu);
     err = c->hal.write(c->hal.ctx, buf, len);
     if (err != XF_OK) {
         c->health.send_errors++;
@@ -474,16 +522,16 @@ uint32_t xf_client_next_deadline(const xf_client *c) { return (c == NULL) ? 0u :
 void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now_ms)
 {
     if (c != NULL && carrier != NULL) {
-        xf_carrier_wire *k = &c->carrier;
-        k->roll = xf_carrier_roll_raw(carrier->roll_deg);
-        k->pitch = xf_carrier_pitch_raw(carrier->pitch_deg);
-        k->yaw = xf_carrier_yaw_raw(carrier->yaw_deg);
-        k->accel_north = xf_accel_raw(carrier->accel_north);
-        k->accel_east = xf_accel_raw(carrier->accel_east);
-        k->accel_up = xf_accel_raw(carrier->accel_up);
-        k->vel_north = xf_velocity_raw(carrier->vel_north);
-        k->vel_east = xf_velocity_raw(carrier->vel_east);
-        k->vel_up = xf_velocity_raw(carrier->vel_up);
+        uint16_t *k = c->carrier; /* wire order */
+        k[0] = (uint16_t)xf_carrier_roll_raw(carrier->roll_deg);
+        k[1] = (uint16_t)xf_carrier_pitch_raw(carrier->pitch_deg);
+        k[2] = xf_carrier_yaw_raw(carrier->yaw_deg);
+        k[3] = (uint16_t)xf_accel_raw(carrier->accel_north);
+        k[4] = (uint16_t)xf_accel_raw(carrier->accel_east);
+        k[5] = (uint16_t)xf_accel_raw(carrier->accel_up);
+        k[6] = (uint16_t)xf_velocity_raw(carrier->vel_north);
+        k[7] = (uint16_t)xf_velocity_raw(carrier->vel_east);
+        k[8] = (uint16_t)xf_velocity_raw(carrier->vel_up);
         c->carrier_ms = now_ms;
         c->have_carrier = 1;
     }

@@ -212,14 +212,11 @@ typedef struct xf_cmd_slot {
     uint8_t params[XF_PARAMS_KNOWN_MAX];
 } xf_cmd_slot;
 
-/* Carrier state as it goes on the wire (xf_host_main's units), converted
- * once by xf_client_set_carrier rather than kept as nine floats. */
-typedef struct xf_carrier_wire {
-    int16_t roll, pitch; /* 0.01 deg */
-    uint16_t yaw;
-    int16_t accel_north, accel_east, accel_up; /* 0.01 m/s^2 */
-    int16_t vel_north, vel_east, vel_up;       /* 0.01 m/s */
-} xf_carrier_wire;
+/* Carrier state as it goes on the wire, in the wire's order (host bytes
+ * 12-29: roll, pitch, yaw, accelerations north, east, up, velocities
+ * north, east, up; xf_host_main's units), converted once by
+ * xf_client_set_carrier rather than kept as nine floats. */
+#define XF__CARRIER_WORDS 9u
 
 /** Client state: treat the members as private; use the functions. */
 typedef struct xf_client {
@@ -232,7 +229,7 @@ typedef struct xf_client {
     xf_gnss gnss;
     uint32_t gnss_ms, carrier_ms, ctrl_ms;
     float ctrl[3]; /* roll, pitch, yaw: deg/s or deg as ctrl_kind says */
-    xf_carrier_wire carrier;
+    uint16_t carrier[XF__CARRIER_WORDS];
     uint8_t have_carrier, have_gnss;
     uint8_t ctrl_kind; /* 0 none, 1 rates, 2 angles */
     /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */

@@ -96,6 +96,12 @@ typedef struct ct_log {
     uint32_t (*clock)(void *ctx); /* for timestamps in callbacks that carry none */
     void *clock_ctx;
     const xf_client *client;
+    /* The client writes packets and reads telemetry at its own offsets:
+     * every packet and every telemetry update is checked against the codec. */
+    size_t n_host_checked, n_host_mismatch; /* host packets that are not what xf_host_pack makes of them */
+    size_t n_tele_checked, n_tele_mismatch; /* telemetry not what xf_gcu_unpack reads in the reply */
+    uint8_t last_reply[XF_PACKET_LIMIT];
+    size_t last_reply_len;
 } ct_log;
 
 static inline void ct_on_result(void *user, const xf_cmd_result *r)
@@ -117,10 +123,49 @@ static inline void ct_on_link(void *user, xf_link_state s)
     }
 }
 
+/* Does @p t hold the fields of reply @p g (the sub frame's when it has one)? */
+static inline int ct_tele_matches(const xf_telemetry *t, const xf_gcu_packet *g)
+{
+    const xf_gcu_main *m = &g->main;
+    const xf_gcu_sub *s = &g->sub;
+    int ok = t->have_main == 1 && t->version == g->version && t->gimbal_mode == m->gimbal_mode &&
+             t->pod_status == m->pod_status && t->target_offset_x == m->target_offset_x &&
+             t->target_offset_y == m->target_offset_y && t->rel_angle_x == m->rel_angle_x &&
+             t->rel_angle_y == m->rel_angle_y && t->rel_angle_z == m->rel_angle_z && t->cam_roll == m->cam_roll &&
+             t->cam_pitch == m->cam_pitch && t->cam_yaw == m->cam_yaw && t->rate_x == m->rate_x &&
+             t->rate_y == m->rate_y && t->rate_z == m->rate_z;
+    if (s->sub_header == XF_SUB_HEADER) {
+        ok = ok && t->have_sub == 1 && t->hw_version == s->hw_version && t->fw_version == s->fw_version &&
+             t->gimbal_code == s->gimbal_code && t->error_code == s->error_code &&
+             t->target_distance == s->target_distance && t->target_longitude == s->target_longitude &&
+             t->target_latitude == s->target_latitude && t->target_altitude == s->target_altitude &&
+             t->zoom_cam1 == s->zoom_cam1 && t->zoom_cam2 == s->zoom_cam2 && t->thermal_status == s->thermal_status &&
+             t->camera_status == s->camera_status && t->time_zone == s->time_zone;
+    }
+    return ok;
+}
+
 static inline void ct_on_telemetry(void *user, const xf_telemetry *t)
 {
-    (void)t;
-    ((ct_log *)user)->n_telemetry++;
+    ct_log *l = (ct_log *)user;
+    xf_gcu_packet g;
+    l->n_telemetry++;
+    if (l->last_reply_len > 0u) { /* on_bytes showed the reply first */
+        l->n_tele_checked++;
+        if (xf_gcu_unpack(l->last_reply, l->last_reply_len, &g) != XF_OK || !ct_tele_matches(t, &g)) {
+            l->n_tele_mismatch++;
+        }
+    }
+}
+
+/* Is @p data what xf_host_pack makes of its own unpacking (same bytes, reserved ones zero)? */
+static inline int ct_host_canonical(const uint8_t *data, size_t len)
+{
+    xf_host_packet p;
+    uint8_t again[XF_PACKET_LIMIT];
+    size_t n = 0;
+    return xf_host_unpack(data, len, &p) == XF_OK && xf_host_pack(&p, again, sizeof(again), &n) == XF_OK && n == len &&
+           memcmp(again, data, len) == 0;
 }
 
 static inline void ct_on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
@@ -128,6 +173,13 @@ static inline void ct_on_bytes(void *user, xf_direction dir, const uint8_t *data
     ct_log *l = (ct_log *)user;
     if (len < XF_PACKET_MIN_LEN) {
         return;
+    }
+    if (dir == XF_DIR_HOST) {
+        l->n_host_checked++;
+        l->n_host_mismatch += !ct_host_canonical(data, len);
+    } else if (len <= sizeof(l->last_reply)) {
+        memcpy(l->last_reply, data, len);
+        l->last_reply_len = len;
     }
     if (dir == XF_DIR_HOST && l->n_sent < CT_LOG) {
         l->sent_order[l->n_sent] = data[XF_OFF_ORDER];
@@ -418,6 +470,13 @@ static inline size_t ct_drain_host(ct_rig *r, xf_host_packet *last)
     return n;
 }
 
-static inline void ct_rig_free(ct_rig *r) { free(r); }
+/* Free the rig, after checking that every packet it saw agreed with the codec. */
+static inline void ct_rig_free(ct_rig *r)
+{
+    size_t host_bad = r->log.n_host_mismatch, tele_bad = r->log.n_tele_mismatch;
+    free(r);
+    assert_int_equal(host_bad, 0);
+    assert_int_equal(tele_bad, 0);
+}
 
 #endif /* XFGCU_CLIENT_TEST_H */

@@ -945,6 +945,92 @@ static void test_telemetry_and_ages(void **state)
     ct_rig_free(r);
 }
 
+/* The client writes its packets and reads telemetry at its own offsets (no
+ * packet structs): with every input in use and a V0.2 GCU, each packet sent
+ * is what xf_host_pack makes of it and each telemetry update holds what
+ * xf_gcu_unpack reads (ct_rig_free checks the same in every test). */
+static void test_wire_agrees_with_the_codec(void **state)
+{
+    static const uint8_t versions[] = {1, 2};
+    size_t v;
+    (void)state;
+    for (v = 0; v < 2; v++) {
+        xf_client_config cc;
+        xf_sim_config sc;
+        xf_carrier k;
+        xf_gnss g;
+        xf_command cmd;
+        ct_rig *r;
+        xf_client_config_init(&cc);
+        cc.protocol_version = versions[v];
+        xf_sim_config_init(&sc);
+        sc.version = versions[v];
+        r = rig_up(&cc, &sc);
+        memset(&k, 0, sizeof(k));
+        k.roll_deg = -179.5f;
+        k.pitch_deg = 45.25f;
+        k.yaw_deg = 359.0f;
+        k.accel_north = -0.5f;
+        k.accel_east = 1.25f;
+        k.accel_up = -327.0f;
+        k.vel_north = 300.0f;
+        k.vel_east = -0.01f;
+        k.vel_up = 2.0f;
+        xf_client_set_carrier(&r->c, &k, r->now);
+        memset(&g, 0, sizeof(g));
+        g.latitude_e7 = -338688000;
+        g.longitude_e7 = 1512093000;
+        g.altitude_mm = -4200;
+        g.satellites = 21;
+        g.week = 2345;
+        g.ms_of_week = 604799999u;
+        g.relative_height_mm = -12;
+        xf_client_set_gnss(&r->c, &g, r->now);
+        xf_client_set_angles(&r->c, 200.0f, -30.0f, -190.0f, r->now);
+        xf_command_init(&cmd, XF_ORDER_GAZE_GEO); /* the longest parameters: 12 bytes */
+        cmd.longitude = -1224194200;
+        cmd.latitude = 377749300;
+        cmd.altitude = -100000;
+        assert_status(ct_run_cmd(r, ct_submit_cmd(r, &cmd), 1000, NULL), XF_CMD_OK);
+        xf_client_set_rates(&r->c, -3.5f, 2.0f, 7.25f, r->now);
+        assert_xf(xf_client_external_track(&r->c, XF_CAM1, -1000, 1000), XF_OK); /* 6 streamed bytes */
+        ct_run(r, 200);
+        assert_xf(xf_client_external_track_stop(&r->c, NULL), XF_OK);
+        ct_run(r, 200);
+        xf_client_set_carrier(&r->c, &k, r->now); /* fresh again: both flags in the last packets */
+        xf_client_set_rates(&r->c, -3.5f, 2.0f, 7.25f, r->now);
+        ct_run(r, 40);
+        assert_true(r->log.n_host_checked >= 20u);
+        assert_true(r->log.n_tele_checked >= 20u);
+        assert_int_equal(r->log.n_host_mismatch, 0);
+        assert_int_equal(r->log.n_tele_mismatch, 0);
+        assert_int_equal(r->s.host.main.status, XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID);
+        assert_int_equal(r->s.host.main.carrier_roll, -17950); /* and the values at their places */
+        assert_int_equal(r->s.host.main.carrier_pitch, 4525);
+        assert_int_equal(r->s.host.main.carrier_yaw, 35900);
+        assert_int_equal(r->s.host.main.accel_north, -50);
+        assert_int_equal(r->s.host.main.accel_east, 125);
+        assert_int_equal(r->s.host.main.accel_up, -32700);
+        assert_int_equal(r->s.host.main.vel_north, 30000);
+        assert_int_equal(r->s.host.main.vel_east, -1);
+        assert_int_equal(r->s.host.main.vel_up, 200);
+        assert_int_equal(r->s.host.main.roll_ctrl, -35); /* 0.1 deg/s at zoom 1x */
+        assert_int_equal(r->s.host.main.pitch_ctrl, 20);
+        assert_int_equal(r->s.host.main.yaw_ctrl, 73);
+        assert_int_equal(r->s.host.main.sub_request, XF_SUB_HEADER);
+        assert_int_equal(r->s.host.sub.sub_header, XF_SUB_HEADER);
+        assert_int_equal(r->s.host.sub.latitude, -338688000);
+        assert_int_equal(r->s.host.sub.longitude, 1512093000);
+        assert_int_equal(r->s.host.sub.altitude, -4200);
+        assert_int_equal(r->s.host.sub.satellites, 21);
+        assert_int_equal(r->s.host.sub.gnss_week, 2345);
+        assert_int_equal(r->s.host.sub.gnss_ms, 604799999u);
+        assert_int_equal(r->s.host.sub.relative_height, -12);
+        assert_int_equal(r->c.tele.version, versions[v]);
+        ct_rig_free(r);
+    }
+}
+
 /* The wire's integers in physical units, on read. */
 static void test_telemetry_convert(void **state)
 {
@@ -1513,6 +1599,7 @@ int main(void)
         cmocka_unit_test(test_transport_closed_flag),
         cmocka_unit_test(test_telemetry_and_ages),
         cmocka_unit_test(test_telemetry_convert),
+        cmocka_unit_test(test_wire_agrees_with_the_codec),
         cmocka_unit_test(test_protocol_v2_rates),
         cmocka_unit_test(test_protocol_v2_orders),
         cmocka_unit_test(test_carrier_only_while_fresh),
