@@ -524,6 +524,11 @@ static const range_case range_cases[] = {
     /* lighting: any level */
     {0x80, 1, R1(XF_F_VALUE, 0), NULL},
     {0x80, 1, R1(XF_F_VALUE, 128), NULL},
+    /* several members out of range: the one-byte ones (cameras, then value) are named first */
+    {0x1B, 1, R2(XF_F_VALUE, 1, XF_F_DX, 2000), "value"},
+    {0x17, 1, R2(XF_F_VALUE, 2, XF_F_X1, 10001), "value"},
+    {0x17, 1, R2(XF_F_CAMERAS, 0, XF_F_VALUE, 2), "cameras"},
+    {0x33, 2, R2(XF_F_X0, 10001, XF_F_CAMERAS, 0), "cameras"},
     /* a mask of no camera, for every masked order */
     {0x20, 1, R1(XF_F_CAMERAS, 0), "cameras"},
     {0x21, 1, R1(XF_F_CAMERAS, 0), "cameras"},

@@ -5,9 +5,9 @@
  * One plain struct, xf_command, holds the parameters of any order under
  * named members; each order uses the members its row of the table below
  * lists, in wire order. A table (xf_order_info) drives the byte layout, so
- * encoding, decoding, the CLI and JSON share one description; the checks
- * that a table cannot say (union ranges, box corners) are in
- * xf__command_check(). Unknown orders go through the raw escape hatch:
+ * encoding, decoding, the CLI and JSON share one description; the table
+ * also gives each order's TT range, and xf__field_ok() the rule of each
+ * member (union ranges, box corners). Unknown orders go through the raw escape hatch:
  * set xf_host_packet.order / params / params_len yourself.
  *
  *  order            wire parameters (members)
@@ -175,57 +175,70 @@ XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed
 #if XF_EMIT_DEFINITIONS
 
 /* The order table, one row per order, read like the spec's table; sorted by
- * order; 26 orders of V0.1 and 10 of V0.2. Expanded twice: into the rows
- * and into the packed names (string literals would all share one section
- * that any single use keeps in a firmware image; an array is its own). */
+ * order; 26 orders of V0.1 and 10 of V0.2. Columns: order, protocol
+ * version that introduced it, XF_ORDER_* flags, default KK, the number of
+ * fields and the fields, the largest TT in V0.1 and in V0.2 (for orders
+ * that take one), the name. Expanded three times: into the rows, the value
+ * ranges and the packed names (string literals would all share one
+ * section that any single use keeps in a firmware image; an array is its
+ * own). */
 /* clang-format off */
 #define XF__ORDER_ROWS(X) \
-    X(XF_ORDER_NULL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "null") \
-    X(XF_ORDER_CALIBRATION, 1, XF_ORDER_OPERATING, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "calibration") \
-    X(XF_ORDER_NEUTRAL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "neutral") \
-    X(XF_ORDER_OSD_COORDINATE, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd_coordinate") \
-    X(XF_ORDER_AUTO_FLIP, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "auto_flip") \
-    X(XF_ORDER_TIME_ZONE, 2, 0, 0, 1, XF_F_HOURS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "time_zone") \
-    X(XF_ORDER_ANGLE_CONTROL, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "angle_control") \
-    X(XF_ORDER_HEAD_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_lock") \
-    X(XF_ORDER_HEAD_FOLLOW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_follow") \
-    X(XF_ORDER_ORTHOVIEW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "orthoview") \
-    X(XF_ORDER_EULER, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "euler") \
-    X(XF_ORDER_GAZE_GEO, 1, XF_ORDER_SETS_MODE, 0, 3, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE, XF__Z, XF__Z, XF__Z, "gaze_geo") \
-    X(XF_ORDER_GAZE_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_lock") \
-    X(XF_ORDER_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_SETS_MODE, XF_CAM1, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "track") \
-    X(XF_ORDER_CLICK_TO_AIM, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 3, XF_F_CAMERAS, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, XF__Z, "click_to_aim") \
-    X(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, "external_track") \
-    X(XF_ORDER_FPV, 2, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "fpv") \
-    X(XF_ORDER_SHUTTER, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "shutter") \
-    X(XF_ORDER_RECORD, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "record") \
-    X(XF_ORDER_ZOOM_IN, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_in") \
-    X(XF_ORDER_ZOOM_OUT, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_out") \
-    X(XF_ORDER_ZOOM_STOP, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_stop") \
-    X(XF_ORDER_ZOOM_TO, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 2, XF_F_CAMERAS, XF_F_ZOOM, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_to") \
-    X(XF_ORDER_FOCUS, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "focus") \
-    X(XF_ORDER_PALETTE, 1, XF_ORDER_MASK_FAILURE, XF_CAM2, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "palette") \
-    X(XF_ORDER_NIGHT_VISION, 1, 0, XF_CAM1, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, "night_vision") \
-    X(XF_ORDER_AREA_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, "area_temp") \
-    X(XF_ORDER_TEMP_ALARM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "temp_alarm") \
-    X(XF_ORDER_ISOTHERM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, "isotherm") \
-    X(XF_ORDER_SPOT_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, "spot_temp") \
-    X(XF_ORDER_OSD, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "osd") \
-    X(XF_ORDER_PIP, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "pip") \
-    X(XF_ORDER_TARGET_DETECTION, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "target_detection") \
-    X(XF_ORDER_DIGITAL_ZOOM, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "digital_zoom") \
-    X(XF_ORDER_LIGHTING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "lighting") \
-    X(XF_ORDER_RANGING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "ranging")
-#define XF__ROW(o, s, fl, kk, n, a, b, c, d, e, f, nm) \
+    X(XF_ORDER_NULL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "null") \
+    X(XF_ORDER_CALIBRATION, 1, XF_ORDER_OPERATING, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "calibration") \
+    X(XF_ORDER_NEUTRAL, 1, 0, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "neutral") \
+    X(XF_ORDER_OSD_COORDINATE, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 1, 1, "osd_coordinate") \
+    X(XF_ORDER_AUTO_FLIP, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 1, 1, "auto_flip") \
+    X(XF_ORDER_TIME_ZONE, 2, 0, 0, 1, XF_F_HOURS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "time_zone") \
+    X(XF_ORDER_ANGLE_CONTROL, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "angle_control") \
+    X(XF_ORDER_HEAD_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_lock") \
+    X(XF_ORDER_HEAD_FOLLOW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "head_follow") \
+    X(XF_ORDER_ORTHOVIEW, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "orthoview") \
+    X(XF_ORDER_EULER, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "euler") \
+    X(XF_ORDER_GAZE_GEO, 1, XF_ORDER_SETS_MODE, 0, 3, XF_F_LONGITUDE, XF_F_LATITUDE, XF_F_ALTITUDE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_geo") \
+    X(XF_ORDER_GAZE_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_lock") \
+    X(XF_ORDER_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_SETS_MODE, XF_CAM1, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, 1, 1, "track") \
+    X(XF_ORDER_CLICK_TO_AIM, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 3, XF_F_CAMERAS, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "click_to_aim") \
+    X(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, XF__V_0_OR_2, XF__V_0_OR_2, "external_track") \
+    X(XF_ORDER_FPV, 2, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "fpv") \
+    X(XF_ORDER_SHUTTER, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "shutter") \
+    X(XF_ORDER_RECORD, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "record") \
+    X(XF_ORDER_ZOOM_IN, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_in") \
+    X(XF_ORDER_ZOOM_OUT, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_out") \
+    X(XF_ORDER_ZOOM_STOP, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_stop") \
+    X(XF_ORDER_ZOOM_TO, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 2, XF_F_CAMERAS, XF_F_ZOOM, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "zoom_to") \
+    X(XF_ORDER_FOCUS, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "focus") \
+    X(XF_ORDER_PALETTE, 1, XF_ORDER_MASK_FAILURE, XF_CAM2, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, 100, 10, "palette") \
+    X(XF_ORDER_NIGHT_VISION, 1, 0, XF_CAM1, 2, XF_F_CAMERAS, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, 2, 2, "night_vision") \
+    X(XF_ORDER_AREA_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, 1, 1, "area_temp") \
+    X(XF_ORDER_TEMP_ALARM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, 1, 1, "temp_alarm") \
+    X(XF_ORDER_ISOTHERM, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_TEMP_HIGH, XF_F_TEMP_LOW, XF__Z, XF__Z, 1, 1, "isotherm") \
+    X(XF_ORDER_SPOT_TEMP, 2, XF_ORDER_MASK_FAILURE, XF_CAM2, 4, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, 1, 1, "spot_temp") \
+    X(XF_ORDER_OSD, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 1, 1, "osd") \
+    X(XF_ORDER_PIP, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 0, 4, "pip") \
+    X(XF_ORDER_TARGET_DETECTION, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 1, 1, "target_detection") \
+    X(XF_ORDER_DIGITAL_ZOOM, 2, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 1, 1, "digital_zoom") \
+    X(XF_ORDER_LIGHTING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, 255, 255, "lighting") \
+    X(XF_ORDER_RANGING, 1, 0, 0, 1, XF_F_VALUE, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__V_0_OR_2, XF__V_0_OR_2, "ranging")
+#define XF__ROW(o, s, fl, kk, n, a, b, c, d, e, f, v1, v2, nm) \
     { (uint8_t)(o), (s), (fl), (kk), (n), { (a), (b), (c), (d), (e), (f) } },
-#define XF__NAME(o, s, fl, kk, n, a, b, c, d, e, f, nm) nm "\0"
+#define XF__NAME(o, s, fl, kk, n, a, b, c, d, e, f, v1, v2, nm) nm "\0"
+#define XF__VMAX(o, s, fl, kk, n, a, b, c, d, e, f, v1, v2, nm) { (v1), (v2) },
 /* clang-format on */
-#define XF__Z 0u
+#define XF__Z        0u
+#define XF__V_0_OR_2 0xFEu /* TT is 0 or 2 (off / on, stop / keep going) */
 
 static inline const xf_order_info *xf__order_table(void)
 {
     static const xf_order_info table[XF_ORDER_COUNT] = {XF__ORDER_ROWS(XF__ROW)};
     return table;
+}
+
+/* The largest TT of each row in V0.1 and V0.2 (or XF__V_0_OR_2), in the table's order. */
+static inline const uint8_t (*xf__value_max(void))[2]
+{
+    static const uint8_t vmax[XF_ORDER_COUNT][2] = {XF__ORDER_ROWS(XF__VMAX)};
+    return vmax;
 }
 
 /* The names of the table's rows, in its order, each ended by a NUL. */
@@ -403,95 +416,40 @@ XF_API void xf_command_set(xf_command *cmd, xf_field f, int32_t v)
     }
 }
 
-/* Report the offending member and fail. */
-static inline xf_err xf__bad(const char **bad_field, xf_field f)
+/*
+ * The ranges of gcu-protocol.md sections 7 and 10, field by field along the
+ * order's layout (a table row says which members an order has, and its TT
+ * range): one-byte members first (cameras, value, hours), then the rest,
+ * the order in which the rules name a bad member.
+ */
+static inline int xf__field_ok(const xf_command *c, xf_field f, uint8_t vmax)
 {
-    if (bad_field != NULL) {
-        *bad_field = xf_field_name(f);
+    switch (f) {
+    case XF_F_CAMERAS: return c->cameras != 0u; /* a mask of no camera addresses nothing */
+    case XF_F_VALUE: return (vmax == XF__V_0_OR_2) ? (c->value == 0u || c->value == 2u) : (c->value <= vmax);
+    case XF_F_HOURS: return c->hours >= -12 && c->hours <= 14;
+    /* boxes: top-left then bottom-right; an exit/off box may be all zero */
+    case XF_F_X0: return c->x0 <= XF_GRID_MAX;
+    case XF_F_Y0: return c->y0 <= XF_GRID_MAX;
+    case XF_F_X1: return c->x1 <= XF_GRID_MAX && c->x1 >= c->x0;
+    case XF_F_Y1: return c->y1 <= XF_GRID_MAX && c->y1 >= c->y0;
+    case XF_F_DX:
+    case XF_F_DY: {
+        int v = (f == XF_F_DX) ? c->dx : c->dy;
+        int lost = c->dx >= XF_EXT_TRACK_LOST && c->dy >= XF_EXT_TRACK_LOST; /* the "lost" marker */
+        return lost || (v >= -XF_EXT_TRACK_MAX && v <= XF_EXT_TRACK_MAX);
     }
-    return XF_ERR_RANGE;
-}
-
-static inline xf_err xf__check_box(const xf_command *c, int point_only, const char **bad)
-{
-    if (c->x0 > XF_GRID_MAX)
-        return xf__bad(bad, XF_F_X0);
-    if (c->y0 > XF_GRID_MAX)
-        return xf__bad(bad, XF_F_Y0);
-    if (point_only)
-        return XF_OK;
-    /* Corners are top-left then bottom-right; an exit/off box may be all zero. */
-    if (c->x1 > XF_GRID_MAX || c->x1 < c->x0)
-        return xf__bad(bad, XF_F_X1);
-    if (c->y1 > XF_GRID_MAX || c->y1 < c->y0)
-        return xf__bad(bad, XF_F_Y1);
-    return XF_OK;
-}
-
-static inline xf_err xf__check_value_max(const xf_command *c, unsigned max, const char **bad)
-{
-    return (c->value > max) ? xf__bad(bad, XF_F_VALUE) : XF_OK;
-}
-
-/* The ranges of gcu-protocol.md sections 7 and 10, order by order. */
-static inline xf_err xf__command_check(const xf_command *c, uint8_t version, const char **bad)
-{
-    xf_err e;
-    switch (c->order) {
-    case XF_ORDER_TRACK:
-        if (c->value > 1u)
-            return xf__bad(bad, XF_F_VALUE);
-        return xf__check_box(c, 0, bad);
-    case XF_ORDER_AREA_TEMP:
-        if (c->value > 1u)
-            return xf__bad(bad, XF_F_VALUE);
-        return xf__check_box(c, 0, bad);
-    case XF_ORDER_CLICK_TO_AIM: return xf__check_box(c, 1, bad);
-    case XF_ORDER_SPOT_TEMP:
-        if (c->value > 1u)
-            return xf__bad(bad, XF_F_VALUE);
-        return xf__check_box(c, 1, bad);
-    case XF_ORDER_EXTERNAL_TRACK:
-        if (c->value != 0u && c->value != 2u)
-            return xf__bad(bad, XF_F_VALUE);
-        if (c->dx >= XF_EXT_TRACK_LOST && c->dy >= XF_EXT_TRACK_LOST)
-            return XF_OK; /* "lost" marker */
-        if (c->dx < -XF_EXT_TRACK_MAX || c->dx > XF_EXT_TRACK_MAX)
-            return xf__bad(bad, XF_F_DX);
-        if (c->dy < -XF_EXT_TRACK_MAX || c->dy > XF_EXT_TRACK_MAX)
-            return xf__bad(bad, XF_F_DY);
-        return XF_OK;
-    case XF_ORDER_ZOOM_TO:
-        if (c->zoom > -10 && c->zoom < 1)
-            return xf__bad(bad, XF_F_ZOOM);
-        if (c->zoom > 10000)
-            return xf__bad(bad, XF_F_ZOOM);
-        return XF_OK;
-    case XF_ORDER_PALETTE: return xf__check_value_max(c, (version >= XF_PROTOCOL_V2) ? 10u : 100u, bad);
-    case XF_ORDER_PIP: return xf__check_value_max(c, (version >= XF_PROTOCOL_V2) ? 4u : 0u, bad);
-    case XF_ORDER_NIGHT_VISION: return xf__check_value_max(c, 2u, bad);
-    case XF_ORDER_RANGING: return (c->value != 0u && c->value != 2u) ? xf__bad(bad, XF_F_VALUE) : XF_OK;
-    case XF_ORDER_OSD:
-    case XF_ORDER_OSD_COORDINATE:
-    case XF_ORDER_AUTO_FLIP:
-    case XF_ORDER_TARGET_DETECTION:
-    case XF_ORDER_DIGITAL_ZOOM: return xf__check_value_max(c, 1u, bad);
-    case XF_ORDER_TIME_ZONE: return (c->hours < -12 || c->hours > 14) ? xf__bad(bad, XF_F_HOURS) : XF_OK;
-    case XF_ORDER_TEMP_ALARM:
-    case XF_ORDER_ISOTHERM:
-        e = xf__check_value_max(c, 1u, bad);
-        if (e == XF_OK && c->value == 1u && c->temp_high < c->temp_low) {
-            e = xf__bad(bad, XF_F_TEMP_LOW);
-        }
-        return e;
-    default: return XF_OK; /* lighting: any level; the rest take no value */
+    case XF_F_ZOOM: return (c->zoom <= -10 || c->zoom >= 1) && c->zoom <= 10000;
+    case XF_F_TEMP_LOW: return c->value != 1u || c->temp_high >= c->temp_low; /* when on */
+    default: return 1;                                                        /* temp_high, gaze_geo's position: any */
     }
 }
 
 XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const char **bad_field)
 {
     const xf_order_info *info;
-    size_t i;
+    uint8_t vmax;
+    size_t pass, i;
     if (cmd == NULL) {
         return XF_ERR_ARG;
     }
@@ -499,12 +457,19 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const cha
     if (info == NULL) {
         return XF_ERR_UNSUPPORTED;
     }
-    for (i = 0; i < info->nfields; i++) {
-        if (info->fields[i] == XF_F_CAMERAS && cmd->cameras == 0u) {
-            return xf__bad(bad_field, XF_F_CAMERAS); /* a mask of no camera addresses nothing */
+    vmax = xf__value_max()[info - xf__order_table()][version >= XF_PROTOCOL_V2];
+    for (pass = 0; pass < 2u; pass++) {
+        for (i = 0; i < info->nfields; i++) {
+            xf_field f = (xf_field)info->fields[i];
+            if ((xf_field_size(f) == 1u) == (pass == 0u) && !xf__field_ok(cmd, f, vmax)) {
+                if (bad_field != NULL) {
+                    *bad_field = xf_field_name(f);
+                }
+                return XF_ERR_RANGE;
+            }
         }
     }
-    return xf__command_check(cmd, version, bad_field);
+    return XF_OK;
 }
 
 XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap, size_t *out_len,
