@@ -11,32 +11,33 @@
 #define XF_CTRL_ANGLES    2u
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 
+/* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
+static const xf_client_config xf__defaults = {
+    .command_timeout_ms = 1000,
+    .operating_timeout_ms = 60000,
+    .rate_hz = 50,
+    .carrier_max_age_ms = 200,
+    .gnss_max_age_ms = 2000,
+    .stale_ms = 250,
+    .down_ms = 1000,
+    .rate_watchdog_ms = 500,
+    .protocol_version = XF_PROTOCOL_V1,
+};
+
 void xf_client_config_init(xf_client_config *cfg)
 {
-    if (cfg == NULL) {
-        return;
+    if (cfg != NULL) {
+        *cfg = xf__defaults;
     }
-    XF_MEMSET(cfg, 0, sizeof(*cfg));
-    cfg->protocol_version = XF_PROTOCOL_V1;
-    cfg->rate_hz = 50;
-    cfg->carrier_max_age_ms = 200;
-    cfg->gnss_max_age_ms = 2000;
-    cfg->stale_ms = 250;
-    cfg->down_ms = 1000;
-    cfg->command_timeout_ms = 1000;
-    cfg->operating_timeout_ms = 60000;
-    cfg->rate_watchdog_ms = 500;
 }
 
 xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *cfg)
 {
-    xf_client_config def;
     if (c == NULL || xf_hal_check(hal) != XF_OK) {
         return XF_ERR_ARG;
     }
     if (cfg == NULL) {
-        xf_client_config_init(&def);
-        cfg = &def;
+        cfg = &xf__defaults;
     }
     if (cfg->rate_hz == 0u || cfg->rate_hz > 200u || cfg->protocol_version == 0u || cfg->stale_ms == 0u ||
         cfg->down_ms <= cfg->stale_ms || cfg->command_timeout_ms == 0u || cfg->operating_timeout_ms == 0u) {
@@ -285,7 +286,9 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
 
 static xf_err xf__receive(xf_client *c)
 {
-    uint8_t buf[512];
+    /* The longest packet the parser keeps: a datagram link hands over whole
+     * packets, and on an MCU (84) this is most of the step's stack. */
+    uint8_t buf[XF_PACKET_MAX_LEN];
     int i;
     for (i = 0; i < XF_READS_PER_STEP; i++) {
         size_t n = 0, off = 0;
