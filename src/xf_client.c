@@ -404,20 +404,19 @@ static void xf__put_control(xf_client *c, uint8_t *buf)
 }
 
 /* The order of the next packet: a command, an owed null, the stream, or
- * null. Writes order and parameters; returns the number of parameter bytes. */
-static size_t xf__put_order(xf_client *c, uint8_t *buf)
+ * null. Sets *params (the bytes to send, *n of them) and returns the order. */
+static uint8_t xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
 {
     const xf_cmd_slot *cmd = &c->queue[c->q_head];
-    const uint8_t *params = c->stream;
-    size_t n = sizeof(c->stream);
-    uint8_t order = XF_ORDER_EXTERNAL_TRACK;
+    *params = c->stream;
+    *n = 0;
     if (!c->active && c->q_count > 0u && c->nulls_owed == 0u) {
         if (c->guard_open && cmd->order == c->guard_order && c->health.link != XF_LINK_DOWN) {
             /* Replies to the previous packets of this order may still be on
              * their way, each with that command's state. Replies come in
              * order: keep sending nulls until one of theirs is back, then
              * every reply of this order answers this command. */
-            return 0; /* null */
+            return XF_ORDER_NULL;
         }
         c->active = 1;
         c->operating = 0;
@@ -425,39 +424,38 @@ static size_t xf__put_order(xf_client *c, uint8_t *buf)
         c->started_ms = c->now_ms;
     }
     if (c->active) { /* checked and encoded at submit */
-        order = cmd->order;
-        params = cmd->params;
-        n = cmd->params_len;
-    } else if (c->nulls_owed > 0u) {
-        c->nulls_owed--;
-        return 0;
-    } else if (!c->stream_on) {
-        return 0;
+        *params = cmd->params;
+        *n = cmd->params_len;
+        return cmd->order;
     }
-    buf[XF_OFF_ORDER] = order;
-    XF_MEMCPY(buf + XF_OFF_PARAMS, params, n);
-    return n;
+    if (c->nulls_owed > 0u) {
+        c->nulls_owed--;
+        return XF_ORDER_NULL;
+    }
+    if (!c->stream_on) {
+        return XF_ORDER_NULL;
+    }
+    *n = sizeof(c->stream);
+    return XF_ORDER_EXTERNAL_TRACK;
 }
 
 static xf_err xf__send(xf_client *c)
 {
     uint8_t buf[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX];
-    size_t len;
-    uint16_t crc;
+    const uint8_t *params;
+    size_t n, len;
+    uint8_t order;
     xf_err err;
     XF_MEMSET(buf, 0, XF_PACKET_MIN_LEN);
-    buf[0] = XF_HOST_HEADER0;
-    buf[1] = XF_HOST_HEADER1;
-    buf[XF_OFF_VERSION] = c->cfg.protocol_version;
     buf[XF__H_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
     xf__put_carrier(c, buf);
     xf__put_gnss(c, buf);
     xf__put_control(c, buf);
-    len = XF_PACKET_MIN_LEN + xf__put_order(c, buf);
-    xf__put_le(buf + XF_OFF_LENGTH, (uint32_t)len, 2);
-    crc = xf_crc16(buf, len - 2u);
-    buf[len - 2u] = (uint8_t)(crc >> 8); /* the CRC is big-endian */
-    buf[len - 1u] = (uint8_t)(crc & 0xFFu);
+    order = xf__next_order(c, &params, &n);
+    len = XF_PACKET_MIN_LEN + n;
+    /* header, order, parameters and CRC as the codec's packer writes them */
+    xf__put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
+    xf__put_tail(buf, len, order, params, (uint8_t)n);
     err = c->hal.write(c->hal.ctx, buf, len);
     if (err != XF_OK) {
         c->health.send_errors++;

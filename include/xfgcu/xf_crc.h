@@ -110,12 +110,6 @@ static inline uint32_t xf__crc_step(uint32_t c, const uint32_t *table, uint8_t b
 }
 #endif
 
-/* One byte (the parser's memo mode goes byte by byte). */
-static inline uint16_t xf__crc_byte(uint16_t crc, uint8_t b)
-{
-    return (uint16_t)(xf__crc_step((uint32_t)crc << 16, xf__crc_table(), b) >> 16);
-}
-
 XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
 {
     const uint32_t *table = xf__crc_table();

@@ -146,9 +146,14 @@ XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt);
 /** Initialise a host packet: all zero, @p version, sub_request = XF_SUB_HEADER, null order. */
 XF_API void xf_host_packet_init(xf_host_packet *pkt, uint8_t version);
 
+/* Internal, shared by the packers and the client's packet writer: header,
+ * length and version; then order, parameters and the big-endian CRC. */
+XF_API void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version);
+XF_API void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len);
+
 #if XF_EMIT_DEFINITIONS
 
-static inline void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version)
+XF_API void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version)
 {
     buf[0] = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
     buf[1] = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
@@ -156,7 +161,7 @@ static inline void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, ui
     buf[XF_OFF_VERSION] = version;
 }
 
-static inline void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len)
+XF_API void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len)
 {
     uint16_t crc;
     buf[XF_OFF_ORDER] = order;
