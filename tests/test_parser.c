@@ -102,7 +102,7 @@ static size_t harness_feed(harness *h, const uint8_t *data, size_t len)
             h->out_len += f.len;
             h->lens[h->nframes++] = f.len;
             h->frame_bytes += f.len;
-            if (h->p.rotated) {
+            if (h->p.wrapped) {
                 h->wrapped++;
             }
             produced++;

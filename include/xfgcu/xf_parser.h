@@ -18,12 +18,12 @@
  * never depends on how the bytes were chunked.
  *
  * Cost. On a clean stream a packet that arrives whole in one chunk is
- * checked where it lies (no copy); others are copied once; every byte is
- * CRC'd once. After a
- * CRC failure the parser keeps, for each held byte, the CRC of the stream
- * before it (computed once per byte), and checks every further candidate in
- * constant time from two of those values (crc(i..j) = P(j) ^ P(i) * x^(8(j-i))),
- * so adversarial input costs O(1) per byte, never O(frame length).
+ * checked where it lies (no copy). Every byte that enters the parser's ring
+ * is CRC'd once: the parser keeps, for each held byte, the normalised CRC
+ * of the stream before it (xf_crc.h), and checks any candidate in constant
+ * time from two of those values, so adversarial input costs O(1) per byte,
+ * never O(frame length). (XF_PARSER_MEMO=0 keeps no such values and reads
+ * each candidate's bytes again.)
  *
  * Counters only ever increase (the application may zero them):
  *     bytes_in = bytes of returned frames + bytes_skipped + xf_parser_pending()
@@ -42,8 +42,9 @@
 
 XF_BEGIN_DECLS
 
-/* Ring size: a power of two that holds the longest packet. */
-#if XF_PACKET_MAX_LEN > 128
+/* Ring size: a power of two that holds the longest packet and one more
+ * position (the memo keeps a value for the position after the last byte). */
+#if XF_PACKET_MAX_LEN >= 128
 #define XF_PARSER_RING 256u
 #else
 #define XF_PARSER_RING 128u
@@ -71,18 +72,21 @@ typedef struct xf_frame {
 
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
-    uint8_t ring[XF_PARSER_RING];
 #if XF_PARSER_MEMO
-    uint16_t memo[XF_PARSER_RING]; /* CRC of the stream before each held byte (memo mode) */
+    uint8_t ring[XF_PARSER_RING + 3]; /* the last 3: a copy of the first 3, so 4 bytes at any index are adjacent */
+#else
+    uint8_t ring[XF_PARSER_RING];
+#endif
+#if XF_PARSER_MEMO
+    uint16_t memo[XF_PARSER_RING]; /* N(pos), the normalised CRC before pos, for pos in [head, end] */
 #endif
     uint32_t head;     /* stream position of the first held byte: the earliest candidate */
     uint32_t end;      /* one past the last held byte */
     uint32_t look;     /* positions in (head, look) are examined: no candidate, or a failed contender */
-    uint16_t memo_crc; /* CRC of the stream before `end` (memo mode) */
-    uint8_t memo_on;
+    uint8_t bulk;      /* a CRC failed since the parser was last empty: take whole chunks */
     uint8_t look_done; /* no contender can follow for this head */
     uint8_t h0, h1;    /* header bytes of the direction parsed */
-    uint8_t rotated;   /* the last frame wrapped round the ring, which was rotated (tests look) */
+    uint8_t wrapped;   /* the last frame wrapped round the ring and was made contiguous (tests look) */
     xf_parser_stats stats;
 } xf_parser;
 
@@ -139,7 +143,10 @@ XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame);
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_GCU_HEADER1 && XF_HOST_HEADER0 != XF_HOST_HEADER1, header_bytes_differ);
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != 0 && XF_HOST_HEADER0 != 0 && XF_PACKET_MAX_LEN < 256, length_high_byte_not_h0);
 XF_STATIC_ASSERT((XF_PARSER_RING & XF__RMASK) == 0u, ring_is_power_of_two);
-XF_STATIC_ASSERT(XF_PARSER_RING >= XF_PACKET_MAX_LEN, ring_holds_a_packet);
+XF_STATIC_ASSERT(XF_PARSER_RING > XF_PACKET_MAX_LEN, ring_holds_a_packet_and_one_more_position);
+XF_STATIC_ASSERT(XF_PARSER_RING % 16u == 0u, ring_index_mod_16_is_position_mod_16);
+/* Most bytes held at once: the memo needs a slot for the position `end`. */
+#define XF__HELD_MAX (XF_PARSER_RING - (unsigned)XF_PARSER_MEMO)
 
 static inline uint8_t xf__rb(const xf_parser *p, uint32_t pos) { return p->ring[pos & XF__RMASK]; }
 
@@ -164,7 +171,10 @@ static inline void xf__parser_empty(xf_parser *p)
     p->end = 0;
     p->look = 1;
     p->look_done = 0;
-    p->memo_on = 0;
+    p->bulk = 0;
+#if XF_PARSER_MEMO
+    p->memo[0] = 0; /* N(0): nothing before the first byte */
+#endif
 }
 
 XF_API void xf_parser_reset(xf_parser *p)
@@ -175,49 +185,65 @@ XF_API void xf_parser_reset(xf_parser *p)
     }
 }
 
-/* CRC of held bytes [pos, pos + n) read straight from the ring (fast mode). */
+#if XF_PARSER_MEMO
+/* One byte b at ring index i: memo[i] = v (N before it), ring[i] = b, and v
+ * advanced past it. s = (i + 1) mod 16, a constant in the unrolled block. */
+#define XF__MEMO_BYTE(m, r, d, i, s, v, norm)                                                                     \
+    do {                                                                                                       \
+        uint8_t b_ = (d)[i]; /* read once: the ring store may alias the caller's data */                        \
+        (m)[i] = (v);                                                                                          \
+        (r)[i] = b_;                                                                                           \
+        if ((s) == 0u) {                                                                                       \
+            (v) = xf__crc_x128k((v), 1u);                                                                      \
+        }                                                                                                      \
+        (v) = xf__crc_norm_step((v), (norm) + 32u * (s), b_);                                                  \
+    } while (0)
+
+/* Store n bytes at ring index i0 on (no wrap), with N before each; v is N
+ * before the first; returns N after the last. The ring index mod 16 is the
+ * stream position mod 16, so whole aligned blocks of 16 are unrolled with
+ * every table offset a constant: this loop is most of the cost of
+ * adversarial input. */
+static inline uint16_t xf__append_memo(xf_parser *p, size_t i0, const uint8_t *data, size_t n, uint16_t v)
+{
+    const uint16_t *norm = xf__crc_norm_table();
+    uint8_t *r = p->ring;
+    uint16_t *m = p->memo;
+    size_t i = i0, e = i0 + n;
+    for (; i < e && (i & 15u) != 0u; i++) {
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 0u, (i + 1u) & 15u, v, norm);
+    }
+    for (; e - i >= 16u; i += 16u) {
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 0u, 1u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 1u, 2u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 2u, 3u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 3u, 4u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 4u, 5u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 5u, 6u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 6u, 7u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 7u, 8u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 8u, 9u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 9u, 10u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 10u, 11u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 11u, 12u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 12u, 13u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 13u, 14u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 14u, 15u, v, norm);
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 15u, 0u, v, norm);
+    }
+    for (; i < e; i++) {
+        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 0u, (i + 1u) & 15u, v, norm);
+    }
+    return v;
+}
+#else
+/* CRC of held bytes [pos, pos + n) read straight from the ring. */
 static inline uint16_t xf__ring_crc(const xf_parser *p, uint32_t pos, size_t n)
 {
     size_t i0 = pos & XF__RMASK;
     size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
     uint16_t c = xf_crc16_update(0, p->ring + i0, first);
     return xf_crc16_update(c, p->ring, n - first);
-}
-
-/* Enter memo mode: record the CRC before each held byte, from `head` on.
- * Without XF_PARSER_MEMO the parser stays in fast mode: every candidate's
- * CRC is read from the ring (still exact, but O(length) per candidate). */
-static inline void xf__memo_start(xf_parser *p)
-{
-#if !XF_PARSER_MEMO
-    (void)p;
-#else
-    const uint32_t *table = xf__crc_table();
-    uint32_t pos, c = 0;
-    for (pos = p->head; pos != p->end; pos++) {
-        p->memo[pos & XF__RMASK] = (uint16_t)(c >> 16);
-        c = xf__crc_step(c, table, xf__rb(p, pos));
-    }
-    p->memo_crc = (uint16_t)(c >> 16);
-    p->memo_on = 1;
-#endif
-}
-
-#if XF_PARSER_MEMO
-/* Memo mode: store n bytes at ring index i0 (no wrap) with the CRC before each. */
-static inline uint32_t xf__append_memo(xf_parser *p, size_t i0, const uint8_t *data, size_t n, uint32_t c)
-{
-    const uint32_t *table = xf__crc_table();
-    uint8_t *r = p->ring + i0;
-    uint16_t *m = p->memo + i0;
-    size_t i;
-    for (i = 0; i < n; i++) {
-        uint8_t b = data[i]; /* read once: the ring store may alias data */
-        m[i] = (uint16_t)(c >> 16);
-        r[i] = b;
-        c = xf__crc_step(c, table, b);
-    }
-    return c;
 }
 #endif
 
@@ -226,34 +252,34 @@ static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
     size_t i0 = p->end & XF__RMASK;
     size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
 #if XF_PARSER_MEMO
-    if (p->memo_on) {
-        uint32_t c = xf__append_memo(p, i0, data, first, (uint32_t)p->memo_crc << 16);
-        c = xf__append_memo(p, 0, data + first, n - first, c);
-        p->memo_crc = (uint16_t)(c >> 16);
-    } else
-#endif
-    {
-        XF_MEMCPY(p->ring + i0, data, first);
-        XF_MEMCPY(p->ring, data + first, n - first);
-    }
+    uint16_t v = xf__append_memo(p, i0, data, first, p->memo[i0]);
+    v = xf__append_memo(p, 0, data + first, n - first, v);
     p->end += (uint32_t)n;
+    p->memo[p->end & XF__RMASK] = v;
+    if (i0 < 3u || n > first) { /* wrote some of ring[0..3): keep the copy */
+        p->ring[XF_PARSER_RING] = p->ring[0];
+        p->ring[XF_PARSER_RING + 1u] = p->ring[1];
+        p->ring[XF_PARSER_RING + 2u] = p->ring[2];
+    }
+#else
+    XF_MEMCPY(p->ring + i0, data, first);
+    XF_MEMCPY(p->ring, data + first, n - first);
+    p->end += (uint32_t)n;
+#endif
 }
 
-/* Is the candidate of length len at pos intact? Needs memo mode unless pos is head. */
+/* Is the complete candidate of length len at pos intact? */
 XF__HOT_INLINE int xf__intact(const xf_parser *p, uint32_t pos, size_t len)
 {
+#if XF_PARSER_MEMO
+    /* N(pos + len) == N(pos) * x^(128k): see xf_crc.h */
+    unsigned k = (unsigned)(((pos & 15u) + len) >> 4);
+    return p->memo[(pos + (uint32_t)len) & XF__RMASK] == xf__crc_x128k(p->memo[pos & XF__RMASK], k);
+#else
     uint32_t crc_pos = pos + (uint32_t)len - 2u;
     uint16_t want = (uint16_t)(((uint16_t)xf__rb(p, crc_pos) << 8) | xf__rb(p, crc_pos + 1u));
-    uint16_t got;
-#if XF_PARSER_MEMO
-    if (p->memo_on) {
-        got = (uint16_t)(p->memo[crc_pos & XF__RMASK] ^ xf__crc_shift(p->memo[pos & XF__RMASK], (unsigned)(len - 2u)));
-    } else
+    return xf__ring_crc(p, pos, len - 2u) == want;
 #endif
-    {
-        got = xf__ring_crc(p, pos, len - 2u);
-    }
-    return got == want;
 }
 
 /* Drop the held bytes before pos (they belong to no frame). */
@@ -265,7 +291,24 @@ static inline void xf__drop_to(xf_parser *p, uint32_t pos)
     p->look_done = 0;
 }
 
-/* Reverse ring[i..j) (and the memo alongside). */
+#if XF_PARSER_MEMO
+/* A frame at ring index i0 that wraps round the ring's end: copy it, whole,
+ * where the memo kept the values of its own positions, which no check
+ * needs again (every later candidate starts at its end or after). Those
+ * entries are indices [i0, RING) and [0, len - first), as bytes [2 i0, 2 RING)
+ * and [0, 2 (len - first)); the two parts add up to len entries, so the
+ * larger holds len bytes. The copy costs no RAM and lives, like any frame,
+ * until the next call. */
+static inline const uint8_t *xf__unwrap(xf_parser *p, size_t i0, size_t len)
+{
+    size_t first = XF_PARSER_RING - i0;
+    uint8_t *dst = (uint8_t *)p->memo + ((2u * first >= len) ? 2u * i0 : 0u);
+    XF_MEMCPY(dst, p->ring + i0, first);
+    XF_MEMCPY(dst + first, p->ring, len - first);
+    return dst;
+}
+#else
+/* Reverse ring[i..j). */
 static inline void xf__reverse(xf_parser *p, size_t i, size_t j)
 {
     while (i + 1u < j) {
@@ -273,43 +316,41 @@ static inline void xf__reverse(xf_parser *p, size_t i, size_t j)
         j--;
         p->ring[i] = p->ring[j];
         p->ring[j] = t;
-#if XF_PARSER_MEMO
-        {
-            uint16_t m = p->memo[i];
-            p->memo[i] = p->memo[j];
-            p->memo[j] = m;
-        }
-#endif
         i++;
     }
 }
 
-/* Make position pos sit at ring index 0: rotate the ring left by pos's
- * index (three reversals) and renumber every position by as much, so
- * held bytes keep their index = position mod ring. Rare: frames wrap only
- * after noise has left the ring misaligned, and this costs less than a
- * scratch copy of a whole packet would in RAM. */
-static inline void xf__rotate(xf_parser *p, uint32_t pos)
+/* Without a memo to copy into: make the frame's first byte sit at ring
+ * index 0 by rotating the ring left by that index (three reversals), and
+ * renumber every position by as much, so held bytes keep index = position
+ * mod ring. Rare: frames wrap only after noise has left the ring
+ * misaligned, and a scratch copy would cost a whole packet of RAM. */
+static inline const uint8_t *xf__unwrap(xf_parser *p, size_t i0, size_t len)
 {
-    size_t s = pos & XF__RMASK;
-    xf__reverse(p, 0, s);
-    xf__reverse(p, s, XF_PARSER_RING);
+    (void)len;
+    xf__reverse(p, 0, i0);
+    xf__reverse(p, i0, XF_PARSER_RING);
     xf__reverse(p, 0, XF_PARSER_RING);
-    p->head -= (uint32_t)s;
-    p->end -= (uint32_t)s;
-    p->look -= (uint32_t)s;
+    p->head -= (uint32_t)i0;
+    p->end -= (uint32_t)i0;
+    p->look -= (uint32_t)i0;
+    return p->ring;
 }
+#endif
 
 /* Return the frame of length len at pos and drop everything before it. */
 static inline void xf__emit(xf_parser *p, uint32_t pos, size_t len, xf_frame *frame)
 {
-    p->rotated = 0;
-    if ((pos & XF__RMASK) + len > XF_PARSER_RING) {
-        xf__rotate(p, pos);
-        pos -= pos & XF__RMASK;
-        p->rotated = 1;
+    size_t i0 = pos & XF__RMASK;
+    p->wrapped = (uint8_t)(i0 + len > XF_PARSER_RING);
+    if (p->wrapped) {
+        frame->data = xf__unwrap(p, i0, len);
+#if !XF_PARSER_MEMO
+        pos -= (uint32_t)i0; /* renumbered */
+#endif
+    } else {
+        frame->data = p->ring + i0;
     }
-    frame->data = p->ring + (pos & XF__RMASK);
     frame->len = len;
     xf__drop_to(p, pos);
     p->head = pos + (uint32_t)len;
@@ -321,6 +362,35 @@ static inline void xf__emit(xf_parser *p, uint32_t pos, size_t len, xf_frame *fr
 #define XF__YES  1 /* a candidate; *len set */
 #define XF__WAIT 2 /* cannot tell yet; *need more bytes */
 
+/* Held bytes pos .. pos + 3 as a little-endian word: the header pair in
+ * the low half, the length in the high half. In memo builds the ring ends
+ * with a copy of its first three bytes, so the four are adjacent (one load
+ * where the target allows it). */
+static inline uint32_t xf__word(const xf_parser *p, uint32_t pos)
+{
+#if XF_PARSER_MEMO
+    const uint8_t *b = p->ring + (pos & XF__RMASK);
+    return (uint32_t)b[0] | ((uint32_t)b[1] << 8) | ((uint32_t)b[2] << 16) | ((uint32_t)b[3] << 24);
+#else
+    return (uint32_t)xf__rb(p, pos) | ((uint32_t)xf__rb(p, pos + 1u) << 8) | ((uint32_t)xf__rb(p, pos + 2u) << 16) |
+           ((uint32_t)xf__rb(p, pos + 3u) << 24);
+#endif
+}
+
+/* Is the word at a held position a candidate? 0 when not; else its length. */
+static inline size_t xf__word_len(xf_parser *p, uint32_t w, uint32_t hdr)
+{
+    size_t len = (size_t)(w >> 16);
+    if ((w & 0xFFFFu) != hdr) {
+        return 0;
+    }
+    if (len - XF_PACKET_MIN_LEN > XF_PACKET_MAX_LEN - XF_PACKET_MIN_LEN) {
+        p->stats.length_errors++; /* each position is examined once, so counted once */
+        return 0;
+    }
+    return len;
+}
+
 /* Is there a candidate (header pair, valid length) at pos? */
 static inline int xf__candidate(xf_parser *p, uint32_t pos, size_t *len, size_t *need)
 {
@@ -328,23 +398,15 @@ static inline int xf__candidate(xf_parser *p, uint32_t pos, size_t *len, size_t 
     if (xf__rb(p, pos) != p->h0) {
         return XF__NO;
     }
-    if (avail < 2u) {
-        *need = 2u - avail;
-        return XF__WAIT;
+    if (avail >= 4u) {
+        *len = xf__word_len(p, xf__word(p, pos), (uint32_t)p->h0 | ((uint32_t)p->h1 << 8));
+        return (*len != 0u) ? XF__YES : XF__NO;
     }
-    if (xf__rb(p, pos + 1u) != p->h1) {
+    if (avail >= 2u && xf__rb(p, pos + 1u) != p->h1) {
         return XF__NO;
     }
-    if (avail < 4u) {
-        *need = 4u - avail;
-        return XF__WAIT;
-    }
-    *len = (size_t)xf__rb(p, pos + 2u) | ((size_t)xf__rb(p, pos + 3u) << 8);
-    if (*len < XF_PACKET_MIN_LEN || *len > XF_PACKET_MAX_LEN) {
-        p->stats.length_errors++; /* each position is examined once, so counted once */
-        return XF__NO;
-    }
-    return XF__YES;
+    *need = 4u - avail; /* the header or the length is incomplete */
+    return XF__WAIT;
 }
 
 /* Examine positions after head for a contender: the first candidate that
@@ -361,6 +423,7 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
     const uint32_t end = p->end;
     const uint32_t lim = pend - XF_PACKET_MIN_LEN;
     const uint8_t h0 = p->h0;
+    const uint32_t hdr = (uint32_t)h0 | ((uint32_t)p->h1 << 8);
     uint32_t look = p->look;
     uint32_t stop; /* end or lim, whichever comes first */
     *need = 0;
@@ -370,30 +433,33 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
     }
     stop = ((uint32_t)(end - look) < (uint32_t)(lim - look)) ? end : lim;
     while (look != stop) {
-        size_t len = 0, avail;
+        size_t len;
+        uint32_t w, adv;
         if (p->ring[look & XF__RMASK] != h0) {
             look++;
             continue;
         }
-        if (xf__candidate(p, look, &len, need) != XF__YES) {
-            if (*need != 0u) {
-                p->look = look; /* XF__WAIT: the header or length is incomplete */
+        if ((uint32_t)(end - look) < 4u) {
+            if (xf__candidate(p, look, &len, need) == XF__WAIT) {
+                p->look = look;
                 return 0;
             }
+            look++;
+            continue;
+        }
+        w = xf__word(p, look);
+        len = xf__word_len(p, w, hdr);
+        if (len == 0u) {
             look++;
             continue;
         }
         if ((uint32_t)(pend - look) <= len) {
             break; /* the first candidate ends no sooner: leave it to the rescan */
         }
-        avail = (size_t)(end - look);
-        if (avail < len) {
-            *need = len - avail;
+        if ((uint32_t)(end - look) < len) {
+            *need = len - (size_t)(end - look);
             p->look = look;
             return 0;
-        }
-        if (!p->memo_on) {
-            xf__memo_start(p); /* from here on every check is O(1) */
         }
         if (xf__intact(p, look, len)) {
             p->look = look;
@@ -401,13 +467,11 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
             return 1;
         }
         p->stats.crc_errors++;
+        p->bulk = 1;
         /* Its second byte is h1 and its fourth the length's high byte, 0:
          * neither can start a candidate, so only the third is looked at. */
-        if ((uint32_t)(stop - look) > 4u && p->ring[(look + 2u) & XF__RMASK] != h0) {
-            look += 4u;
-        } else {
-            look += ((uint32_t)(stop - look) > 2u) ? 2u : 1u;
-        }
+        adv = ((w >> 16) == h0) ? 2u : 4u;
+        look += (adv < (uint32_t)(stop - look)) ? adv : (uint32_t)(stop - look);
     }
     p->look = look;
     if (look == end && look != lim) {
@@ -444,6 +508,10 @@ static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
             xf__drop_to(p, pos);
             continue;
         }
+        if (p->look == p->head + 1u) {
+            /* the head's second byte is h1, its fourth the length's high byte: no candidates */
+            p->look = p->head + ((xf__rb(p, p->head + 2u) == p->h0) ? 2u : 4u);
+        }
         if (xf__contend(p, p->head + (uint32_t)len, frame, &cneed)) {
             return 1;
         }
@@ -458,9 +526,7 @@ static inline int xf__scan(xf_parser *p, xf_frame *frame, size_t *need)
             return 1;
         }
         p->stats.crc_errors++;
-        if (!p->memo_on) {
-            xf__memo_start(p);
-        }
+        p->bulk = 1;
         /* Positions up to `look` were examined already: no candidate there,
          * or a contender that failed. Jump over them. */
         xf__drop_to(p, (p->look_done || p->look > p->head + 1u) ? p->look : p->head + 1u);
@@ -512,9 +578,6 @@ XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame)
             return XF_PARSE_MORE;
         }
         /* The earliest candidate needs bytes that will never come. */
-        if (!p->memo_on) {
-            xf__memo_start(p);
-        }
         xf__drop_to(p, (p->look > p->head + 1u) ? p->look : p->head + 1u);
     }
 }
@@ -543,7 +606,7 @@ static inline int xf__direct(xf_parser *p, const uint8_t *d, size_t avail, xf_fr
     }
     frame->data = d;
     frame->len = len;
-    p->rotated = 0;
+    p->wrapped = 0;
     p->stats.frames++;
     p->stats.bytes_in += (uint32_t)len;
     return 1;
@@ -564,12 +627,7 @@ static inline void xf__give_back(xf_parser *p, size_t *used, size_t appended)
     }
     p->end -= (uint32_t)back;
     p->stats.bytes_in -= (uint32_t)back;
-    *used -= back;
-#if XF_PARSER_MEMO
-    if (p->memo_on) {
-        p->memo_crc = p->memo[p->end & XF__RMASK]; /* the CRC before the first byte given back */
-    }
-#endif
+    *used -= back; /* the memo already holds N(end), the value before the first byte given back */
 }
 
 XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
@@ -607,18 +665,20 @@ XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t 
             need = 4; /* header and length: every packet is longer than that */
         }
         take = (need < len - used) ? need : (len - used);
-#if XF_PARSER_MEMO
-        if (p->memo_on) {
+        if (p->bulk) {
             /* After a CRC failure: take all the ring can hold, so the scan
              * works through many candidates per call instead of asking for
              * a few bytes at a time; what lies past a frame found is given
              * back below. */
-            size_t room = XF_PARSER_RING - (size_t)(p->end - p->head);
-            if (room > take) {
-                take = (room < len - used) ? room : (len - used);
+            size_t room = XF__HELD_MAX - (size_t)(p->end - p->head);
+            size_t most = (room < len - used) ? room : (len - used);
+            /* ending on a multiple of 16 lets the next append start on a
+             * whole block of the memo's unrolled loop */
+            size_t cut = (size_t)((p->end + (uint32_t)most) & 15u);
+            if (most > take) {
+                take = (most >= take + cut) ? most - cut : most;
             }
         }
-#endif
         xf__append(p, data + used, take);
         p->stats.bytes_in += (uint32_t)take;
         used += take;
