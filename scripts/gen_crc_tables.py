@@ -8,10 +8,12 @@ x * (x^15 + x^11 + x^4) = G + 1, so negative powers of x exist.
            nibble tables (low nibble, then high nibble: 32 entries per s), so
            that one byte costs two lookups. s is the stream position after
            the byte, mod 16.
+  norm8[s] the same as one table of 256 entries per s (8 KB, one lookup a
+           byte), for builds with XF_CRC_TABLE_256.
   x128k[k] k = 0..16: the nibble multiples of x^(128k) mod G as
            xf__crc_mul_tab wants them: [i][n] = (n * x^(4i)) * x^(128k) mod G.
 
-Usage: scripts/gen_crc_tables.py norm|x128k (the C initialiser on stdout).
+Usage: scripts/gen_crc_tables.py norm|norm8|x128k (the C initialiser on stdout).
 tests/test_crc.c recomputes every entry bit by bit.
 """
 import sys
@@ -57,6 +59,11 @@ def main():
             hi = [mulmod(n << 4, c) for n in range(16)]
             print("        /* s = %d: b * x^(%d) */" % (s, 16 - 8 * s))
             print(rows(lo + hi, 16))
+    elif what == "norm8":
+        for s in range(16):
+            c = xpow(16 - 8 * s)
+            print("        /* s = %d: b * x^(%d) */" % (s, 16 - 8 * s))
+            print(rows([mulmod(b, c) for b in range(256)], 16))
     elif what == "x128k":
         for k in range(17):
             c = xpow(128 * k)

@@ -147,7 +147,7 @@ static void test_crc_norm_table(void **state)
     for (s = 0; s < 16u; s++) {
         for (b = 0; b < 256u; b++) {
             uint8_t byte = (uint8_t)b;
-            uint16_t n = xf__crc_norm_step(0, t + 32u * s, byte);
+            uint16_t n = xf__crc_norm_step(0, t + XF__NORM_ROW * s, byte);
             assert_int_equal(xf_crc16_update(n, zeros, s), ref_crc16(&byte, 1));
         }
     }
@@ -165,7 +165,7 @@ static void norm_prefixes(const uint8_t *buf, size_t n, uint16_t *out)
         if (s == 0u) {
             v = xf__crc_x128k(v, 1u);
         }
-        v = xf__crc_norm_step(v, t + 32u * s, buf[i]);
+        v = xf__crc_norm_step(v, t + XF__NORM_ROW * s, buf[i]);
         out[i + 1u] = v;
     }
 }

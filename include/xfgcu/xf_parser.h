@@ -186,55 +186,77 @@ XF_API void xf_parser_reset(xf_parser *p)
 }
 
 #if XF_PARSER_MEMO
-/* One byte b at ring index i: memo[i] = v (N before it), ring[i] = b, and v
- * advanced past it. s = (i + 1) mod 16, a constant in the unrolled block. */
-#define XF__MEMO_BYTE(m, r, d, i, s, v, norm)                                                                     \
+/* One byte: m[k] = v (N before it), r[k] = b, v advanced past it with the
+ * table row t (for s = the position after it mod 16, not 0). */
+#define XF__MEMO_BYTE(m, r, k, src, t, v)                                                                         \
     do {                                                                                                       \
-        uint8_t b_ = (d)[i]; /* read once: the ring store may alias the caller's data */                        \
-        (m)[i] = (v);                                                                                          \
-        (r)[i] = b_;                                                                                           \
-        if ((s) == 0u) {                                                                                       \
-            (v) = xf__crc_x128k((v), 1u);                                                                      \
-        }                                                                                                      \
-        (v) = xf__crc_norm_step((v), (norm) + 32u * (s), b_);                                                  \
+        uint8_t b_ = *(src); /* read once: the ring store may alias the caller's data */                        \
+        (m)[k] = (v);                                                                                          \
+        (r)[k] = b_;                                                                                           \
+        (v) = xf__crc_norm_step((v), (t), b_);                                                                 \
     } while (0)
 
-/* Store n bytes at ring index i0 on (no wrap), with N before each; v is N
- * before the first; returns N after the last. The ring index mod 16 is the
- * stream position mod 16, so whole aligned blocks of 16 are unrolled with
- * every table offset a constant: this loop is most of the cost of
- * adversarial input. */
-static inline uint16_t xf__append_memo(xf_parser *p, size_t i0, const uint8_t *data, size_t n, uint16_t v)
+/* The byte that ends a block of 16 (s = 0): N is multiplied by x^128 first. */
+#define XF__MEMO_BYTE0(m, r, k, src, norm, v)                                                                     \
+    do {                                                                                                       \
+        uint8_t b_ = *(src);                                                                                   \
+        (m)[k] = (v);                                                                                          \
+        (r)[k] = b_;                                                                                           \
+        (v) = xf__crc_norm_step(xf__crc_x128k((v), 1u), (norm), b_);                                           \
+    } while (0)
+
+/* Append n bytes to the ring with N before each, and N(end) after them.
+ * The ring index mod 16 is the stream position mod 16, and blocks of 16
+ * never straddle the ring's end: whole aligned blocks are unrolled with
+ * every table row a constant; the bytes before the first and after the
+ * last take a row pointer that steps along. This loop is about half the
+ * cost of adversarial input. */
+static inline void xf__append_memo(xf_parser *p, const uint8_t *d, size_t n)
 {
     const uint16_t *norm = xf__crc_norm_table();
+    const uint8_t *de = d + n;
     uint8_t *r = p->ring;
     uint16_t *m = p->memo;
-    size_t i = i0, e = i0 + n;
-    for (; i < e && (i & 15u) != 0u; i++) {
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 0u, (i + 1u) & 15u, v, norm);
+    size_t i = p->end & XF__RMASK;
+    uint16_t v = m[i];
+    const uint16_t *t = norm + XF__NORM_ROW * ((i + 1u) & 15u);
+    /* the rest of a block already begun */
+    if ((i & 15u) != 0u) {
+        for (; d != de && (i & 15u) != 15u; i++, d++, t += XF__NORM_ROW) {
+            XF__MEMO_BYTE(m, r, i, d, t, v);
+        }
+        if (d != de) {
+            XF__MEMO_BYTE0(m, r, i, d, norm, v);
+            d++;
+            i = (i + 1u) & XF__RMASK;
+        }
     }
-    for (; e - i >= 16u; i += 16u) {
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 0u, 1u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 1u, 2u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 2u, 3u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 3u, 4u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 4u, 5u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 5u, 6u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 6u, 7u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 7u, 8u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 8u, 9u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 9u, 10u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 10u, 11u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 11u, 12u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 12u, 13u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 13u, 14u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 14u, 15u, v, norm);
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 15u, 0u, v, norm);
+    for (; de - d >= 16; d += 16, i = (i + 16u) & XF__RMASK) {
+        uint16_t *mb = m + i;
+        uint8_t *rb = r + i;
+        XF__MEMO_BYTE(mb, rb, 0, d + 0, norm + 1 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 1, d + 1, norm + 2 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 2, d + 2, norm + 3 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 3, d + 3, norm + 4 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 4, d + 4, norm + 5 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 5, d + 5, norm + 6 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 6, d + 6, norm + 7 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 7, d + 7, norm + 8 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 8, d + 8, norm + 9 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 9, d + 9, norm + 10 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 10, d + 10, norm + 11 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 11, d + 11, norm + 12 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 12, d + 12, norm + 13 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 13, d + 13, norm + 14 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE(mb, rb, 14, d + 14, norm + 15 * XF__NORM_ROW, v);
+        XF__MEMO_BYTE0(mb, rb, 15, d + 15, norm, v);
     }
-    for (; i < e; i++) {
-        XF__MEMO_BYTE(m + i, r + i, data + (i - i0), 0u, (i + 1u) & 15u, v, norm);
+    /* the start of a block: fewer than 16 bytes, none ends it */
+    for (t = norm + XF__NORM_ROW; d != de; i++, d++, t += XF__NORM_ROW) {
+        XF__MEMO_BYTE(m, r, i, d, t, v);
     }
-    return v;
+    p->end += (uint32_t)n;
+    m[p->end & XF__RMASK] = v;
 }
 #else
 /* CRC of held bytes [pos, pos + n) read straight from the ring. */
@@ -250,18 +272,15 @@ static inline uint16_t xf__ring_crc(const xf_parser *p, uint32_t pos, size_t n)
 static inline void xf__append(xf_parser *p, const uint8_t *data, size_t n)
 {
     size_t i0 = p->end & XF__RMASK;
-    size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
 #if XF_PARSER_MEMO
-    uint16_t v = xf__append_memo(p, i0, data, first, p->memo[i0]);
-    v = xf__append_memo(p, 0, data + first, n - first, v);
-    p->end += (uint32_t)n;
-    p->memo[p->end & XF__RMASK] = v;
-    if (i0 < 3u || n > first) { /* wrote some of ring[0..3): keep the copy */
+    xf__append_memo(p, data, n);
+    if (i0 < 3u || i0 + n > XF_PARSER_RING) { /* wrote some of ring[0..3): keep the copy */
         p->ring[XF_PARSER_RING] = p->ring[0];
         p->ring[XF_PARSER_RING + 1u] = p->ring[1];
         p->ring[XF_PARSER_RING + 2u] = p->ring[2];
     }
 #else
+    size_t first = (i0 + n <= XF_PARSER_RING) ? n : (XF_PARSER_RING - i0);
     XF_MEMCPY(p->ring + i0, data, first);
     XF_MEMCPY(p->ring, data + first, n - first);
     p->end += (uint32_t)n;
