@@ -441,59 +441,72 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
      * nothing. */
     const uint32_t end = p->end;
     const uint32_t lim = pend - XF_PACKET_MIN_LEN;
-    const uint8_t h0 = p->h0;
-    const uint32_t hdr = (uint32_t)h0 | ((uint32_t)p->h1 << 8);
+    const uint32_t h0 = p->h0;
+    const uint32_t hdr = h0 | ((uint32_t)p->h1 << 8);
     uint32_t look = p->look;
-    uint32_t stop; /* end or lim, whichever comes first */
+    uint32_t stop;      /* end or lim, whichever comes first */
+    uint32_t fails = 0; /* counted here, stored once */
+    size_t len = 0;
+    int found = 0;
     *need = 0;
     if (p->look_done || (uint32_t)(pend - look) <= XF_PACKET_MIN_LEN) {
         p->look_done = 1;
         return 0;
     }
     stop = ((uint32_t)(end - look) < (uint32_t)(lim - look)) ? end : lim;
-    while (look != stop) {
-        size_t len;
-        uint32_t w, adv;
-        if (p->ring[look & XF__RMASK] != h0) {
-            look++;
-            continue;
-        }
+    /* After a candidate, look may pass stop by a position or three: they
+     * are that candidate's own bytes, which cannot start one. */
+    while ((int32_t)(stop - look) > 0) {
+        uint32_t w;
         if ((uint32_t)(end - look) < 4u) {
             if (xf__candidate(p, look, &len, need) == XF__WAIT) {
-                p->look = look;
-                return 0;
+                break; /* the header or the length is incomplete */
             }
             look++;
             continue;
         }
         w = xf__word(p, look);
-        len = xf__word_len(p, w, hdr);
-        if (len == 0u) {
+        if ((w & 0xFFFFu) != hdr) {
             look++;
             continue;
         }
-        if ((uint32_t)(pend - look) <= len) {
-            break; /* the first candidate ends no sooner: leave it to the rescan */
+        len = (size_t)(w >> 16);
+        /* One test for the usual case, a valid length that ends before
+         * pend (lim - look = pend - look - 72, less than 255 - 72). */
+        if (len - XF_PACKET_MIN_LEN >= (size_t)(uint32_t)(lim - look)) {
+            if (len - XF_PACKET_MIN_LEN > XF_PACKET_MAX_LEN - XF_PACKET_MIN_LEN) {
+                p->stats.length_errors++; /* each position is examined once, so counted once */
+                look += 2u;               /* its second byte is h1 */
+                continue;
+            }
+            break; /* the first candidate that ends no sooner: leave it to the rescan */
         }
         if ((uint32_t)(end - look) < len) {
             *need = len - (size_t)(end - look);
-            p->look = look;
-            return 0;
+            break;
         }
         if (xf__intact(p, look, len)) {
-            p->look = look;
-            xf__emit(p, look, len, frame);
-            return 1;
+            found = 1;
+            break;
         }
-        p->stats.crc_errors++;
-        p->bulk = 1;
+        fails++;
         /* Its second byte is h1 and its fourth the length's high byte, 0:
          * neither can start a candidate, so only the third is looked at. */
-        adv = ((w >> 16) == h0) ? 2u : 4u;
-        look += (adv < (uint32_t)(stop - look)) ? adv : (uint32_t)(stop - look);
+        look += (len == h0) ? 2u : 4u;
     }
     p->look = look;
-    if (look == end && look != lim) {
+    if (fails != 0u) {
+        p->stats.crc_errors += fails;
+        p->bulk = 1;
+    }
+    if (found) {
+        xf__emit(p, look, len, frame);
+        return 1;
+    }
+    if (*need != 0u) {
+        return 0;
+    }
+    if (look == end && (int32_t)(lim - look) > 0) {
         *need = 1; /* every held position examined; later ones may hold a contender */
         return 0;
     }
