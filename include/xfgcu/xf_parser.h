@@ -697,11 +697,13 @@ XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t 
             need = 4; /* header and length: every packet is longer than that */
         }
         take = (need < len - used) ? need : (len - used);
+#if XF_PARSER_MEMO
         if (p->bulk) {
             /* After a CRC failure: take all the ring can hold, so the scan
              * works through many candidates per call instead of asking for
              * a few bytes at a time; what lies past a frame found is given
-             * back below. */
+             * back below. (Not without the memo, where each check re-reads
+             * its candidate anyway: the code would only cost flash.) */
             size_t room = XF__HELD_MAX - (size_t)(p->end - p->head);
             size_t most = (room < len - used) ? room : (len - used);
             /* ending on a multiple of 16 lets the next append start on a
@@ -711,6 +713,7 @@ XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t 
                 take = (most >= take + cut) ? most - cut : most;
             }
         }
+#endif
         xf__append(p, data + used, take);
         p->stats.bytes_in += (uint32_t)take;
         used += take;
