@@ -42,11 +42,9 @@ def xpow(e):
     return r
 
 
-def rows(values, per_line=13, indent="        "):
-    out = []
-    for i in range(0, len(values), per_line):
-        out.append(indent + " ".join("0x%04X," % v for v in values[i:i + per_line]))
-    return "\n".join(out)
+def row(values):
+    """One braced row, which clang-format packs (no trailing comma inside)."""
+    return "        {" + ", ".join("0x%04X" % v for v in values) + "},"
 
 
 def main():
@@ -58,12 +56,12 @@ def main():
             lo = [mulmod(n, c) for n in range(16)]
             hi = [mulmod(n << 4, c) for n in range(16)]
             print("        /* s = %d: b * x^(%d) */" % (s, 16 - 8 * s))
-            print(rows(lo + hi, 16))
+            print(row(lo + hi))
     elif what == "norm8":
         for s in range(16):
             c = xpow(16 - 8 * s)
             print("        /* s = %d: b * x^(%d) */" % (s, 16 - 8 * s))
-            print(rows([mulmod(b, c) for b in range(256)], 16))
+            print(row([mulmod(b, c) for b in range(256)]))
     elif what == "x128k":
         for k in range(17):
             c = xpow(128 * k)

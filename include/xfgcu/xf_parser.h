@@ -188,21 +188,21 @@ XF_API void xf_parser_reset(xf_parser *p)
 #if XF_PARSER_MEMO
 /* One byte: m[k] = v (N before it), r[k] = b, v advanced past it with the
  * table row t (for s = the position after it mod 16, not 0). */
-#define XF__MEMO_BYTE(m, r, k, src, t, v)                                                                         \
-    do {                                                                                                       \
-        uint8_t b_ = *(src); /* read once: the ring store may alias the caller's data */                        \
-        (m)[k] = (v);                                                                                          \
-        (r)[k] = b_;                                                                                           \
-        (v) = xf__crc_norm_step((v), (t), b_);                                                                 \
+#define XF__MEMO_BYTE(m, r, k, src, t, v)                                                                              \
+    do {                                                                                                               \
+        uint8_t b_ = *(src); /* read once: the ring store may alias the caller's data */                               \
+        (m)[k] = (v);                                                                                                  \
+        (r)[k] = b_;                                                                                                   \
+        (v) = xf__crc_norm_step((v), (t), b_);                                                                         \
     } while (0)
 
 /* The byte that ends a block of 16 (s = 0): N is multiplied by x^128 first. */
-#define XF__MEMO_BYTE0(m, r, k, src, norm, v)                                                                     \
-    do {                                                                                                       \
-        uint8_t b_ = *(src);                                                                                   \
-        (m)[k] = (v);                                                                                          \
-        (r)[k] = b_;                                                                                           \
-        (v) = xf__crc_norm_step(xf__crc_x128k((v), 1u), (norm), b_);                                           \
+#define XF__MEMO_BYTE0(m, r, k, src, norm, v)                                                                          \
+    do {                                                                                                               \
+        uint8_t b_ = *(src);                                                                                           \
+        (m)[k] = (v);                                                                                                  \
+        (r)[k] = b_;                                                                                                   \
+        (v) = xf__crc_norm_step(xf__crc_x128k((v), 1u), (norm), b_);                                                   \
     } while (0)
 
 /* Append n bytes to the ring with N before each, and N(end) after them.
