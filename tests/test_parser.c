@@ -30,7 +30,7 @@ typedef struct harness {
     xf_parser_stats last;
     uint64_t frame_bytes;
     size_t nframes;
-    size_t wrapped; /* frames that wrapped round the parser's ring (which it rotated) */
+    size_t wrapped; /* frames that wrapped round the parser's ring (copied or rotated to be contiguous) */
     uint8_t *out;   /* the frames returned, concatenated */
     size_t out_len;
     size_t *lens;
@@ -421,7 +421,7 @@ static size_t run_stream(uint64_t seed, xf_direction dir, size_t frames, feed_mo
 }
 
 /* Each test also checks that some frame spanned the end of the parser's
- * ring (white-box: the parser says it rotated its ring for them), so the wrap
+ * ring (white-box: the parser says it made them contiguous), so the wrap
  * path is known to have run. */
 static void test_random_stream_whole(void **state)
 {

@@ -15,13 +15,14 @@
  *                         limit). An MCU that only receives GCU replies
  *                         (72 or 73 bytes) may set 84 to save RAM; longer
  *                         packets are then counted as length errors.
- *   XF_PARSER_MEMO        1 (default): after a CRC failure the parser keeps the
- *                         CRC before each held byte, so checking any further
- *                         candidate costs O(1) and adversarial input O(1) per
- *                         byte. 0: 2 bytes per ring slot less RAM (256 B with
- *                         XF_PACKET_MAX_LEN <= 128); candidates after a failure
- *                         are checked by re-reading them, still exact, at
- *                         O(packet length) each on adversarial input.
+ *   XF_PARSER_MEMO        1 (default): the parser keeps, for each byte in its
+ *                         ring, the (normalised) CRC before it, so checking
+ *                         any candidate costs O(1) and adversarial input O(1)
+ *                         per byte. 0: 2 bytes per ring slot less RAM (260 B
+ *                         with XF_PACKET_MAX_LEN <= 127) and ~3 KB less flash;
+ *                         candidates after a failure are checked by re-reading
+ *                         them, still exact, at O(packet length) each on
+ *                         adversarial input.
  *   XF_SEPARATE_IMPLEMENTATION
  *                         undefined (default): every function is
  *                         `static inline` in the headers (header-only).
