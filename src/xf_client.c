@@ -187,17 +187,21 @@ typedef struct xf__tele_field {
 
 static const xf__tele_field xf__tele_fields[] = {
     /* main frame, in every reply */
-    XF__TF(4, version), XF__TF(5, gimbal_mode), XF__TF(6, pod_status), XF__TF(8, target_offset_x),
-    XF__TF(10, target_offset_y), XF__TF(12, rel_angle_x), XF__TF(14, rel_angle_y), XF__TF(16, rel_angle_z),
-    XF__TF(18, cam_roll), XF__TF(20, cam_pitch), XF__TF(22, cam_yaw), XF__TF(24, rate_x), XF__TF(26, rate_y),
-    XF__TF(28, rate_z),
+    XF__TF(XF_OFF_VERSION, version), XF__TF(XF_OFF_GCU_GIMBAL_MODE, gimbal_mode),
+    XF__TF(XF_OFF_GCU_POD_STATUS, pod_status), XF__TF(XF_OFF_GCU_TARGET_OFFSET_X, target_offset_x),
+    XF__TF(XF_OFF_GCU_TARGET_OFFSET_Y, target_offset_y), XF__TF(XF_OFF_GCU_REL_ANGLE_X, rel_angle_x),
+    XF__TF(XF_OFF_GCU_REL_ANGLE_Y, rel_angle_y), XF__TF(XF_OFF_GCU_REL_ANGLE_Z, rel_angle_z),
+    XF__TF(XF_OFF_GCU_CAM_ROLL, cam_roll), XF__TF(XF_OFF_GCU_CAM_PITCH, cam_pitch), XF__TF(XF_OFF_GCU_CAM_YAW, cam_yaw),
+    XF__TF(XF_OFF_GCU_RATE_X, rate_x), XF__TF(XF_OFF_GCU_RATE_Y, rate_y), XF__TF(XF_OFF_GCU_RATE_Z, rate_z),
     /* sub frame (byte 37 is its header) */
-    XF__TF(38, hw_version), XF__TF(39, fw_version), XF__TF(40, gimbal_code), XF__TF(41, error_code),
-    XF__TF(43, target_distance), XF__TF(47, target_longitude), XF__TF(51, target_latitude), XF__TF(55, target_altitude),
-    XF__TF(59, zoom_cam1), XF__TF(61, zoom_cam2), XF__TF(63, thermal_status), XF__TF(64, camera_status),
-    XF__TF(66, time_zone)};
+    XF__TF(XF_OFF_GCU_HW_VERSION, hw_version), XF__TF(XF_OFF_GCU_FW_VERSION, fw_version),
+    XF__TF(XF_OFF_GCU_GIMBAL_CODE, gimbal_code), XF__TF(XF_OFF_GCU_ERROR_CODE, error_code),
+    XF__TF(XF_OFF_GCU_TARGET_DISTANCE, target_distance), XF__TF(XF_OFF_GCU_TARGET_LONGITUDE, target_longitude),
+    XF__TF(XF_OFF_GCU_TARGET_LATITUDE, target_latitude), XF__TF(XF_OFF_GCU_TARGET_ALTITUDE, target_altitude),
+    XF__TF(XF_OFF_GCU_ZOOM_CAM1, zoom_cam1), XF__TF(XF_OFF_GCU_ZOOM_CAM2, zoom_cam2),
+    XF__TF(XF_OFF_GCU_THERMAL_STATUS, thermal_status), XF__TF(XF_OFF_GCU_CAMERA_STATUS, camera_status),
+    XF__TF(XF_OFF_GCU_TIME_ZONE, time_zone)};
 #define XF__TELE_MAIN_FIELDS 14u
-#define XF__GCU_SUB_HEADER   37u
 
 /* Copy rows [from, to) of the table from @p buf into the telemetry. */
 static void xf__tele_read(xf_telemetry *t, const uint8_t *buf, size_t from, size_t to)
@@ -226,7 +230,7 @@ static void xf__update_telemetry(xf_client *c, const uint8_t *buf)
     xf_telemetry *t = &c->tele;
     t->have_main = 1;
     xf__tele_read(t, buf, 0, XF__TELE_MAIN_FIELDS);
-    if (buf[XF__GCU_SUB_HEADER] == XF_SUB_HEADER) {
+    if (buf[XF_OFF_GCU_SUB_HEADER] == XF_SUB_HEADER) {
         t->have_sub = 1;
         xf__tele_read(t, buf, XF__TELE_MAIN_FIELDS, sizeof(xf__tele_fields) / sizeof(xf__tele_fields[0]));
         t->sub_ms = c->now_ms;
@@ -329,11 +333,11 @@ static xf_err xf__receive(xf_client *c)
  * of stack. Bytes not written are 0, which the protocol wants for data
  * that is absent.
  */
-#define XF__H_CTRL        5u  /* roll, pitch, yaw control quantities, S16 each */
-#define XF__H_STATUS      11u /* XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID */
-#define XF__H_CARRIER     12u /* attitude, accelerations, velocities: 9 x 16 bits */
-#define XF__H_SUB_REQUEST 30u
-#define XF__H_GNSS        37u /* sub frame: header, lon, lat, alt, satellites, ms, week, relative height */
+
+/* The runs the loops below write as consecutive 16-bit words. */
+XF_STATIC_ASSERT(XF_OFF_HOST_YAW_CTRL == XF_OFF_HOST_ROLL_CTRL + 4u, control_words_in_a_row);
+XF_STATIC_ASSERT(XF_OFF_HOST_VEL_UP == XF_OFF_HOST_CARRIER_ROLL + 2u * (XF__CARRIER_WORDS - 1u),
+                 carrier_words_in_a_row);
 
 /* @p n bytes of @p v, little-endian (one loop for every field: fewer instructions than each put inlined). */
 static void xf__put_le(uint8_t *p, uint32_t v, size_t n)
@@ -349,27 +353,26 @@ static void xf__put_carrier(const xf_client *c, uint8_t *buf)
     if (!c->have_carrier || xf_ms_since(c->now_ms, c->carrier_ms) > c->cfg.carrier_max_age_ms) {
         return; /* zeros with ins_valid clear: never invent carrier data */
     }
-    buf[XF__H_STATUS] |= XF_STATUS_INS_VALID;
+    buf[XF_OFF_HOST_STATUS] |= XF_STATUS_INS_VALID;
     for (i = 0; i < XF__CARRIER_WORDS; i++) {
-        xf__put_le(buf + XF__H_CARRIER + 2u * i, c->carrier[i], 2);
+        xf__put_le(buf + XF_OFF_HOST_CARRIER_ROLL + 2u * i /* roll .. vel_up: 9 words in a row */, c->carrier[i], 2);
     }
 }
 
 static void xf__put_gnss(const xf_client *c, uint8_t *buf)
 {
     const xf_gnss *g = &c->gnss;
-    uint8_t *s = buf + XF__H_GNSS;
     if (!c->have_gnss || xf_ms_since(c->now_ms, c->gnss_ms) > c->cfg.gnss_max_age_ms) {
         return; /* "no sub frame data": bytes 37-68 all zero */
     }
-    s[0] = XF_SUB_HEADER;
-    xf__put_le(s + 1, (uint32_t)g->longitude_e7, 4);
-    xf__put_le(s + 5, (uint32_t)g->latitude_e7, 4);
-    xf__put_le(s + 9, (uint32_t)g->altitude_mm, 4);
-    s[13] = g->satellites;
-    xf__put_le(s + 14, g->ms_of_week, 4);
-    xf__put_le(s + 18, (uint16_t)g->week, 2);
-    xf__put_le(s + 20, (uint32_t)g->relative_height_mm, 4);
+    buf[XF_OFF_HOST_SUB_HEADER] = XF_SUB_HEADER;
+    xf__put_le(buf + XF_OFF_HOST_LONGITUDE, (uint32_t)g->longitude_e7, 4);
+    xf__put_le(buf + XF_OFF_HOST_LATITUDE, (uint32_t)g->latitude_e7, 4);
+    xf__put_le(buf + XF_OFF_HOST_ALTITUDE, (uint32_t)g->altitude_mm, 4);
+    buf[XF_OFF_HOST_SATELLITES] = g->satellites;
+    xf__put_le(buf + XF_OFF_HOST_GNSS_MS, g->ms_of_week, 4);
+    xf__put_le(buf + XF_OFF_HOST_GNSS_WEEK, (uint16_t)g->week, 2);
+    xf__put_le(buf + XF_OFF_HOST_RELATIVE_HEIGHT, (uint32_t)g->relative_height_mm, 4);
 }
 
 static void xf__put_control(xf_client *c, uint8_t *buf)
@@ -379,7 +382,7 @@ static void xf__put_control(xf_client *c, uint8_t *buf)
     if (c->ctrl_kind == XF_CTRL_NONE) {
         return;
     }
-    buf[XF__H_STATUS] |= XF_STATUS_CTRL_VALID;
+    buf[XF_OFF_HOST_STATUS] |= XF_STATUS_CTRL_VALID;
     if (c->ctrl_kind == XF_CTRL_ANGLES) {
         /* Roll and yaw go round: 240 deg is -120 deg, not a clamped 180. */
         v[0] = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[0], -180.0f));
@@ -399,7 +402,7 @@ static void xf__put_control(xf_client *c, uint8_t *buf)
         }
     }
     for (i = 0; i < 3u; i++) {
-        xf__put_le(buf + XF__H_CTRL + 2u * i, (uint16_t)v[i], 2);
+        xf__put_le(buf + XF_OFF_HOST_ROLL_CTRL + 2u * i /* roll, pitch, yaw */, (uint16_t)v[i], 2);
     }
 }
 
@@ -447,7 +450,7 @@ static xf_err xf__send(xf_client *c)
     uint8_t order;
     xf_err err;
     XF_MEMSET(buf, 0, XF_PACKET_MIN_LEN);
-    buf[XF__H_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
+    buf[XF_OFF_HOST_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
     xf__put_carrier(c, buf);
     xf__put_gnss(c, buf);
     xf__put_control(c, buf);

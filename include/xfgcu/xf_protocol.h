@@ -31,6 +31,65 @@ XF_BEGIN_DECLS
 #define XF_OFF_PARAMS  70u
 #define XF_FRAME_LEN   32u /**< main and sub frames are 32 bytes each */
 
+/* Byte offsets of every field of the four frames, under the spec's names
+ * (gcu-protocol.md sections 3 and 4): the one copy of the layout, which the
+ * packers, the decoders and the client all use. */
+/* host -> GCU: main frame 5..36, sub frame 37..68 */
+#define XF_OFF_HOST_ROLL_CTRL       5u
+#define XF_OFF_HOST_PITCH_CTRL      7u
+#define XF_OFF_HOST_YAW_CTRL        9u
+#define XF_OFF_HOST_STATUS          11u
+#define XF_OFF_HOST_CARRIER_ROLL    12u
+#define XF_OFF_HOST_CARRIER_PITCH   14u
+#define XF_OFF_HOST_CARRIER_YAW     16u
+#define XF_OFF_HOST_ACCEL_NORTH     18u
+#define XF_OFF_HOST_ACCEL_EAST      20u
+#define XF_OFF_HOST_ACCEL_UP        22u
+#define XF_OFF_HOST_VEL_NORTH       24u
+#define XF_OFF_HOST_VEL_EAST        26u
+#define XF_OFF_HOST_VEL_UP          28u
+#define XF_OFF_HOST_SUB_REQUEST     30u
+#define XF_OFF_HOST_RESERVED_MAIN   31u
+#define XF_OFF_HOST_SUB_HEADER      37u
+#define XF_OFF_HOST_LONGITUDE       38u
+#define XF_OFF_HOST_LATITUDE        42u
+#define XF_OFF_HOST_ALTITUDE        46u
+#define XF_OFF_HOST_SATELLITES      50u
+#define XF_OFF_HOST_GNSS_MS         51u
+#define XF_OFF_HOST_GNSS_WEEK       55u
+#define XF_OFF_HOST_RELATIVE_HEIGHT 57u
+#define XF_OFF_HOST_RESERVED_SUB    61u
+/* GCU -> host: main frame 5..36, sub frame 37..68 */
+#define XF_OFF_GCU_GIMBAL_MODE      5u
+#define XF_OFF_GCU_POD_STATUS       6u
+#define XF_OFF_GCU_TARGET_OFFSET_X  8u
+#define XF_OFF_GCU_TARGET_OFFSET_Y  10u
+#define XF_OFF_GCU_REL_ANGLE_X      12u
+#define XF_OFF_GCU_REL_ANGLE_Y      14u
+#define XF_OFF_GCU_REL_ANGLE_Z      16u
+#define XF_OFF_GCU_CAM_ROLL         18u
+#define XF_OFF_GCU_CAM_PITCH        20u
+#define XF_OFF_GCU_CAM_YAW          22u
+#define XF_OFF_GCU_RATE_X           24u
+#define XF_OFF_GCU_RATE_Y           26u
+#define XF_OFF_GCU_RATE_Z           28u
+#define XF_OFF_GCU_RESERVED_MAIN    30u
+#define XF_OFF_GCU_SUB_HEADER       37u
+#define XF_OFF_GCU_HW_VERSION       38u
+#define XF_OFF_GCU_FW_VERSION       39u
+#define XF_OFF_GCU_GIMBAL_CODE      40u
+#define XF_OFF_GCU_ERROR_CODE       41u
+#define XF_OFF_GCU_TARGET_DISTANCE  43u
+#define XF_OFF_GCU_TARGET_LONGITUDE 47u
+#define XF_OFF_GCU_TARGET_LATITUDE  51u
+#define XF_OFF_GCU_TARGET_ALTITUDE  55u
+#define XF_OFF_GCU_ZOOM_CAM1        59u
+#define XF_OFF_GCU_ZOOM_CAM2        61u
+#define XF_OFF_GCU_THERMAL_STATUS   63u
+#define XF_OFF_GCU_CAMERA_STATUS    64u
+#define XF_OFF_GCU_TIME_ZONE        66u
+#define XF_OFF_GCU_RESERVED_SUB     67u
+
 /** Which side sent a packet: selects the header bytes and the frame layout. */
 typedef enum xf_direction {
     XF_DIR_HOST = 0, /**< host -> GCU, header A8 E5 */
