@@ -19,7 +19,7 @@
  *                         ring, the (normalised) CRC before it, so checking
  *                         any candidate costs O(1) and adversarial input O(1)
  *                         per byte. 0: 2 bytes per ring slot less RAM (260 B
- *                         with XF_PACKET_MAX_LEN <= 127) and ~3 KB less flash;
+ *                         with XF_PACKET_MAX_LEN <= 127) and ~4 KB less flash;
  *                         candidates after a failure are checked by re-reading
  *                         them, still exact, at O(packet length) each on
  *                         adversarial input.

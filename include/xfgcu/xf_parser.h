@@ -474,9 +474,8 @@ static inline int xf__contend(xf_parser *p, uint32_t pend, xf_frame *frame, size
         /* One test for the usual case, a valid length that ends before
          * pend (lim - look = pend - look - 72, less than 255 - 72). */
         if (len - XF_PACKET_MIN_LEN >= (size_t)(uint32_t)(lim - look)) {
-            if (len - XF_PACKET_MIN_LEN > XF_PACKET_MAX_LEN - XF_PACKET_MIN_LEN) {
-                p->stats.length_errors++; /* each position is examined once, so counted once */
-                look += 2u;               /* its second byte is h1 */
+            if (xf__word_len(p, w, hdr) == 0u) { /* a length out of range, counted there */
+                look += 2u;                      /* its second byte is h1 */
                 continue;
             }
             break; /* the first candidate that ends no sooner: leave it to the rescan */

@@ -35,7 +35,7 @@ XF_BEGIN_DECLS
  * (gcu-protocol.md sections 3 and 4): the one copy of the layout, which the
  * packers, the decoders and the client all use. */
 /* host -> GCU: main frame 5..36, sub frame 37..68 */
-#define XF_OFF_HOST_ROLL_CTRL       5u
+#define XF_OFF_HOST_ROLL_CTRL       XF_OFF_MAIN
 #define XF_OFF_HOST_PITCH_CTRL      7u
 #define XF_OFF_HOST_YAW_CTRL        9u
 #define XF_OFF_HOST_STATUS          11u
@@ -50,7 +50,7 @@ XF_BEGIN_DECLS
 #define XF_OFF_HOST_VEL_UP          28u
 #define XF_OFF_HOST_SUB_REQUEST     30u
 #define XF_OFF_HOST_RESERVED_MAIN   31u
-#define XF_OFF_HOST_SUB_HEADER      37u
+#define XF_OFF_HOST_SUB_HEADER      XF_OFF_SUB
 #define XF_OFF_HOST_LONGITUDE       38u
 #define XF_OFF_HOST_LATITUDE        42u
 #define XF_OFF_HOST_ALTITUDE        46u
@@ -60,7 +60,7 @@ XF_BEGIN_DECLS
 #define XF_OFF_HOST_RELATIVE_HEIGHT 57u
 #define XF_OFF_HOST_RESERVED_SUB    61u
 /* GCU -> host: main frame 5..36, sub frame 37..68 */
-#define XF_OFF_GCU_GIMBAL_MODE      5u
+#define XF_OFF_GCU_GIMBAL_MODE      XF_OFF_MAIN
 #define XF_OFF_GCU_POD_STATUS       6u
 #define XF_OFF_GCU_TARGET_OFFSET_X  8u
 #define XF_OFF_GCU_TARGET_OFFSET_Y  10u
@@ -74,7 +74,7 @@ XF_BEGIN_DECLS
 #define XF_OFF_GCU_RATE_Y           26u
 #define XF_OFF_GCU_RATE_Z           28u
 #define XF_OFF_GCU_RESERVED_MAIN    30u
-#define XF_OFF_GCU_SUB_HEADER       37u
+#define XF_OFF_GCU_SUB_HEADER       XF_OFF_SUB
 #define XF_OFF_GCU_HW_VERSION       38u
 #define XF_OFF_GCU_FW_VERSION       39u
 #define XF_OFF_GCU_GIMBAL_CODE      40u
