@@ -297,6 +297,7 @@ static void check_golden(const golden *g)
     uint8_t out[32], ref[32], pbuf[100], want[100];
     size_t n = 999;
     const char *bad = NULL;
+    memset(&d, 0, sizeof(d)); /* a failed decode below leaves d as it was */
     assert_non_null(s);
     golden_cmd(g, &c);
 
@@ -361,6 +362,7 @@ static void test_unused_members_ignored(void **state)
         xf_command c, noisy, d;
         uint8_t out[32];
         size_t n = 0;
+        memset(&d, 0, sizeof(d)); /* a failed decode below leaves d as it was */
         golden_cmd(g, &c);
         noisy = c;
         for (k = 0; k < ALL_FIELDS_COUNT; k++) {

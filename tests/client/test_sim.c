@@ -47,6 +47,19 @@ static void feed(sim_fx *f, const uint8_t *data, size_t len)
     assert_xf(xf_sim_process(&f->s, data, len, f->now, f->out, sizeof(f->out), &f->out_len), XF_OK);
 }
 
+/* Feed one host packet; decode the one reply into @p reply (if not NULL). */
+static void send_bytes(sim_fx *f, const uint8_t *buf, size_t len, xf_gcu_packet *reply)
+{
+    if (reply != NULL) {
+        memset(reply, 0, sizeof(*reply)); /* a failed unpack below leaves it as it was */
+    }
+    feed(f, buf, len);
+    assert_true(f->out_len >= XF_PACKET_MIN_LEN);
+    if (reply != NULL) {
+        assert_xf(xf_gcu_unpack(f->out, f->out_len, reply), XF_OK);
+    }
+}
+
 /* Send one packet of @p order (default parameters, V@p version); decode the one reply. */
 static void send_order(sim_fx *f, uint8_t version, uint8_t order, xf_gcu_packet *reply)
 {
@@ -55,22 +68,14 @@ static void send_order(sim_fx *f, uint8_t version, uint8_t order, xf_gcu_packet 
     size_t len;
     xf_command_init(&cmd, order);
     len = host_bytes(buf, version, order == XF_ORDER_NULL ? NULL : &cmd, 0);
-    feed(f, buf, len);
-    assert_true(f->out_len >= XF_PACKET_MIN_LEN);
-    if (reply != NULL) {
-        assert_xf(xf_gcu_unpack(f->out, f->out_len, reply), XF_OK);
-    }
+    send_bytes(f, buf, len, reply);
 }
 
 static void send_cmd(sim_fx *f, uint8_t version, const xf_command *cmd, xf_gcu_packet *reply)
 {
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = host_bytes(buf, version, cmd, 0);
-    feed(f, buf, len);
-    assert_true(f->out_len >= XF_PACKET_MIN_LEN);
-    if (reply != NULL) {
-        assert_xf(xf_gcu_unpack(f->out, f->out_len, reply), XF_OK);
-    }
+    send_bytes(f, buf, len, reply);
 }
 
 static void test_init(void **state)
@@ -311,9 +316,8 @@ static void test_every_order_gets_feedback(void **state)
         xf_host_packet_init(&p, 1);
         p.order = 0x99;
         assert_xf(xf_host_pack(&p, buf, sizeof(buf), &len), XF_OK);
-        feed(f, buf, len);
+        send_bytes(f, buf, len, &r);
         assert_int_equal(f->out_len, 73);
-        assert_xf(xf_gcu_unpack(f->out, f->out_len, &r), XF_OK);
         assert_int_equal(r.order, 0x99);
         assert_int_equal(r.params[0], XF_STATE_FAILURE);
         free(f);
