@@ -12,11 +12,11 @@ echo "the codec compiled once for a Cortex-M4 (-Os; every function, before --gc-
 arm-none-eabi-size "$out/xf_codec.o"
 
 # sizeof(xf_parser) and sizeof(xf_client) on the target, read from sized symbols
-printf '#include "xfgcu/xf_client.h"\nchar xf_parser_size[sizeof(xf_parser)];\nchar xf_client_size[sizeof(xf_client)];\n' > "$out/sizes.c"
+printf '#include "xfgcu/xf_client.h"\nchar sizeof_xf_parser[sizeof(xf_parser)];\nchar sizeof_xf_client[sizeof(xf_client)];\n' > "$out/sizes.c"
 for max in 255 84; do
   arm-none-eabi-gcc "${flags[@]}" -DXF_PACKET_MAX_LEN=$max -c "$out/sizes.c" -o "$out/sizes.o"
-  p=$(arm-none-eabi-nm -S "$out/sizes.o" | awk '/xf_parser_size/ {print $2}')
-  c=$(arm-none-eabi-nm -S "$out/sizes.o" | awk '/xf_client_size/ {print $2}')
+  p=$(arm-none-eabi-nm -S "$out/sizes.o" | awk '/sizeof_xf_parser/ {print $2}')
+  c=$(arm-none-eabi-nm -S "$out/sizes.o" | awk '/sizeof_xf_client/ {print $2}')
   echo "RAM with XF_PACKET_MAX_LEN=$max: xf_parser $((16#$p)) bytes, xf_client (parser included) $((16#$c)) bytes"
 done
 
@@ -43,7 +43,7 @@ for line in open(sys.argv[1]):
         pending = m.group(1)
         continue
     m = re.match(r"^ (\.(?:text|rodata|data)\S*)?\s+0x[0-9a-f]+\s+0x([0-9a-f]+)\s+(\S+\.obj)", line)
-    if m and (m.group(1) or pending) and re.search(r"xf_(client|codec)\.c\.obj", m.group(3)):
+    if m and (m.group(1) or pending) and re.search(r"xf_(client|codec|options)\.c\.obj", m.group(3)):
         flash += int(m.group(2), 16)
     pending = None
 nm = subprocess.run(["arm-none-eabi-nm", "-S", sys.argv[2]], capture_output=True, text=True).stdout

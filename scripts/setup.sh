@@ -9,7 +9,7 @@ pkgs=(build-essential cmake pkg-config libjansson-dev libserialport-dev)
 dev=0
 if [ "${1:-}" = "--dev" ]; then
   dev=1
-  pkgs+=(libcmocka-dev clang clang-tidy clang-format cppcheck libclang-rt-14-dev valgrind g++
+  pkgs+=(libcmocka-dev doxygen groff-base clang clang-tidy clang-format cppcheck libclang-rt-14-dev valgrind g++
          gcc-arm-none-eabi libnewlib-arm-none-eabi gcc-riscv64-unknown-elf socat
          gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user libcmocka-dev:s390x libserialport-dev:s390x)
 fi

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # The whole test suite: what CI runs (.ci/run). Installs what it needs first (Debian packages).
-# Stages: gcc -Werror build + ctest; clang ASan+UBSan build + ctest; fuzz smoke; compiler matrix;
-# static analysis; MCU builds with sizes; big-endian tests under qemu; package consumers;
-# benchmark figures (printed, never asserted).
+# Stages: gcc -Werror Debug build + ctest; the README's recipes as printed (Release gcc -O3 + ctest,
+# install to a fresh prefix, find_package / pkg-config / add_subdirectory consumers run, the clang
+# ASan+UBSan preset + ctest, the bare-metal presets); gcc -O2, clang -O2 and -O3 builds + ctest;
+# fuzz smoke; compiler matrix; docs (Doxygen with warnings as errors, man page, no references
+# outside the project); static analysis; MCU sizes; big-endian tests under qemu; benchmark figures
+# (printed, never asserted).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh --dev
@@ -10,21 +13,33 @@ jobs=$(nproc)
 t0=$(date +%s)
 stage() { printf '\n=== %s  (%ss)\n' "$*" "$(($(date +%s) - t0))"; }
 
-stage "gcc: build with -Werror, run the tests"
+stage "gcc: Debug build with -Werror, run the tests"
 cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc >/dev/null
 cmake --build build/gcc --parallel "$jobs"
 ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"
 
-stage "clang: build with ASan+UBSan, run the tests"
-cmake --preset debug >/dev/null
-cmake --build --preset debug --parallel "$jobs"
-ctest --preset debug --parallel "$jobs"
+stage "README: every recipe it prints, run as printed (Release, install, consumers, presets)"
+scripts/check_readme.sh
+
+stage "optimised builds with -Werror: gcc -O2, clang -O2, clang -O3; run the tests"
+for cfg in "gcc -O2" "clang -O2" "clang -O3"; do
+  set -- $cfg
+  dir=build/opt-$1$2
+  echo "--- $1 $2"
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="$1" \
+        -DCMAKE_C_FLAGS_RELEASE="$2 -DNDEBUG" >/dev/null
+  cmake --build "$dir" --parallel "$jobs"
+  ctest --test-dir "$dir" --output-on-failure --parallel "$jobs"
+done
 
 stage "fuzz smoke: libFuzzer harnesses over the saved corpus and a short run"
 scripts/fuzz.sh smoke
 
-stage "compiler matrix: gcc/clang x C99/C11, headers as C++"
+stage "compiler matrix: gcc/clang x C99/C11, headers as C++, a user TU of the codec at -O0..-O3/-Os"
 scripts/matrix.sh
+
+stage "docs: API reference (Doxygen, warnings are errors), man page up to date, nothing outside"
+scripts/check_docs.sh
 
 stage "static analysis: cppcheck, clang-tidy"
 scripts/lint.sh
@@ -34,9 +49,6 @@ scripts/mcu_size.sh
 
 stage "big-endian: codec and client tests on s390x under qemu-user"
 scripts/bigendian.sh
-
-stage "package: find_package, add_subdirectory, pkg-config consumers"
-scripts/check_package.sh
 
 stage "benchmarks: parser instructions per byte (callgrind), client latency and CPU"
 scripts/bench.sh

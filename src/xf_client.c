@@ -31,8 +31,16 @@ void xf_client_config_init(xf_client_config *cfg)
     }
 }
 
-xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *cfg)
+size_t xf_client_size(void) { return sizeof(xf_client); }
+
+unsigned long xf_options_word(void) { return XF_OPTIONS_WORD; }
+
+xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
+                              size_t size)
 {
+    if (options != XF_OPTIONS_WORD || size != sizeof(xf_client)) {
+        return XF_ERR_CONFIG; /* the caller's xf_client is not ours: writing to it would overrun it */
+    }
     if (c == NULL || xf_hal_check(hal) != XF_OK) {
         return XF_ERR_ARG;
     }
@@ -169,7 +177,7 @@ static void xf__update_window(xf_client *c)
 /*
  * Telemetry is read straight from the frame's bytes (a frame out of the
  * parser is whole, of the GCU, its CRC checked): one row per field, wire
- * offset to member, at the offsets of the GCU frames (gcu-protocol.md
+ * offset to member, at the offsets of the GCU frames (docs/protocol.md
  * section 4, as in xf_frame_gcu; a test checks the two agree). On an MCU
  * this is 0.3 KB less code than decoding a whole xf_gcu_packet (and 88
  * bytes less stack) and then copying its fields.
@@ -327,7 +335,7 @@ static xf_err xf__receive(xf_client *c)
 
 /*
  * Packets are written straight into their bytes, at the offsets of the
- * host frames (gcu-protocol.md section 3, as in xf_host_pack; a test checks
+ * host frames (docs/protocol.md section 3, as in xf_host_pack; a test checks
  * that the two agree byte for byte): no xf_host_packet filled and then
  * packed field by field, which on an MCU was 0.6 KB of code and 88 bytes
  * of stack. Bytes not written are 0, which the protocol wants for data

@@ -32,9 +32,12 @@ void xf_sim_config_init(xf_sim_config *cfg)
     cfg->seed = 1;
 }
 
-xf_err xf_sim_init(xf_sim *s, const xf_sim_config *cfg)
+xf_err xf_sim_init_checked(xf_sim *s, const xf_sim_config *cfg, unsigned long options, size_t size)
 {
     xf_sim_config def;
+    if (options != XF_OPTIONS_WORD || size != sizeof(xf_sim)) {
+        return XF_ERR_CONFIG; /* the caller's xf_sim is not ours: writing to it would overrun it */
+    }
     if (s == NULL) {
         return XF_ERR_ARG;
     }

@@ -1,6 +1,6 @@
 /*
  * test_command.c - xf_command.h: the order table against the spec, a golden
- * parameter vector for every order (bytes written by hand from §7 and §10),
+ * parameter vector for every order (bytes written by hand from docs/protocol.md §7 and §10),
  * encode and decode, every range rule, version-aware ranges, feedback
  * decoding for every order, and the error paths.
  */

@@ -42,7 +42,7 @@ static void test_check_value(void **state)
     }
 }
 
-/* The appendix-1 packet's CRC is E9 D4 over bytes 0..69 (spec §9.1). */
+/* The appendix-1 packet's CRC is E9 D4 over bytes 0..69 (docs/protocol.md §9.1). */
 static void test_appendix1_crc(void **state)
 {
     (void)state;
@@ -214,7 +214,7 @@ static void test_crc_norm_identity(void **state)
     }
 }
 
-/* The CRC sits big-endian in the last two bytes of a packet (spec §2). */
+/* The CRC sits big-endian in the last two bytes of a packet (docs/protocol.md §2). */
 static void test_crc_big_endian_in_packet(void **state)
 {
     test_rng r;

@@ -1,6 +1,6 @@
 /*
  * test_fields.h - the wire layout of the four frames, written from the spec
- * (gcu-protocol.md §2-§6 and §10), tied to the members of the codec's
+ * (docs/protocol.md §2-§6 and §10), tied to the members of the codec's
  * structs.
  *
  * Each row says: this struct member lives at this byte offset, this many
@@ -45,7 +45,7 @@ typedef struct field_desc {
             (n)                                                                                                        \
     }
 
-/* spec §2, §3, §4 */
+/* docs/protocol.md §2, §3, §4 */
 static const field_desc host_fields[] = {
     FD(xf_host_packet, version, 4, FK_U8, 1),
     FD(xf_host_packet, main.roll_ctrl, 5, FK_S16, 2),
@@ -75,7 +75,7 @@ static const field_desc host_fields[] = {
     FD(xf_host_packet, order, 69, FK_U8, 1),
 };
 
-/* spec §2, §5, §6, §10 (thermal_status 63, camera_status 64-65, time_zone 66, error_code 41-42) */
+/* docs/protocol.md §2, §5, §6, §10 (thermal_status 63, camera_status 64-65, time_zone 66, error_code 41-42) */
 static const field_desc gcu_fields[] = {
     FD(xf_gcu_packet, version, 4, FK_U8, 1),
     FD(xf_gcu_packet, main.gimbal_mode, 5, FK_U8, 1),

@@ -1,5 +1,5 @@
 /*
- * test_orders.h - the order tables of gcu-protocol.md §7 and §10, restated
+ * test_orders.h - the order tables of docs/protocol.md §7 and §10, restated
  * for the tests: each order's name, the version that introduced it, its
  * default camera mask, whether its failure feedback is a camera mask, and
  * its parameter layout. Plus a reference encoder and a reference range
@@ -187,7 +187,7 @@ static inline size_t ref_encode(const xf_command *c, const order_spec *s, uint8_
 
 #define BAD(f) (1u << (unsigned)(f))
 
-/* Reference range check (gcu-protocol.md §7, §10, plus the library's
+/* Reference range check (docs/protocol.md §7, §10, plus the library's
  * documented conventions: a camera mask is never 0, boxes go top-left to
  * bottom-right, an alarm's high is not below its low, time zones are
  * [-12, 14]). Returns the set of members that break a rule. */

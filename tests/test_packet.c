@@ -323,7 +323,7 @@ static void test_max_length_packet(void **state)
     assert_memory_equal(back.params, g.params, 183);
 }
 
-/* ---- the vendor's appendix-1 packet (spec §9.1) ------------------------- */
+/* ---- the vendor's appendix-1 packet (docs/protocol.md §9.1) ------------------------- */
 
 static void test_appendix1_unpack(void **state)
 {
@@ -345,7 +345,7 @@ static void test_appendix1_unpack(void **state)
     assert_sint_equal(p.main.accel_north, 112);
     assert_sint_equal(p.main.accel_east, -112);
     assert_sint_equal(p.main.accel_up, 112);
-    /* printed 40 80 = 0x8040, taken literally (spec §9.1) */
+    /* printed 40 80 = 0x8040, taken literally (docs/protocol.md §9.1) */
     assert_sint_equal(p.main.vel_north, -32704);
     assert_sint_equal(p.main.vel_east, -2112);
     assert_sint_equal(p.main.vel_up, -32704);
@@ -649,7 +649,7 @@ static void test_strerror_distinct(void **state)
 
 static void test_gimbal_model_names(void **state)
 {
-    /* spec §6 and §10 */
+    /* docs/protocol.md §6 and §10 */
     static const struct {
         uint8_t code;
         const char *name;

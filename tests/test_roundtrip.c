@@ -43,7 +43,7 @@ static uint8_t random_params_len(test_rng *r)
 
 static uint8_t random_version(test_rng *r)
 {
-    /* mostly the two real versions; any byte is accepted on receipt (§9.3) */
+    /* mostly the two real versions; any byte is accepted on receipt (docs/protocol.md §9.3) */
     uint32_t k = rng_below(r, 8);
     return (k < 3) ? 1 : (k < 6) ? 2 : rng_u8(r);
 }

@@ -51,7 +51,7 @@ static void test_round_and_wrap(void **state)
 static void test_carrier_roll(void **state)
 {
     (void)state;
-    /* 0.01 deg, wrapped into [-180, 180) (spec §3: [-18000, 18000)) */
+    /* 0.01 deg, wrapped into [-180, 180) (docs/protocol.md §3: [-18000, 18000)) */
     assert_sint_equal(xf_carrier_roll_raw(0.0f), 0);
     assert_sint_equal(xf_carrier_roll_raw(-11.3213f), -1132); /* appendix 1 */
     assert_sint_equal(xf_carrier_roll_raw(190.0f), -17000);
@@ -86,7 +86,7 @@ static void test_carrier_pitch(void **state)
 static void test_carrier_yaw(void **state)
 {
     (void)state;
-    /* 0.01 deg, wrapped into [0, 360) (spec §3: [0, 36000)) */
+    /* 0.01 deg, wrapped into [0, 360) (docs/protocol.md §3: [0, 36000)) */
     assert_int_equal(xf_carrier_yaw_raw(240.0f), 24000); /* appendix 1 */
     assert_int_equal(xf_carrier_yaw_raw(-10.0f), 35000);
     assert_int_equal(xf_carrier_yaw_raw(359.999f), 0);
@@ -102,7 +102,7 @@ static void test_carrier_yaw(void **state)
 static void test_accel_velocity(void **state)
 {
     (void)state;
-    /* 0.01 m/s^2 and 0.01 m/s (spec §9.1), clamped to S16 */
+    /* 0.01 m/s^2 and 0.01 m/s (docs/protocol.md §9.1), clamped to S16 */
     assert_sint_equal(xf_accel_raw(1.123f), 112); /* appendix 1 */
     assert_sint_equal(xf_accel_raw(-1.123f), -112);
     assert_sint_equal(xf_accel_raw(327.67f), 32767);
@@ -182,7 +182,7 @@ static void test_gcu_units(void **state)
     assert_near(xf_cdeg(24000), 240.0, EPS);
     assert_near(xf_cdeg(-1132), -11.32, EPS);
 
-    /* rates: 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 (spec §10) */
+    /* rates: 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 (docs/protocol.md §10) */
     assert_near(xf_gcu_rate_dps(100, XF_PROTOCOL_V1), 1.0, EPS);
     assert_near(xf_gcu_rate_dps(100, XF_PROTOCOL_V2), 10.0, EPS);
     assert_near(xf_gcu_rate_dps(-5, XF_PROTOCOL_V2), -0.5, EPS);
@@ -223,7 +223,7 @@ static void test_gcu_units(void **state)
 static void test_zoom_to_rate(void **state)
 {
     (void)state;
-    /* ZZ = -(rate x 10), rate clamped to [1.0, 3276.8] (spec §7) */
+    /* ZZ = -(rate x 10), rate clamped to [1.0, 3276.8] (docs/protocol.md §7) */
     assert_sint_equal(xf_zoom_to_rate_raw(5.5f), -55);
     assert_sint_equal(xf_zoom_to_rate_raw(1.0f), -10);
     assert_sint_equal(xf_zoom_to_rate_raw(15.0f), -150);
@@ -356,7 +356,7 @@ static void test_gnss_extreme_inputs(void **state)
     assert_err(xf_unix_ms_to_gnss(INT64_MIN, 18, &wk, &ms), XF_ERR_RANGE);
 }
 
-/* ---- camera axes (vendor appendix 3, spec §8) ------------------------------ */
+/* ---- camera axes (vendor appendix 3, docs/protocol.md §8) ------------------------------ */
 
 static void test_axes_to_euler(void **state)
 {

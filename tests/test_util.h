@@ -2,7 +2,7 @@
  * test_util.h - helpers shared by the xfgcu unit tests.
  *
  * Everything here is written from the protocol description
- * (shared/spec/gcu-protocol.md), not from the codec: a bit-by-bit CRC, a
+ * (docs/protocol.md), not from the codec: a bit-by-bit CRC, a
  * little-endian writer and a packet finisher, so that expected bytes never
  * come from the code under test. Also a seeded PRNG (xorshift64*) so that
  * every "random" test is reproducible, and a few assertion helpers that
@@ -119,7 +119,7 @@ static inline void rng_fill(test_rng *r, uint8_t *p, size_t n)
 
 /* ---- reference implementations, from the spec ---------------------------- */
 
-/* CRC-16/XMODEM bit by bit: poly 0x1021, init 0, MSB first, no final XOR (spec §2). */
+/* CRC-16/XMODEM bit by bit: poly 0x1021, init 0, MSB first, no final XOR (docs/protocol.md §2). */
 static inline uint16_t ref_crc16(const uint8_t *p, size_t n)
 {
     uint32_t crc = 0;
@@ -185,7 +185,7 @@ static inline int64_t le_get_signed(const uint8_t *p, size_t n)
 }
 
 /* Make buf[0 .. len) a well-formed packet of direction @p dir: header bytes,
- * length field (LE) and the CRC of bytes 0 .. len-3, big-endian (spec §2).
+ * length field (LE) and the CRC of bytes 0 .. len-3, big-endian (docs/protocol.md §2).
  * The caller fills the rest (version, frames, order, params). */
 static inline void ref_finish_packet(uint8_t *buf, size_t len, xf_direction dir)
 {
@@ -198,7 +198,7 @@ static inline void ref_finish_packet(uint8_t *buf, size_t len, xf_direction dir)
     buf[len - 1u] = (uint8_t)(crc & 0xFFu);
 }
 
-/* The vendor's appendix-1 host packet, exactly as printed (spec §9.1). */
+/* The vendor's appendix-1 host packet, exactly as printed (docs/protocol.md §9.1). */
 static const uint8_t appendix1_packet[72] = {
     0xA8, 0xE5, 0x48, 0x00, 0x01, 0x00, 0x00, 0x64, 0x00, 0x9C, 0xFF, 0x05, 0x94, 0xFB, 0x65, 0x00, 0xC0, 0x5D,
     0x70, 0x00, 0x90, 0xFF, 0x70, 0x00, 0x40, 0x80, 0xC0, 0xF7, 0x40, 0x80, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00,

@@ -1,6 +1,7 @@
-/*
- * xf_client.h - the host side of the protocol: the 30-50 Hz question-and-
- * answer loop, carrier data, control, commands, telemetry, link health.
+/**
+ * @file
+ * @brief The host side of the protocol: the 30-50 Hz question-and-answer
+ * loop, carrier data, control, commands, telemetry, link health.
  *
  * Portable C over xf_hal: no OS, no heap, no threads, no globals. The
  * application owns the xf_client storage and drives it by calling
@@ -32,6 +33,22 @@
  *
  * Rate watchdog: rates not refreshed for rate_watchdog_ms are replaced by
  * zero rates, so a stalled application never leaves a gimbal spinning.
+ *
+ * Blocking: no client function waits. xf_client_step() takes as long as the
+ * link's read and write (xf_hal; a POSIX serial or TCP write waits at most
+ * 100 ms for a full driver buffer); every other function only updates the
+ * client's memory.
+ *
+ * Callbacks (xf_client_config) run on the thread that steps the client, from
+ * inside xf_client_step() (and on_result also from inside
+ * xf_client_cancel_all()). A callback may read the client's state and may
+ * call xf_client_submit(), xf_client_cancel_all(),
+ * xf_client_external_track(), xf_client_external_track_stop() and the
+ * xf_client_set_*() inputs; it may step or drive other clients. It must not
+ * call xf_client_step() (or xf_posix_poll()) on its own client: a step is
+ * not re-entrant, and a nested one would read and parse new bytes in the
+ * middle of the outer step's parse. Pointers a callback receives are valid
+ * during the call only.
  */
 #ifndef XF_CLIENT_H
 #define XF_CLIENT_H
@@ -48,31 +65,21 @@
 
 XF_BEGIN_DECLS
 
-#ifndef XF_CLIENT_QUEUE
-#define XF_CLIENT_QUEUE 8 /**< commands waiting to run, per client */
-#endif
-#ifndef XF_CLIENT_RESULTS
-#define XF_CLIENT_RESULTS 8 /**< finished commands kept for polling by id */
-#endif
-#if XF_CLIENT_QUEUE < 1 || XF_CLIENT_QUEUE > 64 || XF_CLIENT_RESULTS < 1 || XF_CLIENT_RESULTS > 64
-#error "XF_CLIENT_QUEUE and XF_CLIENT_RESULTS must be in [1, 64]"
-#endif
-
 /** Link health. */
 typedef enum xf_link_state {
     XF_LINK_DOWN =
         0, /**< no valid reply for down_ms (or never), or the transport was closed and no valid reply came since */
     XF_LINK_STALE = 1, /**< no valid reply for stale_ms */
-    XF_LINK_UP = 2
+    XF_LINK_UP = 2     /**< a valid reply within the last stale_ms */
 } xf_link_state;
 
-/** Where a command is. */
+/** Where a command is (xf_client_command_status(), xf_cmd_result.status). */
 typedef enum xf_cmd_status {
     XF_CMD_UNKNOWN = 0,   /**< no such id (never submitted, or forgotten) */
     XF_CMD_QUEUED = 1,    /**< waiting behind other commands */
     XF_CMD_SENDING = 2,   /**< in every packet, no execution state yet */
     XF_CMD_OPERATING = 3, /**< the GCU said "operating" (calibration); final state to come */
-    XF_CMD_OK = 4,
+    XF_CMD_OK = 4,        /**< the GCU said success */
     XF_CMD_FAILED = 5,    /**< the GCU said failure; see failed_cameras */
     XF_CMD_TIMEOUT = 6,   /**< no execution state within the timeout */
     XF_CMD_LINK_LOST = 7, /**< the link went down before it finished */
@@ -81,8 +88,8 @@ typedef enum xf_cmd_status {
 
 /** A command's outcome (or progress, for XF_CMD_OPERATING). */
 typedef struct xf_cmd_result {
-    uint32_t id;
-    uint8_t order;
+    uint32_t id;            /**< the id xf_client_submit() gave it */
+    uint8_t order;          /**< its order (::xf_order) */
     uint8_t status;         /**< xf_cmd_status */
     uint8_t state;          /**< the GCU's state byte, when it sent one */
     uint8_t failed_cameras; /**< for orders that report a mask */
@@ -92,9 +99,10 @@ typedef struct xf_cmd_result {
 
 /**
  * The gimbal's state as the GCU sent it: the wire's integers under the
- * spec's names (xf_gcu_main, xf_gcu_sub), 64 bytes rather than a copy of
- * every packet in floats. Physical units on read: xf_telemetry_convert()
- * for all of them at once, or xf_units.h's function named at each member.
+ * spec's names (xf_gcu_main, xf_gcu_sub), kept compact rather than as a
+ * copy of every packet in floats (its size: docs/performance.md). Physical
+ * units on read: xf_telemetry_convert() for all of them at once, or
+ * xf_units.h's function named at each member.
  */
 typedef struct xf_telemetry {
     /* main frame: in every reply, received at xf_health.last_rx_ms */
@@ -103,40 +111,58 @@ typedef struct xf_telemetry {
     uint8_t gimbal_mode; /**< xf_mode */
     uint16_t pod_status; /**< XF_POD_* */
     int16_t cam_roll;    /**< 0.01 deg, absolute (xf_cdeg) */
-    int16_t cam_pitch;
-    uint16_t cam_yaw;    /**< [0, 36000) */
+    int16_t cam_pitch;   /**< 0.01 deg, absolute (xf_cdeg) */
+    uint16_t cam_yaw;    /**< 0.01 deg, absolute, [0, 36000) (xf_cdeg) */
     int16_t rel_angle_x; /**< 0.01 deg relative to the carrier (xf_cdeg) */
-    int16_t rel_angle_y;
-    int16_t rel_angle_z;
-    int16_t rate_x; /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 (xf_gcu_rate_dps(raw, version)) */
-    int16_t rate_y;
-    int16_t rate_z;
-    int16_t target_offset_x, target_offset_y; /**< [-1000, 1000] */
+    int16_t rel_angle_y; /**< 0.01 deg relative to the carrier (xf_cdeg) */
+    int16_t rel_angle_z; /**< 0.01 deg relative to the carrier (xf_cdeg) */
+    int16_t rate_x;      /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 (xf_gcu_rate_dps(raw, version)) */
+    int16_t rate_y;      /**< as rate_x */
+    int16_t rate_z;      /**< as rate_x */
+    /** @var xf_telemetry::target_offset_x
+     *  horizontal target offset, [-1000, 1000], right positive */
+    int16_t target_offset_x, target_offset_y; /**< vertical target offset, [-1000, 1000], down positive */
     /* sub frame (sub_header 0x01): kept from the last one received */
     uint8_t have_sub; /**< 0 until the first sub frame */
-    uint8_t hw_version, fw_version;
-    uint8_t gimbal_code;    /**< xf_gimbal_model() */
-    uint8_t thermal_status; /**< V0.2: XF_THERMAL_* */
-    int8_t time_zone;       /**< V0.2 */
-    uint16_t error_code;    /**< V0.2: XF_ERROR_* */
-    uint16_t camera_status; /**< V0.2: XF_CAMERA_* */
-    uint16_t zoom_cam1;     /**< 0.1 x (xf_zoom_x) */
-    uint16_t zoom_cam2;
-    int32_t target_distance;  /**< 0.1 m; <= 0: no valid measurement (xf_distance_m) */
-    int32_t target_longitude; /**< 1e-7 deg (xf_deg7) */
-    int32_t target_latitude;
-    int32_t target_altitude; /**< mm */
-    uint32_t sub_ms;         /**< when the last sub frame arrived (xf_client_step's clock) */
+    /** @var xf_telemetry::hw_version
+     *  hardware version */
+    uint8_t hw_version, fw_version; /**< firmware version */
+    uint8_t gimbal_code;            /**< xf_gimbal_model() */
+    uint8_t thermal_status;         /**< V0.2: XF_THERMAL_* */
+    int8_t time_zone;               /**< V0.2: hours from UTC */
+    uint16_t error_code;            /**< V0.2: XF_ERROR_* */
+    uint16_t camera_status;         /**< V0.2: XF_CAMERA_* */
+    uint16_t zoom_cam1;             /**< camera 1's zoom, 0.1 x (xf_zoom_x) */
+    uint16_t zoom_cam2;             /**< camera 2's zoom, 0.1 x (xf_zoom_x) */
+    int32_t target_distance;        /**< 0.1 m; <= 0: no valid measurement (xf_distance_m) */
+    int32_t target_longitude;       /**< target longitude, 1e-7 deg (xf_deg7) */
+    int32_t target_latitude;        /**< target latitude, 1e-7 deg (xf_deg7) */
+    int32_t target_altitude;        /**< target altitude, mm */
+    uint32_t sub_ms;                /**< when the last sub frame arrived (xf_client_step's clock) */
 } xf_telemetry;
 
 /** The telemetry's quantities in physical units (xf_telemetry_convert). */
 typedef struct xf_telemetry_units {
-    float cam_roll_deg, cam_pitch_deg, cam_yaw_deg;
-    float rel_x_deg, rel_y_deg, rel_z_deg;
-    float rate_x_dps, rate_y_dps, rate_z_dps; /**< unit of the wire picked by the version */
-    float zoom_cam1, zoom_cam2;               /**< x */
-    float target_distance_m;                  /**< 0 when distance_valid is 0 */
-    uint8_t distance_valid;
+    /** @var xf_telemetry_units::cam_roll_deg
+     *  camera's absolute roll, deg */
+    /** @var xf_telemetry_units::cam_pitch_deg
+     *  camera's absolute pitch, deg */
+    float cam_roll_deg, cam_pitch_deg, cam_yaw_deg; /**< camera's absolute yaw, deg, [0, 360) */
+    /** @var xf_telemetry_units::rel_x_deg
+     *  camera's X-axis angle relative to the carrier, deg */
+    /** @var xf_telemetry_units::rel_y_deg
+     *  camera's Y-axis angle relative to the carrier, deg */
+    float rel_x_deg, rel_y_deg, rel_z_deg; /**< camera's Z-axis angle relative to the carrier, deg */
+    /** @var xf_telemetry_units::rate_x_dps
+     *  angular velocity about X, deg/s (the wire unit picked by the version) */
+    /** @var xf_telemetry_units::rate_y_dps
+     *  angular velocity about Y, deg/s */
+    float rate_x_dps, rate_y_dps, rate_z_dps; /**< angular velocity about Z, deg/s */
+    /** @var xf_telemetry_units::zoom_cam1
+     *  camera 1's zoom, x */
+    float zoom_cam1, zoom_cam2; /**< camera 2's zoom, x */
+    float target_distance_m;    /**< 0 when distance_valid is 0 */
+    uint8_t distance_valid;     /**< 1 when target_distance_m holds a valid measurement, else 0 */
 } xf_telemetry_units;
 
 /** Link health figures. The receive parser's counters: xf_client_parser_stats(). */
@@ -144,20 +170,32 @@ typedef struct xf_health {
     uint8_t link;             /**< xf_link_state */
     uint8_t watchdog_active;  /**< zero rates are being sent because rates went stale */
     uint8_t transport_closed; /**< the transport said the link is closed (a backend may be restoring it) */
-    uint16_t reply_rate_hz;   /**< replies in the last full second */
+    uint16_t reply_rate_hz;   /**< replies in the last full second (window of at least 1 s) */
     uint32_t last_rx_ms;      /**< when the last valid reply arrived */
-    uint32_t packets_sent;
+    uint32_t packets_sent;    /**< packets the link accepted */
     uint32_t replies;         /**< valid GCU packets received */
     uint32_t replies_missing; /**< packets of the last full second that got no reply */
     uint32_t send_errors;     /**< HAL writes that failed */
-    uint32_t watchdog_trips;
+    uint32_t watchdog_trips;  /**< times the rate watchdog started sending zero rates */
 } xf_health;
 
 /** Carrier state; gravity excluded from the accelerations. */
 typedef struct xf_carrier {
-    float roll_deg, pitch_deg, yaw_deg;      /**< absolute Euler angles (vendor appendix 2 frame) */
-    float accel_north, accel_east, accel_up; /**< m/s^2, 0 when static or in steady flight */
-    float vel_north, vel_east, vel_up;       /**< m/s */
+    /** @var xf_carrier::roll_deg
+     *  absolute roll, deg (vendor appendix 2 frame; wrapped into [-180, 180)) */
+    /** @var xf_carrier::pitch_deg
+     *  absolute pitch, deg (clamped to [-90, 90]) */
+    float roll_deg, pitch_deg, yaw_deg; /**< absolute yaw, deg (wrapped into [0, 360)) */
+    /** @var xf_carrier::accel_north
+     *  m/s^2, north positive; 0 when static or in steady flight */
+    /** @var xf_carrier::accel_east
+     *  m/s^2, east positive */
+    float accel_north, accel_east, accel_up; /**< m/s^2, up positive, gravity excluded */
+    /** @var xf_carrier::vel_north
+     *  m/s, north positive */
+    /** @var xf_carrier::vel_east
+     *  m/s, east positive */
+    float vel_north, vel_east, vel_up; /**< m/s, up positive */
 } xf_carrier;
 
 /**
@@ -166,50 +204,95 @@ typedef struct xf_carrier {
  * degrees and metres: xf_deg7_raw(), xf_mm_raw()).
  */
 typedef struct xf_gnss {
-    int32_t latitude_e7, longitude_e7; /**< 1e-7 deg */
-    int32_t altitude_mm;
-    uint8_t satellites;
-    int16_t week;
-    uint32_t ms_of_week;
-    int32_t relative_height_mm; /**< 0 when not needed */
+    /** @var xf_gnss::latitude_e7
+     *  latitude, 1e-7 deg */
+    int32_t latitude_e7, longitude_e7; /**< longitude, 1e-7 deg */
+    int32_t altitude_mm;               /**< altitude, mm */
+    uint8_t satellites;                /**< satellites in use */
+    int16_t week;                      /**< GNSS week number */
+    uint32_t ms_of_week;               /**< GNSS milliseconds of week (xf_unix_ms_to_gnss()) */
+    int32_t relative_height_mm;        /**< 0 when not needed */
 } xf_gnss;
 
+/**
+ * A command reached its final status, exactly once per submitted command
+ * (and, for calibration, once more earlier with ::XF_CMD_OPERATING). Runs
+ * inside xf_client_step(), or inside xf_client_cancel_all() for
+ * ::XF_CMD_CANCELLED; what it may call: see xf_client.h. A command submitted
+ * from here while the client is finishing every queued command (link lost,
+ * xf_client_cancel_all()) is finished in the same sweep with the same status
+ * and reported again: never resubmit unconditionally on ::XF_CMD_LINK_LOST
+ * or ::XF_CMD_CANCELLED, or the sweep never ends.
+ * @param user    xf_client_config.user
+ * @param result  the result, valid during the call only (final results are
+ *   also kept for xf_client_command_status())
+ */
 typedef void (*xf_on_result_fn)(void *user, const xf_cmd_result *result);
+/**
+ * A valid reply arrived and the telemetry was updated: once per reply,
+ * after that reply's on_link and on_result. Runs inside xf_client_step();
+ * what it may call: see xf_client.h.
+ * @param user       xf_client_config.user
+ * @param telemetry  the client's telemetry (as xf_client_telemetry() gives
+ *   it); it changes with the next reply
+ */
 typedef void (*xf_on_telemetry_fn)(void *user, const xf_telemetry *telemetry);
+/**
+ * The link state changed. On ::XF_LINK_DOWN every queued and running
+ * command has already been finished with ::XF_CMD_LINK_LOST. Runs inside
+ * xf_client_step(); what it may call: see xf_client.h.
+ * @param user   xf_client_config.user
+ * @param state  the new state
+ */
 typedef void (*xf_on_link_fn)(void *user, xf_link_state state);
-/** Every packet sent and received, raw (for tracing and recording). */
+/**
+ * Every packet sent and received, raw (for tracing and recording): each
+ * packet the link accepted (::XF_DIR_HOST), and each valid GCU packet
+ * received (::XF_DIR_GCU), before the client processes it. Bytes that belong
+ * to no valid packet are not reported (xf_tap.h reports the raw stream).
+ * Runs inside xf_client_step(); what it may call: see xf_client.h.
+ * @param user    xf_client_config.user
+ * @param dir     ::XF_DIR_HOST (sent) or ::XF_DIR_GCU (received)
+ * @param data    the packet, valid during the call only
+ * @param len     its length in bytes
+ * @param now_ms  the time given to xf_client_step()
+ */
 typedef void (*xf_on_bytes_fn)(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
 
 /**
  * Limits: the ages and link times are uint16_t, up to 65535 ms (a minute
  * is far longer than a 30-50 Hz link can stay silent and still be useful);
  * the two command timeouts are uint32_t. xf_client_init refuses values
- * that cannot work (XF_ERR_RANGE).
+ * that cannot work (XF_ERR_RANGE). Start from xf_client_config_init(),
+ * then change what you need.
  */
 typedef struct xf_client_config {
-    xf_on_result_fn on_result;
-    xf_on_telemetry_fn on_telemetry;
-    xf_on_link_fn on_link;
-    xf_on_bytes_fn on_bytes;
-    void *user;
-    uint32_t command_timeout_ms;   /**< no execution state within this: timeout; >= 1, default 1000 */
-    uint32_t operating_timeout_ms; /**< after "operating", the final state within this; >= 1, default 60000 */
-    uint16_t rate_hz;              /**< packets per second, 1..200; default 50 (30-50 recommended) */
-    uint16_t carrier_max_age_ms;   /**< default 200 */
-    uint16_t gnss_max_age_ms;      /**< default 2000 */
-    uint16_t stale_ms;             /**< >= 1, default 250 */
-    uint16_t down_ms;              /**< > stale_ms, default 1000 */
-    uint16_t rate_watchdog_ms;     /**< default 500; 0 = off (not recommended) */
-    uint8_t protocol_version;      /**< sent in byte 4; >= 1, default 1 */
+    xf_on_result_fn on_result;       /**< command results; NULL: none (poll xf_client_command_status()) */
+    xf_on_telemetry_fn on_telemetry; /**< telemetry after each reply; NULL: none */
+    xf_on_link_fn on_link;           /**< link state changes; NULL: none */
+    xf_on_bytes_fn on_bytes;         /**< every packet sent and received; NULL: none */
+    void *user;                      /**< passed to every callback */
+    uint32_t command_timeout_ms;     /**< no execution state within this: timeout; >= 1, default 1000 */
+    uint32_t operating_timeout_ms;   /**< after "operating", the final state within this; >= 1, default 60000 */
+    uint16_t rate_hz;                /**< packets per second, 1..200; default 50 (30-50 recommended) */
+    uint16_t carrier_max_age_ms; /**< carrier data older than this is not sent (zeros, ins_valid clear); default 200 */
+    uint16_t gnss_max_age_ms;    /**< GNSS data older than this is not sent (sub frame all zero); default 2000 */
+    uint16_t stale_ms;           /**< no valid reply for this long: ::XF_LINK_STALE; >= 1, default 250 */
+    uint16_t down_ms;            /**< no valid reply for this long: ::XF_LINK_DOWN; > stale_ms, default 1000 */
+    uint16_t rate_watchdog_ms;   /**< rates older than this become zero rates; default 500; 0 = off (not recommended) */
+    uint8_t protocol_version;    /**< sent in byte 4, and the version commands are checked for; >= 1, default 1 */
 } xf_client_config;
 
-/* A command as it goes on the wire: checked and encoded once, at submit.
- * Its id is not kept: ids are handed out in queue order (xf_client.c's
- * xf__queued_id), which saves 4 bytes a slot. */
+/**
+ * Internal (a member of xf_client): a queued command as it goes on the
+ * wire, checked and encoded once, at submit. Its id is not kept: ids are
+ * handed out in queue order (xf_client.c's xf__queued_id), which saves RAM
+ * per slot (docs/performance.md).
+ */
 typedef struct xf_cmd_slot {
-    uint8_t order;
-    uint8_t params_len;
-    uint8_t params[XF_PARAMS_KNOWN_MAX];
+    uint8_t order;                       /**< the order byte */
+    uint8_t params_len;                  /**< parameter bytes used */
+    uint8_t params[XF_PARAMS_KNOWN_MAX]; /**< the encoded parameters */
 } xf_cmd_slot;
 
 /* Carrier state as it goes on the wire, in the wire's order (host bytes
@@ -220,77 +303,203 @@ typedef struct xf_cmd_slot {
 
 /** Client state: treat the members as private; use the functions. */
 typedef struct xf_client {
-    xf_client_config cfg;
-    xf_hal hal;
-    xf_parser parser;
-    xf_telemetry tele;
-    xf_health health;
+    xf_client_config cfg; /**< private: the configuration (a copy) */
+    xf_hal hal;           /**< private: the link (a copy) */
+    xf_parser parser;     /**< private: parser of the GCU's replies */
+    xf_telemetry tele;    /**< private: xf_client_telemetry() */
+    xf_health health;     /**< private: xf_client_health() */
     /* inputs; times on xf_client_step's clock */
-    xf_gnss gnss;
-    uint32_t gnss_ms, carrier_ms, ctrl_ms;
-    float ctrl[3]; /* roll, pitch, yaw: deg/s or deg as ctrl_kind says */
-    uint16_t carrier[XF__CARRIER_WORDS];
-    uint8_t have_carrier, have_gnss;
-    uint8_t ctrl_kind; /* 0 none, 1 rates, 2 angles */
+    xf_gnss gnss; /**< private: the last GNSS data */
+    /** @var xf_client::gnss_ms
+     *  private: when the GNSS data was set */
+    /** @var xf_client::carrier_ms
+     *  private: when the carrier state was set */
+    uint32_t gnss_ms, carrier_ms, ctrl_ms; /**< private: when the control quantities were set */
+    float ctrl[3];                         /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
+    uint16_t carrier[XF__CARRIER_WORDS];   /**< private: carrier state as it goes on the wire */
+    /** @var xf_client::have_carrier
+     *  private: carrier state was set */
+    uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
+    uint8_t ctrl_kind;               /**< private: 0 none, 1 rates, 2 angles */
     /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
-    uint8_t stream_on;
-    uint8_t stream[6];
+    uint8_t stream_on; /**< private: the external-track stream is on */
+    uint8_t stream[6]; /**< private: the stream's encoded parameters */
     /* commands */
-    xf_cmd_slot queue[XF_CLIENT_QUEUE];
-    uint8_t q_head, q_count;
-    uint8_t active;      /* queue[q_head] is being sent */
-    uint8_t operating;   /* ... and the GCU said "operating" */
-    uint8_t guard_order; /* order of the last finished command (or of the stopped stream) */
-    uint8_t guard_open;  /* no reply of another order seen since: a command of guard_order waits */
-    uint8_t nulls_owed;  /* null packets to send before the next command */
-    uint8_t r_next;      /* results[r_next] is overwritten next */
-    uint32_t started_ms, operating_ms;
-    uint32_t next_id; /* the id the next submitted command gets; never 0 */
-    xf_cmd_result results[XF_CLIENT_RESULTS];
+    xf_cmd_slot queue[XF_CLIENT_QUEUE]; /**< private: commands queued or running, a ring */
+    /** @var xf_client::q_head
+     *  private: index of the oldest queued command */
+    uint8_t q_head, q_count; /**< private: commands in the queue */
+    uint8_t active;          /**< private: queue[q_head] is being sent */
+    uint8_t operating;       /**< private: ... and the GCU said "operating" */
+    uint8_t guard_order;     /**< private: order of the last finished command (or of the stopped stream) */
+    uint8_t guard_open;      /**< private: no reply of another order seen since: a command of guard_order waits */
+    uint8_t nulls_owed;      /**< private: null packets to send before the next command */
+    uint8_t r_next;          /**< private: results[r_next] is overwritten next */
+    /** @var xf_client::started_ms
+     *  private: when the running command was first sent */
+    uint32_t started_ms, operating_ms;        /**< private: when the GCU said "operating" */
+    uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
+    xf_cmd_result results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
     /* timing */
-    uint32_t now_ms;
-    uint32_t next_send_ms;
-    uint32_t window_start_ms;
-    uint16_t window_sent, window_replies; /* in the window: at most a second's worth (replies saturate) */
-    uint16_t period_ms;
-    uint16_t packets; /* packets that carried the running command */
-    uint8_t started;
-    uint8_t awaiting;        /* the last packet sent has had no reply yet */
-    uint8_t window_awaiting; /* the same, when the window started */
+    uint32_t now_ms;          /**< private: the time of the current step */
+    uint32_t next_send_ms;    /**< private: when the next packet is due */
+    uint32_t window_start_ms; /**< private: start of the current one-second window */
+    /** @var xf_client::window_sent
+     *  private: packets sent in the window */
+    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
+    uint16_t period_ms;                   /**< private: ms between packets */
+    uint16_t packets;                     /**< private: packets that carried the running command */
+    uint8_t started;                      /**< private: the first step has run */
+    uint8_t awaiting;                     /**< private: the last packet sent has had no reply yet */
+    uint8_t window_awaiting;              /**< private: the same, when the window started */
 } xf_client;
 
-/** Defaults, as documented in xf_client_config. */
+/**
+ * Fill @p cfg with the defaults documented at each member of
+ * xf_client_config (no callbacks, 50 Hz, protocol version 1). Does nothing
+ * for a NULL @p cfg.
+ * @param cfg  the configuration to fill
+ */
 void xf_client_config_init(xf_client_config *cfg);
 
 /**
  * Start a client on @p hal (copied). @p cfg NULL means defaults.
+ *
+ * A macro over xf_client_init_checked(), which also checks that the caller
+ * and the library were built with the same layout options (xf_config.h).
+ * No I/O: the first xf_client_step() sends the first packet. Never blocks.
+ * On error @p c is left alone.
+ * @param c    the client's storage
+ * @param hal  the link (copied; what its ctx points to must outlive the client)
+ * @param cfg  the configuration (copied), or NULL for xf_client_config_init()'s defaults
  * @return XF_OK, XF_WARN_RATE (accepted; rate outside 30-50 Hz),
  *   XF_ERR_ARG (NULL, incomplete hal), XF_ERR_RANGE (rate 0 or > 200,
- *   version 0, stale_ms 0, down_ms <= stale_ms, a command timeout 0).
+ *   version 0, stale_ms 0, down_ms <= stale_ms, a command timeout 0),
+ *   ::XF_ERR_CONFIG (built with other layout options than the library).
  */
-xf_err xf_client_init(xf_client *c, const xf_hal *hal, const xf_client_config *cfg);
+#define xf_client_init(c, hal, cfg) xf_client_init_checked((c), (hal), (cfg), XF_OPTIONS_CHECK, sizeof(xf_client))
+
+/**
+ * What xf_client_init() calls, with the caller's build options: use the
+ * macro. A foreign-function interface calls this directly with the values
+ * of the library it loads (xf_options_word(), xf_client_size()).
+ * @param c        as for xf_client_init()
+ * @param hal      as for xf_client_init()
+ * @param cfg      as for xf_client_init()
+ * @param options  the caller's ::XF_OPTIONS_WORD
+ * @param size     the caller's sizeof(xf_client)
+ * @return what xf_client_init() returns, or ::XF_ERR_CONFIG when @p options
+ *   or @p size differ from the library's (nothing is written to @p c).
+ */
+xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
+                              size_t size);
+
+/**
+ * sizeof(xf_client) in the library (for a foreign-function interface).
+ * @return the size in bytes
+ */
+size_t xf_client_size(void);
+
+/**
+ * ::XF_OPTIONS_WORD of the library (for a foreign-function interface).
+ * @return the option word the library was built with
+ */
+unsigned long xf_options_word(void);
 
 /**
  * Do what is due at @p now_ms: read and parse what arrived, update
  * telemetry and health, resolve commands, send the next packet when due.
  * Callbacks run from here. Returns XF_OK, or the transport's error of this
  * step (XF_ERR_CLOSED while the link is down; the client keeps going).
+ *
+ * One step reads the link up to 16 times (fewer when it runs dry), handles
+ * every valid reply, updates the link state, times commands out, and sends
+ * at most one packet: a step that comes late sends one packet, not a burst
+ * to catch up. Never waits itself, but takes as long as the link's read and
+ * write (a POSIX serial or TCP write waits at most 100 ms for a full driver
+ * buffer). Not re-entrant: never call it from one of the client's
+ * callbacks.
+ * @param c       the client
+ * @param now_ms  the time, ms, on a wrapping clock the application keeps
+ *   (xf_posix_now_ms() on POSIX); the same clock for every call and input
+ * @return ::XF_OK; ::XF_ERR_ARG (NULL @p c); or the link's error of this
+ *   step: a read error (::XF_ERR_CLOSED, ::XF_ERR_IO: reading stops for
+ *   this step, the packet due is still sent) takes precedence over a write
+ *   error (::XF_ERR_AGAIN, ::XF_ERR_CLOSED, ::XF_ERR_IO: counted in
+ *   xf_health.send_errors; that packet is not sent again, the next goes at
+ *   the next period)
  */
 xf_err xf_client_step(xf_client *c, uint32_t now_ms);
 
-/** When the next packet is due (for a poll timeout). */
+/**
+ * When the next packet is due, on xf_client_step()'s clock: the time to
+ * step the client next (for a poll timeout), unless its link becomes
+ * readable first.
+ * @param c  the client
+ * @return the time, ms; 0 for a NULL @p c and before the first step (due at
+ *   once)
+ */
 uint32_t xf_client_next_deadline(const xf_client *c);
 
 /* ---- inputs ------------------------------------------------------------------ */
 
+/**
+ * The carrier's latest state, converted at once to the wire's units
+ * (roll and yaw wrapped, pitch clamped; xf_carrier). Packets carry it with
+ * ins_valid set while it is at most carrier_max_age_ms old, and zeros with
+ * ins_valid clear after that: never invented. Does nothing for a NULL
+ * @p c or @p carrier.
+ * @param c        the client
+ * @param carrier  the state (copied)
+ * @param now_ms   when it was measured, on xf_client_step()'s clock
+ */
 void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now_ms);
+/**
+ * The latest GNSS data. Packets carry it in the sub frame while it is at
+ * most gnss_max_age_ms old; after that the sub frame is all zero. Does
+ * nothing for a NULL @p c or @p gnss.
+ * @param c       the client
+ * @param gnss    the data (copied)
+ * @param now_ms  when it was measured, on xf_client_step()'s clock
+ */
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
-/** Desired angular velocities (deg/s), scaled by the zoom the GCU reports. Subject to the watchdog. */
+/**
+ * Desired angular velocities (deg/s), scaled by the zoom the GCU reports. Subject to the watchdog.
+ *
+ * Sent with ctrl_valid in every packet from now on, each converted with
+ * xf_ctrl_rate_raw() using camera 1's zoom from the telemetry (1 until a
+ * sub frame arrived), clamped to [-1500, 1500] raw. When they are older
+ * than rate_watchdog_ms, zero rates are sent instead (still valid, so the
+ * gimbal holds still) and xf_health.watchdog_active is set until the next
+ * call. Which axes a mode reads: docs/protocol.md §11. Replaces any angles.
+ * Does nothing for a NULL @p c.
+ * @param c          the client
+ * @param roll_dps   roll rate, deg/s
+ * @param pitch_dps  pitch rate, deg/s
+ * @param yaw_dps    yaw rate, deg/s
+ * @param now_ms     the time, on xf_client_step()'s clock (starts the watchdog)
+ */
 void xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms);
-/** Desired angles (deg): Euler or relative to the carrier, as the mode says. Roll and yaw are wrapped into [-180, 180),
- * pitch is clamped to [-180, 180]. */
+/**
+ * Desired angles (deg): Euler or relative to the carrier, as the mode says. Roll and yaw are wrapped into [-180, 180),
+ * pitch is clamped to [-180, 180].
+ *
+ * Sent with ctrl_valid in every packet from now on, until replaced; not
+ * subject to the rate watchdog. Replaces any rates. Which axes a mode reads:
+ * docs/protocol.md §11. Does nothing for a NULL @p c.
+ * @param c          the client
+ * @param roll_deg   roll, deg
+ * @param pitch_deg  pitch, deg
+ * @param yaw_deg    yaw, deg
+ * @param now_ms     the time, on xf_client_step()'s clock
+ */
 void xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms);
-/** No control quantities (ctrl_valid clear). */
+/**
+ * No control quantities: packets carry zeros with ctrl_valid clear (the
+ * gimbal holds; needed during neutral, track and click-to-aim,
+ * docs/protocol.md §11). Does nothing for a NULL @p c.
+ * @param c  the client
+ */
 void xf_client_clear_control(xf_client *c);
 
 /* ---- commands ---------------------------------------------------------------- */
@@ -298,41 +507,139 @@ void xf_client_clear_control(xf_client *c);
 /**
  * Queue @p cmd (checked against the protocol version). *id (may be NULL)
  * identifies it for xf_client_command_status and the result callback.
- * @return XF_OK, XF_ERR_ARG, XF_ERR_RANGE / XF_ERR_UNSUPPORTED (from
- *   xf_command_check; *bad_field names the member), XF_ERR_BUSY (queue full).
+ *
+ * The command is checked and encoded now, for cfg.protocol_version, and
+ * runs when the commands before it have finished: it is sent in every
+ * packet until a reply carries its execution state, then a null packet
+ * follows. A command of the same order as the last one waits until a reply
+ * of another order has come back (see xf_client.h). Its result comes once,
+ * through on_result and xf_client_command_status(). ::XF_ORDER_NULL is
+ * accepted, but a GCU whose null replies carry no execution state (72-byte
+ * replies, as V0.2 documents) never answers it: it ends in ::XF_CMD_TIMEOUT.
+ * Never blocks; may be called from the client's callbacks.
+ * @param c          the client
+ * @param cmd        the command (copied)
+ * @param id         receives the command's id, never 0 (may be NULL)
+ * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p c or @p cmd), ::XF_ERR_RANGE /
+ *   ::XF_ERR_UNSUPPORTED (from xf_command_check(); *bad_field names the
+ *   member), ::XF_ERR_BUSY (queue full: ::XF_CLIENT_QUEUE commands)
  */
 xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const char **bad_field);
 
-/** Status of command @p id; *result (may be NULL) gets its result once finished. */
+/**
+ * Status of command @p id; *result (may be NULL) gets its result once finished.
+ * @param c       the client
+ * @param id      the id xf_client_submit() gave
+ * @param result  receives the result when the command has finished and is
+ *   still among the last ::XF_CLIENT_RESULTS finished (may be NULL); left
+ *   alone otherwise
+ * @return ::XF_CMD_QUEUED, ::XF_CMD_SENDING or ::XF_CMD_OPERATING while it
+ *   runs; its final status once finished; ::XF_CMD_UNKNOWN for id 0, a NULL
+ *   @p c, an id never given, or a result already overwritten by newer ones
+ */
 xf_cmd_status xf_client_command_status(const xf_client *c, uint32_t id, xf_cmd_result *result);
 
-/** Commands queued or running. */
+/**
+ * Commands queued or running.
+ * @param c  the client
+ * @return their number, 0..::XF_CLIENT_QUEUE; 0 for a NULL @p c
+ */
 size_t xf_client_pending(const xf_client *c);
 
-/** Drop every queued command (XF_CMD_CANCELLED); the one running is cancelled too. */
+/**
+ * Drop every queued command (XF_CMD_CANCELLED); the one running is cancelled too.
+ *
+ * Each is reported to on_result from inside this call, and kept for
+ * xf_client_command_status(). A running command may already have reached
+ * the GCU and be executed all the same; the next packet is a null. The
+ * external-track stream is not stopped (xf_client_external_track_stop()).
+ * Does nothing for a NULL @p c.
+ * @param c  the client
+ */
 void xf_client_cancel_all(xf_client *c);
 
 /**
  * External track is streamed, not run once: while on, every packet that
  * carries no other command carries order 0x1B with these offsets.
  * xf_client_external_track_stop() sends the exit (value 0) as a command.
+ *
+ * Starts the stream or updates its offsets (value 2: start / keep
+ * tracking), checked as a command would be. The stream's replies are not
+ * reported. Never blocks; may be called from the client's callbacks.
+ * @param c        the client
+ * @param cameras  camera mask (KK), not 0
+ * @param dx       target offset from the screen centre, [-1024, 1024]
+ * @param dy       target offset from the screen centre, [-1024, 1024];
+ *   dx and dy both >= 3071 say the target is lost
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p c), ::XF_ERR_RANGE (a value out of
+ *   range: refused, and a running stream keeps its previous offsets)
  */
 xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16_t dy);
+/**
+ * Stop the external-track stream and queue its exit (value 0, the stream's
+ * cameras; camera 1 when no stream was on) as a command, whose result comes
+ * like any command's. The exit starts only once a reply of another order
+ * has come back, so that a late reply to the stream is not taken for its
+ * own. Never blocks.
+ * @param c   the client
+ * @param id  receives the exit command's id (may be NULL)
+ * @return as xf_client_submit(): ::XF_OK, ::XF_ERR_ARG (NULL @p c),
+ *   ::XF_ERR_BUSY (queue full: the stream is stopped all the same, but no
+ *   exit is queued; call again)
+ */
 xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id);
 
 /* ---- state ------------------------------------------------------------------- */
 
+/**
+ * The gimbal's state as the GCU last reported it.
+ * @param c  the client
+ * @return the client's own telemetry (valid as long as the client, updated
+ *   by each step: have_main and have_sub say what has arrived), or NULL for
+ *   a NULL @p c
+ */
 const xf_telemetry *xf_client_telemetry(const xf_client *c);
 /**
  * @p t in physical units (computed on read: the client keeps the wire's
- * integers). @return XF_OK, XF_ERR_ARG (NULL).
+ * integers).
+ * @param t  the telemetry (xf_client_telemetry())
+ * @param u  receives the quantities in physical units
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p t or @p u)
  */
 xf_err xf_telemetry_convert(const xf_telemetry *t, xf_telemetry_units *u);
+/**
+ * The link's health.
+ * @param c  the client
+ * @return the client's own figures (valid as long as the client, updated by
+ *   each step), or NULL for a NULL @p c
+ */
 const xf_health *xf_client_health(const xf_client *c);
-/** The receive parser's counters (frames, CRC and length errors, bytes skipped); NULL if @p c is NULL. */
+/**
+ * The receive parser's counters (frames, CRC and length errors, bytes skipped); NULL if @p c is NULL.
+ * @param c  the client
+ * @return the counters (valid as long as the client), or NULL
+ */
 const xf_parser_stats *xf_client_parser_stats(const xf_client *c);
+/**
+ * The link state as of the last step (the same as xf_health.link).
+ * @param c  the client
+ * @return the state; ::XF_LINK_DOWN for a NULL @p c
+ */
 xf_link_state xf_client_link(const xf_client *c);
+/**
+ * Name of a link state, for messages.
+ * @param s  the state
+ * @return "up", "stale" or "down" (any other value: "down"); static
+ */
 const char *xf_link_state_name(xf_link_state s);
+/**
+ * Name of a command status, for messages.
+ * @param s  the status
+ * @return "queued", "sending", "operating", "ok", "failed", "timeout",
+ *   "link lost", "cancelled", or "unknown" (::XF_CMD_UNKNOWN and any other
+ *   value); static
+ */
 const char *xf_cmd_status_name(xf_cmd_status s);
 
 XF_END_DECLS

@@ -1,15 +1,21 @@
-/*
- * xf_command.h - typed parameters of every order (V0.1 and V0.2) and the
- * GCU's feedback.
+/**
+ * @file
+ * @brief Typed parameters of every order (V0.1 and V0.2) and the GCU's
+ * feedback.
  *
  * One plain struct, xf_command, holds the parameters of any order under
  * named members; each order uses the members its row of the table below
  * lists, in wire order. A table (xf_order_info) drives the byte layout, so
  * encoding, decoding, the CLI and JSON share one description; the table
- * also gives each order's TT range, and xf__field_ok() the rule of each
- * member (union ranges, box corners). Unknown orders go through the raw escape hatch:
- * set xf_host_packet.order / params / params_len yourself.
+ * also gives each order's TT range, and the checks the rule of each
+ * member (union ranges, box corners; see xf_command_check()). Unknown orders
+ * go through the raw escape hatch: set xf_host_packet.order / params /
+ * params_len yourself. The orders and their ranges: docs/protocol.md §7, §10.
  *
+ * The functions keep no state, never allocate and never block; the strings
+ * they return are static.
+ *
+ * @code{.unparsed}
  *  order            wire parameters (members)
  *  null .. euler    none (also gaze_lock, fpv)
  *  gaze_geo         longitude S32, latitude S32, altitude S32
@@ -25,6 +31,7 @@
  *  area_temp        cameras, value, x0, y0, x1, y1 U16
  *  temp_alarm, isotherm    cameras, value, temp_high S16, temp_low S16
  *  spot_temp        cameras, value, x0, y0 U16
+ * @endcode
  */
 #ifndef XF_COMMAND_H
 #define XF_COMMAND_H
@@ -42,38 +49,44 @@ XF_BEGIN_DECLS
 
 /** The parameters of one order. Members an order does not use are ignored on encode and zero after decode. */
 typedef struct xf_command {
-    uint8_t order;     /**< xf_order */
-    uint8_t cameras;   /**< KK: camera mask, bit n = camera n+1; never 0 */
-    uint8_t value;     /**< TT: action, mode, level or on/off, per order */
-    int8_t hours;      /**< time_zone: hours from UTC, [-12, 14] */
-    uint16_t x0, y0;   /**< box top-left, or the point, on the [0, 10000] grid */
-    uint16_t x1, y1;   /**< box bottom-right */
-    int16_t dx, dy;    /**< external_track offsets, [-1024, 1024], both >= 3071: lost */
+    uint8_t order;   /**< ::xf_order (the table row says which members it uses) */
+    uint8_t cameras; /**< KK: camera mask, bit n = camera n+1; never 0 */
+    uint8_t value;   /**< TT: action, mode, level or on/off, per order */
+    int8_t hours;    /**< time_zone: hours from UTC, [-12, 14] */
+    /** @var xf_command::x0
+     *  box left edge, or the point x, on the [0, 10000] grid (x right) */
+    uint16_t x0, y0; /**< box top edge, or the point y, on the [0, 10000] grid (y down) */
+    /** @var xf_command::x1
+     *  box right edge, [x0, 10000] */
+    uint16_t x1, y1; /**< box bottom edge, [y0, 10000] */
+    /** @var xf_command::dx
+     *  external_track offset from the screen centre, [-1024, 1024]; both dx and dy >= 3071: target lost */
+    int16_t dx, dy;    /**< external_track offset from the screen centre, [-1024, 1024] (see dx) */
     int16_t zoom;      /**< zoom_to: [-32768, -10] = -(rate x 10); [1, 10000] = fraction of the range */
-    int16_t temp_high; /**< temp_alarm / isotherm, 0.1 degC */
-    int16_t temp_low;
+    int16_t temp_high; /**< temp_alarm / isotherm high limit, 0.1 degC */
+    int16_t temp_low;  /**< temp_alarm / isotherm low limit, 0.1 degC; <= temp_high when on */
     int32_t longitude; /**< gaze_geo, 1e-7 deg */
-    int32_t latitude;
-    int32_t altitude; /**< gaze_geo, mm */
+    int32_t latitude;  /**< gaze_geo, 1e-7 deg */
+    int32_t altitude;  /**< gaze_geo, mm */
 } xf_command;
 
-/** The members of xf_command, as items of an order's wire layout. */
+/** The members of xf_command, as items of an order's wire layout (xf_order_info.fields). */
 typedef enum xf_field {
-    XF_F_CAMERAS,
-    XF_F_VALUE,
-    XF_F_HOURS,
-    XF_F_X0,
-    XF_F_Y0,
-    XF_F_X1,
-    XF_F_Y1,
-    XF_F_DX,
-    XF_F_DY,
-    XF_F_ZOOM,
-    XF_F_TEMP_HIGH,
-    XF_F_TEMP_LOW,
-    XF_F_LONGITUDE,
-    XF_F_LATITUDE,
-    XF_F_ALTITUDE
+    XF_F_CAMERAS,   /**< xf_command.cameras, U8 */
+    XF_F_VALUE,     /**< xf_command.value, U8 */
+    XF_F_HOURS,     /**< xf_command.hours, S8 */
+    XF_F_X0,        /**< xf_command.x0, U16 */
+    XF_F_Y0,        /**< xf_command.y0, U16 */
+    XF_F_X1,        /**< xf_command.x1, U16 */
+    XF_F_Y1,        /**< xf_command.y1, U16 */
+    XF_F_DX,        /**< xf_command.dx, S16 */
+    XF_F_DY,        /**< xf_command.dy, S16 */
+    XF_F_ZOOM,      /**< xf_command.zoom, S16 */
+    XF_F_TEMP_HIGH, /**< xf_command.temp_high, S16 */
+    XF_F_TEMP_LOW,  /**< xf_command.temp_low, S16 */
+    XF_F_LONGITUDE, /**< xf_command.longitude, S32 */
+    XF_F_LATITUDE,  /**< xf_command.latitude, S32 */
+    XF_F_ALTITUDE   /**< xf_command.altitude, S32 */
 } xf_field;
 
 #define XF_ORDER_MASK_FAILURE 0x01u /**< failure feedback is the mask of failed cameras (NN) */
@@ -82,70 +95,170 @@ typedef enum xf_field {
 #define XF_ORDER_SETS_MODE    0x08u /**< switches the gimbal mode */
 
 /**
- * One row of the order table. Its canonical name is xf_order_name(order):
- * the names are kept apart, so that a firmware that never asks for one
- * does not carry them (11 bytes a row, no pointer).
+ * One row of the order table (xf_order_lookup(), xf_order_at()). Its
+ * canonical name is xf_order_name(order): the names are kept apart, so that
+ * a firmware that never asks for one does not carry them (a row holds no
+ * pointer; sizes in docs/performance.md).
  */
 typedef struct xf_order_info {
-    uint8_t order;
+    uint8_t order;           /**< the order (::xf_order) */
     uint8_t since;           /**< protocol version that introduced it: 1 or 2 */
-    uint8_t flags;           /**< XF_ORDER_* */
+    uint8_t flags;           /**< `XF_ORDER_*` flags (::XF_ORDER_MASK_FAILURE, ...) */
     uint8_t default_cameras; /**< the spec's KK default, 0 when the order takes no mask */
-    uint8_t nfields;
-    uint8_t fields[6]; /**< xf_field, in wire order */
+    uint8_t nfields;         /**< number of parameter members, 0..6 */
+    uint8_t fields[6];       /**< ::xf_field values, in wire order (the first nfields are used) */
 } xf_order_info;
 
-/** The table row of @p order, or NULL for an order the protocol does not define. */
+/**
+ * The table row of an order.
+ * @param order  the order byte
+ * @return the row (in a static table), or NULL for an order the protocol
+ *   does not define
+ */
 XF_API const xf_order_info *xf_order_lookup(uint8_t order);
-/** The i-th row (i < XF_ORDER_COUNT), NULL past the end: to list every order. */
+/**
+ * The i-th row of the order table, to list every order (rows are sorted by
+ * order value).
+ * @param i  index, 0 .. ::XF_ORDER_COUNT - 1
+ * @return the row, or NULL when @p i >= ::XF_ORDER_COUNT
+ */
 XF_API const xf_order_info *xf_order_at(size_t i);
-/** Canonical name of @p order (e.g. "zoom_to"), or NULL if unknown. */
+/**
+ * Canonical name of an order, as docs/protocol.md §7 and §10 give it.
+ * @param order  the order byte
+ * @return a static string such as "zoom_to", or NULL for an unknown order
+ */
 XF_API const char *xf_order_name(uint8_t order);
-/** Look an order up by canonical name; '-' and '_' are the same. XF_ERR_RANGE if unknown. */
+/**
+ * Look an order up by canonical name; '-' and '_' are the same
+ * ("zoom-to" finds zoom_to), letters must be lower case.
+ * @param name   the name
+ * @param order  receives the order byte; left alone on error
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p name or @p order), ::XF_ERR_RANGE
+ *   (no order has that name)
+ */
 XF_API xf_err xf_order_from_name(const char *name, uint8_t *order);
-/** Name of a gimbal_mode, or NULL. */
+/**
+ * Name of a gimbal mode (GCU byte 5).
+ * @param mode  the mode byte (::xf_mode)
+ * @return a static string such as "head_lock", or NULL for an unknown mode
+ */
 XF_API const char *xf_mode_name(uint8_t mode);
-/** Name of a member of xf_command (as used in error reports). */
+/**
+ * Name of a member of xf_command, as used in error reports (the strings
+ * `bad_field` receives).
+ * @param f  the member
+ * @return a static string such as "x0"; "?" for a value outside ::xf_field
+ */
 XF_API const char *xf_field_name(xf_field f);
-/** Wire size of a member: 1, 2 or 4. */
+/**
+ * Wire size of a member.
+ * @param f  the member
+ * @return 1, 2 or 4 bytes (2 for a value outside ::xf_field)
+ */
 XF_API size_t xf_field_size(xf_field f);
-/** Parameter bytes of a known order; 0 for unknown orders. */
+/**
+ * Parameter bytes of an order on the wire.
+ * @param order  the order byte
+ * @return the number of bytes (0 for orders without parameters, and for
+ *   unknown orders)
+ */
 XF_API size_t xf_order_params_len(uint8_t order);
 
-/** Zero @p cmd and set its order and the spec's default camera mask. */
+/**
+ * Zero @p cmd and set its order and the spec's default camera mask
+ * (xf_order_info.default_cameras; 0 for an order without a mask or an
+ * unknown order). Does nothing for a NULL @p cmd.
+ * @param cmd    the command
+ * @param order  the order byte (::xf_order)
+ */
 XF_API void xf_command_init(xf_command *cmd, uint8_t order);
 
-/** Read a member as a 32-bit integer / set it (saturating to the member's type). */
+/**
+ * Read a member as a 32-bit integer (for generic code: the CLI, JSON).
+ * @param cmd  the command
+ * @param f    the member
+ * @return the member's value; 0 for a NULL @p cmd or a value outside ::xf_field
+ */
 XF_API int32_t xf_command_get(const xf_command *cmd, xf_field f);
+/**
+ * Set a member from a 32-bit integer, saturating to the member's type
+ * (300 into a uint8_t member gives 255). No range check of the order: that
+ * is xf_command_check()'s. Does nothing for a NULL @p cmd or a value outside
+ * ::xf_field.
+ * @param cmd  the command
+ * @param f    the member
+ * @param v    the value
+ */
 XF_API void xf_command_set(xf_command *cmd, xf_field f, int32_t v);
 
 /**
  * Check @p cmd's members against the ranges of its order for protocol
- * @p version. On XF_ERR_RANGE, *bad_field (if not NULL) names the member.
- * @return XF_OK, XF_ERR_ARG, XF_ERR_UNSUPPORTED (unknown order), XF_ERR_RANGE.
+ * @p version (docs/protocol.md §7, §10): cameras not 0, TT within the
+ * order's range for the version (V0.2's for any version >= 2), hours in
+ * [-12, 14], box corners on the [0, 10000] grid with x1 >= x0 and y1 >= y0,
+ * external_track offsets in [-1024, 1024] unless both are >= 3071 (lost),
+ * zoom in [-32768, -10] or [1, 10000], temp_low <= temp_high when the order
+ * turns the function on. One-byte members are checked first, then the others
+ * in wire order; the first that fails is reported. An order newer than
+ * @p version (xf_order_info.since) is not refused.
+ * @param cmd        the command
+ * @param version    protocol version the command is for (::XF_PROTOCOL_V1, ::XF_PROTOCOL_V2)
+ * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name (a
+ *   static string, as xf_field_name() gives); untouched otherwise; may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd), ::XF_ERR_UNSUPPORTED (an order
+ *   the protocol does not define), ::XF_ERR_RANGE
  */
 XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const char **bad_field);
 
 /**
- * Encode @p cmd's parameters (checked first) into @p params.
- * @return as xf_command_check, plus XF_ERR_NO_SPACE.
+ * Encode @p cmd's parameters, checked first as by xf_command_check(), into
+ * their wire bytes. Nothing is written on error.
+ * @param cmd        the command
+ * @param version    protocol version the command is for
+ * @param params     where the parameter bytes go; may be NULL for an order
+ *   without parameters
+ * @param cap        capacity of @p params, in bytes
+ * @param out_len    receives the number of bytes written (may be NULL)
+ * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd, or NULL @p params for an order
+ *   with parameters), ::XF_ERR_UNSUPPORTED, ::XF_ERR_RANGE,
+ *   ::XF_ERR_NO_SPACE (@p cap < xf_order_params_len())
  */
 XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap, size_t *out_len,
                                 const char **bad_field);
 
 /**
- * Decode the @p len parameter bytes of @p order into @p cmd and check them.
- * @return XF_OK, XF_ERR_ARG, XF_ERR_UNSUPPORTED (unknown order: use the raw
- *   bytes), XF_ERR_PARAMS (wrong length), XF_ERR_RANGE (*bad_field named).
+ * Decode the @p len parameter bytes of @p order into @p cmd and check them
+ * as xf_command_check() does. @p cmd is written only on success.
+ * @param order      the order byte (byte 69)
+ * @param params     the parameter bytes (byte 70 on); may be NULL when @p len is 0
+ * @param len        number of parameter bytes
+ * @param version    protocol version of the packet, for the ranges
+ * @param cmd        receives the command
+ * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd, or NULL @p params with
+ *   @p len > 0), ::XF_ERR_UNSUPPORTED (unknown order: use the raw bytes),
+ *   ::XF_ERR_PARAMS (@p len is not the order's parameter length),
+ *   ::XF_ERR_RANGE
  */
 XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version, xf_command *cmd,
                                 const char **bad_field);
 
-/** Put @p cmd into a host packet (order and params) using the packet's version. */
+/**
+ * Put @p cmd into a host packet (order, params and params_len), checked and
+ * encoded for the packet's version. The packet is left alone on error.
+ * @param pkt        the packet (its version must be set)
+ * @param cmd        the command
+ * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p pkt or @p cmd), ::XF_ERR_UNSUPPORTED,
+ *   ::XF_ERR_RANGE
+ */
 XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, const char **bad_field);
 
 /* ---- feedback ------------------------------------------------------------ */
 
+/** What the GCU's execution state byte says (xf_feedback.result). */
 typedef enum xf_result {
     XF_RESULT_OK = 0,       /**< success (0x00) */
     XF_RESULT_FAILED = 1,   /**< failure: 0x01, or the failed-camera mask NN */
@@ -164,12 +277,29 @@ typedef struct xf_feedback {
 /**
  * Decode the feedback bytes of a GCU packet (xf_gcu_packet.params). Zero
  * bytes means "no execution state" (the null order's reply, or a reply that
- * does not answer yet); bytes after the first are ignored.
+ * does not answer yet); bytes after the first are ignored. 0x00 is success;
+ * 0x02 is "operating" for calibration only; anything else is a failure, and
+ * for the orders that report one (::XF_ORDER_MASK_FAILURE) the byte is the
+ * mask of the cameras that failed.
+ * @param order  the order answered (byte 69)
+ * @param fb     the feedback bytes; may be NULL when @p len is 0
+ * @param len    number of feedback bytes
+ * @param out    receives the decoded feedback
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p out, or NULL @p fb with @p len > 0)
  */
 XF_API xf_err xf_feedback_decode(uint8_t order, const uint8_t *fb, size_t len, xf_feedback *out);
 
-/** The state byte a GCU sends for @p result (GCU side: the simulator). XF_RESULT_OPERATING is for
- *  calibration only: for a camera-mask order 0x02 would read back as "camera 2 failed". */
+/**
+ * The state byte a GCU sends for @p result (GCU side: the simulator).
+ * ::XF_RESULT_OPERATING is for calibration only: for a camera-mask order 0x02
+ * would read back as "camera 2 failed".
+ * @param order           the order answered
+ * @param result          the outcome
+ * @param failed_cameras  for a failure of an order that reports a camera
+ *   mask, the cameras that failed (0: a plain failure)
+ * @return 0x00 for success, 0x02 for operating, @p failed_cameras for a
+ *   failure with a mask, 0x01 for any other failure
+ */
 XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed_cameras);
 
 #if XF_EMIT_DEFINITIONS
@@ -417,7 +547,7 @@ XF_API void xf_command_set(xf_command *cmd, xf_field f, int32_t v)
 }
 
 /*
- * The ranges of gcu-protocol.md sections 7 and 10, field by field along the
+ * The ranges of docs/protocol.md sections 7 and 10, field by field along the
  * order's layout (a table row says which members an order has, and its TT
  * range): one-byte members first (cameras, value, hours), then the rest,
  * the order in which the rules name a bad member.

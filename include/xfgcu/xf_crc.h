@@ -1,10 +1,12 @@
-/*
- * xf_crc.h - CRC-16/XMODEM (poly 0x1021, init 0, no reflection, no final
+/**
+ * @file
+ * @brief CRC-16/XMODEM (poly 0x1021, init 0, no reflection, no final
  * XOR), the protocol's checksum, stored big-endian at the end of a packet.
  *
- * Default: the vendor's 16-entry nibble table (64 bytes of flash).
- * XF_CRC_TABLE_256=1: a 256-entry byte table (1 KB, twice as fast).
- * Check value: xf_crc16("123456789", 9) == 0x31C3.
+ * Default: the vendor's 16-entry nibble table. ::XF_CRC_TABLE_256 = 1: a
+ * 256-entry byte table, faster and larger (sizes and speeds:
+ * docs/performance.md). Check value: xf_crc16("123456789", 9) == 0x31C3.
+ * The functions keep no state and never block. See docs/protocol.md §2.
  */
 #ifndef XF_CRC_H
 #define XF_CRC_H
@@ -15,10 +17,22 @@
 
 XF_BEGIN_DECLS
 
-/** Continue a CRC over @p len bytes; start with @p crc = 0. NULL with len 0 is allowed. */
+/**
+ * Continue a CRC over more bytes, so a CRC can be computed piece by piece.
+ * @param crc   the CRC of the bytes so far; 0 to start
+ * @param data  the next bytes; may be NULL when @p len is 0
+ * @param len   number of bytes at @p data
+ * @return the CRC of the bytes so far followed by @p data
+ */
 XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len);
 
-/** The CRC of @p len bytes. */
+/**
+ * The CRC-16/XMODEM of a block of bytes, as a packet carries it in its last
+ * two bytes (high byte first) over all the bytes before them.
+ * @param data  the bytes; may be NULL when @p len is 0
+ * @param len   number of bytes
+ * @return the CRC (0 for no bytes)
+ */
 XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
 
 /*
@@ -34,8 +48,8 @@ XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
  * prefix would need a product by x^(8(j-i)) for each length. Advancing N by
  * one byte b at stream position i (s = (i + 1) mod 16) is
  *     N = N * x^128 (only when s = 0),  N ^= b * x^(16 - 8s)
- * two lookups in xf__crc_norm_table (1 KB; one lookup in 8 KB with
- * XF_CRC_TABLE_256), and no chain through the CRC.
+ * two lookups in xf__crc_norm_table (one lookup in a larger table with
+ * XF_CRC_TABLE_256; sizes in docs/performance.md), and no chain through the CRC.
  * scripts/gen_crc_tables.py prints both tables; tests/test_crc.c checks them.
  */
 
@@ -44,11 +58,10 @@ XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
 /*
  * Both loops keep the CRC in the top half of a 32-bit word, with the table
  * entries pre-shifted to match: the next index is then simply the top bits
- * (no mask), and one shift both advances the CRC and drops what leaves it.
- * That is 4 instructions per step (a nibble, or a byte with the big table)
- * on x86 and 3 on a Cortex-M (EOR with a shifted operand), against 6 and 5
- * for the textbook 16-bit forms; the tables take twice the flash (64 and
- * 1024 bytes). Four bytes per iteration cut the loop overhead.
+ * (no mask), and one shift both advances the CRC and drops what leaves it:
+ * fewer instructions per step (a nibble, or a byte with the big table) than
+ * the textbook 16-bit forms, for tables twice as wide (instruction counts and
+ * sizes: docs/performance.md). Four bytes per iteration cut the loop overhead.
  */
 #if XF_CRC_TABLE_256
 static inline const uint32_t *xf__crc_table(void)
@@ -146,7 +159,7 @@ static inline uint16_t xf__crc_mul_tab(uint16_t a, const uint16_t mul[4][16])
 }
 
 /* a * x^(128k) mod G, k in 0..16. Only the parser's memo calls this; with
- * --gc-sections an image that never does keeps none of its 2 KB. */
+ * --gc-sections an image that never does keeps none of its table. */
 XF__HOT_INLINE uint16_t xf__crc_x128k(uint16_t a, unsigned k)
 {
     static const uint16_t m[17][4][16] = {
@@ -342,8 +355,8 @@ XF__HOT_INLINE uint16_t xf__crc_x128k(uint16_t a, unsigned k)
 }
 
 #if XF_CRC_TABLE_256
-/* norm + 256 s: b * x^(16 - 8s) mod G for every byte b (8 KB: the builds
- * that chose the big CRC table for speed get one lookup a byte here too). */
+/* norm + 256 s: b * x^(16 - 8s) mod G for every byte b (the builds that
+ * chose the big CRC table for speed get one lookup a byte here too). */
 static inline const uint16_t *xf__crc_norm_table(void)
 {
     static const uint16_t norm[16][256] = {

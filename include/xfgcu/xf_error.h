@@ -1,5 +1,6 @@
-/*
- * xf_error.h - the one error enum of xfgcu.
+/**
+ * @file
+ * @brief The one error enum of xfgcu, and xf_strerror().
  *
  * Zero is success, every error is negative, and a positive value is a
  * success with a warning. The code says who is at fault:
@@ -14,8 +15,13 @@
 
 XF_BEGIN_DECLS
 
+/**
+ * Result of every xfgcu function that can fail: ::XF_OK, a positive warning
+ * (the call succeeded), or a negative error. Which codes a function returns
+ * is listed in its documentation.
+ */
 typedef enum xf_err {
-    XF_OK = 0,
+    XF_OK = 0, /**< success */
     /* success with a warning (positive) */
     XF_WARN_RATE = 1, /**< accepted, but outside the 30-50 Hz the vendor recommends */
     /* the caller */
@@ -23,6 +29,7 @@ typedef enum xf_err {
     XF_ERR_NO_SPACE = -3,    /**< the output buffer is too small */
     XF_ERR_RANGE = -4,       /**< a value is outside its field's range; the field is named */
     XF_ERR_UNSUPPORTED = -5, /**< valid, but not supported by this build or link */
+    XF_ERR_CONFIG = -6,      /**< the library was built with other layout options than the caller (xf_config.h) */
     /* the bytes */
     XF_ERR_HEADER = -10,    /**< the two header bytes are wrong for the direction */
     XF_ERR_LENGTH = -11,    /**< the length field is outside [72, XF_PACKET_MAX_LEN] or disagrees with the data */
@@ -39,7 +46,13 @@ typedef enum xf_err {
     XF_ERR_AGAIN = -26       /**< nothing to do now; try again later */
 } xf_err;
 
-/** A short English description of @p err; never NULL, never allocated. */
+/**
+ * A short English description of a result code.
+ * @param err  an ::xf_err value (any int is accepted)
+ * @return a static string, never NULL and never allocated: "ok", a
+ *   description such as "bad CRC", or "unknown error" for a value that is not
+ *   an ::xf_err. Never blocks.
+ */
 XF_API const char *xf_strerror(int err);
 
 #if XF_EMIT_DEFINITIONS
@@ -52,6 +65,9 @@ XF_API const char *xf_strerror(int err)
     case XF_ERR_NO_SPACE: return "output buffer too small";
     case XF_ERR_RANGE: return "value out of range";
     case XF_ERR_UNSUPPORTED: return "not supported";
+    case XF_ERR_CONFIG:
+        return "library built with other options (XF_PACKET_MAX_LEN, XF_PARSER_MEMO, XF_CLIENT_QUEUE, "
+               "XF_CLIENT_RESULTS)";
     case XF_ERR_HEADER: return "bad header";
     case XF_ERR_LENGTH: return "bad length";
     case XF_ERR_CRC: return "bad CRC";

@@ -1,12 +1,14 @@
-/*
- * xf_hal.h - the transport interface the client runs on.
+/**
+ * @file
+ * @brief The transport interface the client runs on.
  *
  * A link is a struct of function pointers plus a context pointer, so the
  * same client code runs over a POSIX serial port, a socket, or an MCU's
  * UART driver written by the user. No OS type appears here.
  *
- * Semantics every backend keeps:
+ * Semantics every backend keeps (also given at each member of ::xf_hal):
  *
+ * @code{.unparsed}
  *  write(ctx, data, len)
  *      Hands one whole packet to the link in one go: a UART must see no idle
  *      gap inside a packet, a datagram link sends one datagram. Never blocks
@@ -30,6 +32,11 @@
  *      The descriptor to wait on for readability, or -1 while there is none
  *      (closed, reconnecting). It may change after XF_ERR_CLOSED, so ask
  *      again each time round the poll loop.
+ * @endcode
+ *
+ * A backend's functions are called from one thread only (the one that
+ * steps the client or simulator using it), never concurrently. The helpers
+ * below are header-only and never block.
  */
 #ifndef XF_HAL_H
 #define XF_HAL_H
@@ -41,24 +48,80 @@
 
 XF_BEGIN_DECLS
 
+/**
+ * A link: a context pointer and the functions that move bytes over it.
+ * write, read and now_ms are required (xf_hal_check()); fd is optional. The
+ * client and simulator copy the struct; the context it points to must
+ * outlive them. Implementations: xf_posix.h (serial, UDP, TCP, the
+ * simulator's ends), xf_tap.h (a wrapper), or your own.
+ */
 typedef struct xf_hal {
-    void *ctx;
+    void *ctx; /**< the backend's state, passed to every function below */
+    /**
+     * Hand one whole packet to the link in one go: a UART must see no idle
+     * gap inside a packet, a datagram link sends one datagram. Never blocks
+     * longer than it takes the driver to accept the bytes (bounded; each
+     * backend documents its bound).
+     * @param ctx   xf_hal.ctx
+     * @param data  the packet
+     * @param len   its length in bytes
+     * @return ::XF_OK (all bytes accepted), ::XF_ERR_AGAIN (not accepted now,
+     *   nothing was sent: try next cycle), ::XF_ERR_CLOSED (the link is
+     *   down; the backend may be restoring it), or ::XF_ERR_IO
+     */
     xf_err (*write)(void *ctx, const uint8_t *data, size_t len);
+    /**
+     * Copy what has arrived, up to @p cap bytes. Never blocks.
+     * @param ctx      xf_hal.ctx
+     * @param buf      where the bytes go
+     * @param cap      capacity of @p buf
+     * @param out_len  receives the number of bytes copied (0 = nothing now)
+     * @return ::XF_OK, ::XF_ERR_CLOSED (the link is down, *out_len = 0; keep
+     *   calling: a backend that reconnects does so here), or ::XF_ERR_IO
+     */
     xf_err (*read)(void *ctx, uint8_t *buf, size_t cap, size_t *out_len);
+    /**
+     * A monotonic millisecond clock. It wraps at 2^32: compare times with
+     * xf_ms_since(), never with < or >. xf_tap stamps its chunks with it;
+     * the client and simulator take the time from their step calls instead.
+     * @param ctx  xf_hal.ctx
+     * @return the time, ms
+     */
     uint32_t (*now_ms)(void *ctx);
+    /**
+     * Optional (POSIX only; NULL on an MCU): the descriptor to wait on for
+     * readability. It may change after ::XF_ERR_CLOSED, so ask again each
+     * time round the poll loop (xf_hal_fd()).
+     * @param ctx  xf_hal.ctx
+     * @return the descriptor, or -1 while there is none (closed, reconnecting)
+     */
     int (*fd)(void *ctx);
 } xf_hal;
 
-/** Milliseconds from @p then to @p now on a wrapping 32-bit clock (correct across the wrap). */
+/**
+ * Milliseconds from @p then to @p now on a wrapping 32-bit clock (correct
+ * across the wrap, as long as less than 2^32 ms lie between them).
+ * @param now   the later time, ms
+ * @param then  the earlier time, ms
+ * @return now - then, modulo 2^32
+ */
 static inline uint32_t xf_ms_since(uint32_t now, uint32_t then) { return (uint32_t)(now - then); }
 
-/** XF_OK if @p hal has the three required functions, else XF_ERR_ARG. */
+/**
+ * Whether a link has the three required functions (write, read, now_ms).
+ * @param hal  the link
+ * @return ::XF_OK, or ::XF_ERR_ARG (NULL @p hal, or a required function missing)
+ */
 static inline xf_err xf_hal_check(const xf_hal *hal)
 {
     return (hal != NULL && hal->write != NULL && hal->read != NULL && hal->now_ms != NULL) ? XF_OK : XF_ERR_ARG;
 }
 
-/** The descriptor to poll, or -1 (no fd function, or none now). */
+/**
+ * The descriptor to poll for the link's input.
+ * @param hal  the link (may be NULL)
+ * @return the descriptor, or -1 (NULL @p hal, no fd function, or none now)
+ */
 static inline int xf_hal_fd(const xf_hal *hal) { return (hal != NULL && hal->fd != NULL) ? hal->fd(hal->ctx) : -1; }
 
 XF_END_DECLS

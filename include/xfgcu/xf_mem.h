@@ -1,6 +1,11 @@
-/*
- * xf_mem.h - the three byte-block functions the codec and client use,
- * from <string.h> or, with XF_NO_LIBC, from small loops of our own.
+/**
+ * @file
+ * @brief The three byte-block functions the codec and client use, from
+ * `<string.h>` or, with ::XF_NO_LIBC, from small loops of our own.
+ *
+ * Each can be replaced by defining the macro before any xfgcu header (or in
+ * the `XF_CONFIG_HEADER`): an optimised or DMA copy, say. A replacement must
+ * have the standard function's signature and meaning.
  */
 #ifndef XF_MEM_H
 #define XF_MEM_H
@@ -50,12 +55,15 @@ static inline void *xf__memchr(const void *src, int v, size_t n)
 #endif
 #else
 #include <string.h>
+/** The memcpy the codec and client use: memcpy, or a loop of ours with ::XF_NO_LIBC; define it to use your own. */
 #ifndef XF_MEMCPY
 #define XF_MEMCPY memcpy
 #endif
+/** The memset the codec and client use: memset, or a loop of ours with ::XF_NO_LIBC; define it to use your own. */
 #ifndef XF_MEMSET
 #define XF_MEMSET memset
 #endif
+/** The memchr the parser uses: memchr, or a loop of ours with ::XF_NO_LIBC; define it to use your own. */
 #ifndef XF_MEMCHR
 #define XF_MEMCHR memchr
 #endif

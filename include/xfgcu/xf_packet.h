@@ -1,11 +1,15 @@
-/*
- * xf_packet.h - the four frames as typed structs, and packets packed and
- * unpacked field by field.
+/**
+ * @file
+ * @brief The four frames as typed structs, and packets packed and unpacked
+ * field by field.
  *
- * Member names are the canonical names of shared/spec/gcu-protocol.md; the
+ * Member names are the canonical names of docs/protocol.md (§2-§6); the
  * values are the raw wire integers (xf_units.h converts to physical units).
  * Reserved bytes are kept in `reserved_*` arrays so that unpack followed by
  * pack gives back the very same bytes.
+ *
+ * The functions keep no state, never allocate and never block. To decode a
+ * byte stream (serial, TCP) feed it to the parser (xf_parser.h) first.
  */
 #ifndef XF_PACKET_H
 #define XF_PACKET_H
@@ -23,67 +27,67 @@ XF_BEGIN_DECLS
 
 /** Host main frame, bytes 5-36. */
 typedef struct xf_host_main {
-    int16_t roll_ctrl; /**< control quantity; meaning set by the mode */
-    int16_t pitch_ctrl;
-    int16_t yaw_ctrl;
-    uint8_t status;        /**< XF_STATUS_INS_VALID | XF_STATUS_CTRL_VALID */
-    int16_t carrier_roll;  /**< 0.01 deg, [-18000, 18000) */
-    int16_t carrier_pitch; /**< 0.01 deg, [-9000, 9000] */
-    uint16_t carrier_yaw;  /**< 0.01 deg, [0, 36000) */
-    int16_t accel_north;   /**< 0.01 m/s^2, gravity excluded */
-    int16_t accel_east;
-    int16_t accel_up;
-    int16_t vel_north; /**< 0.01 m/s */
-    int16_t vel_east;
-    int16_t vel_up;
-    uint8_t sub_request;      /**< sub frame asked of the GCU (XF_SUB_HEADER) */
+    int16_t roll_ctrl;        /**< roll control quantity: rate or angle, per the mode (docs/protocol.md §11) */
+    int16_t pitch_ctrl;       /**< pitch control quantity */
+    int16_t yaw_ctrl;         /**< yaw control quantity */
+    uint8_t status;           /**< ::XF_STATUS_INS_VALID, ::XF_STATUS_CTRL_VALID; other bits 0 */
+    int16_t carrier_roll;     /**< carrier's absolute roll, 0.01 deg, [-18000, 18000) */
+    int16_t carrier_pitch;    /**< carrier's absolute pitch, 0.01 deg, [-9000, 9000] */
+    uint16_t carrier_yaw;     /**< carrier's absolute yaw, 0.01 deg, [0, 36000) */
+    int16_t accel_north;      /**< 0.01 m/s^2, north positive, gravity excluded */
+    int16_t accel_east;       /**< 0.01 m/s^2, east positive */
+    int16_t accel_up;         /**< 0.01 m/s^2, up positive */
+    int16_t vel_north;        /**< 0.01 m/s, north positive */
+    int16_t vel_east;         /**< 0.01 m/s, east positive */
+    int16_t vel_up;           /**< 0.01 m/s, up positive */
+    uint8_t sub_request;      /**< sub frame asked of the GCU (::XF_SUB_HEADER) */
     uint8_t reserved_main[6]; /**< bytes 31-36, 0 */
 } xf_host_main;
 
 /** Host sub frame, bytes 37-68. All zero when there is no sub frame data. */
 typedef struct xf_host_sub {
-    uint8_t sub_header; /**< XF_SUB_HEADER */
-    int32_t longitude;  /**< 1e-7 deg */
-    int32_t latitude;   /**< 1e-7 deg */
-    int32_t altitude;   /**< mm */
-    uint8_t satellites;
-    uint32_t gnss_ms; /**< GNSS milliseconds of week */
-    int16_t gnss_week;
-    int32_t relative_height; /**< mm */
+    uint8_t sub_header;      /**< ::XF_SUB_HEADER, or 0 with no sub frame data */
+    int32_t longitude;       /**< longitude, 1e-7 deg */
+    int32_t latitude;        /**< latitude, 1e-7 deg */
+    int32_t altitude;        /**< altitude, mm */
+    uint8_t satellites;      /**< satellites in use */
+    uint32_t gnss_ms;        /**< GNSS milliseconds of week */
+    int16_t gnss_week;       /**< GNSS week number */
+    int32_t relative_height; /**< height, mm; may be 0 when not needed */
     uint8_t reserved_sub[8]; /**< bytes 61-68, 0 */
 } xf_host_sub;
 
 /** GCU main frame, bytes 5-36. */
 typedef struct xf_gcu_main {
-    uint8_t gimbal_mode;     /**< xf_mode */
-    uint16_t pod_status;     /**< XF_POD_* bits */
-    int16_t target_offset_x; /**< [-1000, 1000], right positive */
-    int16_t target_offset_y; /**< [-1000, 1000], down positive */
-    int16_t rel_angle_x;     /**< 0.01 deg relative to the carrier */
-    int16_t rel_angle_y;
-    int16_t rel_angle_z;
-    int16_t cam_roll; /**< 0.01 deg */
-    int16_t cam_pitch;
-    uint16_t cam_yaw; /**< 0.01 deg, [0, 36000) */
-    int16_t rate_x;   /**< 0.01 deg/s in V0.1, 0.1 deg/s in V0.2 */
-    int16_t rate_y;
-    int16_t rate_z;
+    uint8_t gimbal_mode;      /**< ::xf_mode */
+    uint16_t pod_status;      /**< `XF_POD_*` bits */
+    int16_t target_offset_x;  /**< horizontal target offset, [-1000, 1000], right positive */
+    int16_t target_offset_y;  /**< vertical target offset, [-1000, 1000], down positive */
+    int16_t rel_angle_x;      /**< camera's X-axis angle relative to the carrier, 0.01 deg */
+    int16_t rel_angle_y;      /**< camera's Y-axis angle relative to the carrier, 0.01 deg */
+    int16_t rel_angle_z;      /**< camera's Z-axis angle relative to the carrier, 0.01 deg */
+    int16_t cam_roll;         /**< camera's absolute roll, 0.01 deg */
+    int16_t cam_pitch;        /**< camera's absolute pitch, 0.01 deg */
+    uint16_t cam_yaw;         /**< camera's absolute yaw, 0.01 deg, [0, 36000) */
+    int16_t rate_x;           /**< angular velocity about X: 0.01 deg/s (V0.1) or 0.1 deg/s (V0.2) */
+    int16_t rate_y;           /**< angular velocity about Y, unit as rate_x */
+    int16_t rate_z;           /**< angular velocity about Z, unit as rate_x */
     uint8_t reserved_main[7]; /**< bytes 30-36 */
 } xf_gcu_main;
 
 /** GCU sub frame, bytes 37-68. */
 typedef struct xf_gcu_sub {
-    uint8_t sub_header;
-    uint8_t hw_version;
-    uint8_t fw_version;
-    uint8_t gimbal_code;      /**< xf_gimbal_model() */
+    uint8_t sub_header;       /**< ::XF_SUB_HEADER, or 0 when the host asked for an unknown sub frame */
+    uint8_t hw_version;       /**< hardware version */
+    uint8_t fw_version;       /**< firmware version */
+    uint8_t gimbal_code;      /**< model code (xf_gimbal_model()) */
     uint16_t error_code;      /**< V0.2: XF_ERROR_* bits; reserved in V0.1 */
-    int32_t target_distance;  /**< 0.1 m; -10 or 0: no valid measurement */
-    int32_t target_longitude; /**< 1e-7 deg */
-    int32_t target_latitude;  /**< 1e-7 deg */
-    int32_t target_altitude;  /**< mm */
-    uint16_t zoom_cam1;       /**< 0.1 x */
-    uint16_t zoom_cam2;       /**< 0.1 x */
+    int32_t target_distance;  /**< laser range, 0.1 m; -10 or 0: no valid measurement */
+    int32_t target_longitude; /**< target longitude, 1e-7 deg */
+    int32_t target_latitude;  /**< target latitude, 1e-7 deg */
+    int32_t target_altitude;  /**< target altitude, mm */
+    uint16_t zoom_cam1;       /**< camera 1's zoom, 0.1 x */
+    uint16_t zoom_cam2;       /**< camera 2's zoom, 0.1 x */
     uint8_t thermal_status;   /**< V0.2, byte 63: XF_THERMAL_* (reserved in V0.1) */
     uint16_t camera_status;   /**< V0.2, bytes 64-65: XF_CAMERA_* (reserved in V0.1) */
     int8_t time_zone;         /**< V0.2, byte 66: hours from UTC (reserved in V0.1) */
@@ -92,58 +96,118 @@ typedef struct xf_gcu_sub {
 
 /** A host -> GCU packet. */
 typedef struct xf_host_packet {
-    uint8_t version; /**< byte 4: XF_PROTOCOL_V1 or XF_PROTOCOL_V2 */
-    xf_host_main main;
-    xf_host_sub sub;
-    uint8_t order;      /**< byte 69: xf_order, or any other value (raw) */
-    uint8_t params_len; /**< 0..XF_PARAMS_MAX */
-    uint8_t params[XF_PARAMS_MAX];
+    uint8_t version;               /**< byte 4: XF_PROTOCOL_V1 or XF_PROTOCOL_V2 */
+    xf_host_main main;             /**< main frame, bytes 5-36 */
+    xf_host_sub sub;               /**< sub frame, bytes 37-68 */
+    uint8_t order;                 /**< byte 69: xf_order, or any other value (raw) */
+    uint8_t params_len;            /**< parameter bytes used, 0..::XF_PARAMS_MAX */
+    uint8_t params[XF_PARAMS_MAX]; /**< parameter bytes, from byte 70 (xf_command_encode() fills them) */
 } xf_host_packet;
 
 /** A GCU -> host packet. `params` holds the feedback bytes. */
 typedef struct xf_gcu_packet {
-    uint8_t version;
-    xf_gcu_main main;
-    xf_gcu_sub sub;
-    uint8_t order;      /**< the order the feedback answers */
-    uint8_t params_len; /**< feedback bytes: 0 for the null order, 1 otherwise */
-    uint8_t params[XF_PARAMS_MAX];
+    uint8_t version;               /**< byte 4: the protocol version the GCU speaks */
+    xf_gcu_main main;              /**< main frame, bytes 5-36 */
+    xf_gcu_sub sub;                /**< sub frame, bytes 37-68 */
+    uint8_t order;                 /**< the order the feedback answers */
+    uint8_t params_len;            /**< feedback bytes: 0 for the null order, 1 otherwise */
+    uint8_t params[XF_PARAMS_MAX]; /**< feedback bytes, from byte 70 (xf_feedback_decode() reads them) */
 } xf_gcu_packet;
 
 /**
  * Check a whole packet in @p buf: header for @p dir, length field in
  * [72, XF_PACKET_MAX_LEN] and equal to @p len, CRC.
- * @return XF_OK, XF_ERR_ARG (NULL buf), XF_ERR_TRUNCATED (fewer bytes than
- *   the header and length need, or than the length field says),
- *   XF_ERR_HEADER, XF_ERR_LENGTH (field out of range, or more bytes than it
- *   says), XF_ERR_CRC.
+ * @param buf  the packet's bytes
+ * @param len  number of bytes at @p buf: the whole packet, nothing after it
+ * @param dir  the direction whose header is expected
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL buf, or @p dir not a direction),
+ *   ::XF_ERR_TRUNCATED (fewer bytes than the header and length need, or than
+ *   the length field says), ::XF_ERR_HEADER (not @p dir's header),
+ *   ::XF_ERR_LENGTH (field out of range, or more bytes than it says),
+ *   ::XF_ERR_CRC.
  */
 XF_API xf_err xf_packet_check(const uint8_t *buf, size_t len, xf_direction dir);
 
-/** The direction whose header starts @p buf; XF_ERR_HEADER if neither, XF_ERR_TRUNCATED if len < 2. */
+/**
+ * Which direction's header starts @p buf.
+ * @param buf  the bytes
+ * @param len  number of bytes at @p buf (only the first two are read)
+ * @param dir  receives ::XF_DIR_HOST or ::XF_DIR_GCU; left alone on error
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p buf or @p dir), ::XF_ERR_TRUNCATED
+ *   (@p len < 2), ::XF_ERR_HEADER (neither header)
+ */
 XF_API xf_err xf_packet_direction(const uint8_t *buf, size_t len, xf_direction *dir);
 
-/** Bytes a packet will take: 72 + params_len. */
+/**
+ * Bytes a host packet will take once packed: 72 + params_len.
+ * @param pkt  the packet (params_len is not checked against ::XF_PARAMS_MAX)
+ * @return the size in bytes, or 0 for a NULL @p pkt
+ */
 XF_API size_t xf_host_packet_size(const xf_host_packet *pkt);
+/**
+ * Bytes a GCU packet will take once packed: 72 + params_len.
+ * @param pkt  the packet (params_len is not checked against ::XF_PARAMS_MAX)
+ * @return the size in bytes, or 0 for a NULL @p pkt
+ */
 XF_API size_t xf_gcu_packet_size(const xf_gcu_packet *pkt);
 
 /**
- * Pack @p pkt into @p buf (capacity @p cap), CRC included; the length is
- * stored in @p out_len (may be NULL). Nothing is written on error.
- * @return XF_OK, XF_ERR_ARG, XF_ERR_RANGE (params_len > XF_PARAMS_MAX),
- *   XF_ERR_NO_SPACE (cap < the packet's size).
+ * Pack a host packet into bytes, header, length and CRC included. Every
+ * field is written as it is (no range check); nothing is written on error.
+ * @param pkt      the packet
+ * @param buf      where the bytes go
+ * @param cap      capacity of @p buf, in bytes
+ * @param out_len  receives the packet's length (may be NULL)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p pkt or @p buf), ::XF_ERR_RANGE
+ *   (params_len > ::XF_PARAMS_MAX), ::XF_ERR_NO_SPACE (@p cap < the packet's
+ *   size)
  */
 XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, size_t *out_len);
+/**
+ * Pack a GCU packet into bytes, as xf_host_pack() does for a host packet
+ * (the GCU's side: the simulator, tests).
+ * @param pkt      the packet
+ * @param buf      where the bytes go
+ * @param cap      capacity of @p buf, in bytes
+ * @param out_len  receives the packet's length (may be NULL)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p pkt or @p buf), ::XF_ERR_RANGE
+ *   (params_len > ::XF_PARAMS_MAX), ::XF_ERR_NO_SPACE (@p cap < the packet's
+ *   size)
+ */
 XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, size_t *out_len);
 
 /**
- * Check (as xf_packet_check) and decode one whole packet of @p len bytes.
- * @p pkt is written only on success.
+ * Check (as xf_packet_check()) and decode one whole host packet of @p len
+ * bytes. Any version byte is accepted and kept. @p pkt is written only on
+ * success.
+ * @param buf  the packet's bytes
+ * @param len  number of bytes: the whole packet, nothing after it
+ * @param pkt  receives the decoded packet
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p buf or @p pkt), or the errors of
+ *   xf_packet_check(): ::XF_ERR_TRUNCATED, ::XF_ERR_HEADER, ::XF_ERR_LENGTH,
+ *   ::XF_ERR_CRC
  */
 XF_API xf_err xf_host_unpack(const uint8_t *buf, size_t len, xf_host_packet *pkt);
+/**
+ * Check (as xf_packet_check()) and decode one whole GCU packet of @p len
+ * bytes. Any version byte is accepted and kept. @p pkt is written only on
+ * success. A frame the parser returned is decoded more cheaply by
+ * xf_frame_gcu().
+ * @param buf  the packet's bytes
+ * @param len  number of bytes: the whole packet, nothing after it
+ * @param pkt  receives the decoded packet
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p buf or @p pkt), or the errors of
+ *   xf_packet_check(): ::XF_ERR_TRUNCATED, ::XF_ERR_HEADER, ::XF_ERR_LENGTH,
+ *   ::XF_ERR_CRC
+ */
 XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt);
 
-/** Initialise a host packet: all zero, @p version, sub_request = XF_SUB_HEADER, null order. */
+/**
+ * Initialise a host packet: all zero, @p version, sub_request =
+ * ::XF_SUB_HEADER, null order (no parameters). Does nothing for a NULL @p pkt.
+ * @param pkt      the packet
+ * @param version  protocol version byte, ::XF_PROTOCOL_V1 or ::XF_PROTOCOL_V2
+ */
 XF_API void xf_host_packet_init(xf_host_packet *pkt, uint8_t version);
 
 /* Internal, shared by the packers and the client's packet writer: header,

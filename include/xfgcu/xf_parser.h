@@ -1,5 +1,6 @@
-/*
- * xf_parser.h - streaming parser: bytes in any chunking, whole frames out.
+/**
+ * @file
+ * @brief Streaming parser: bytes in any chunking, whole frames out.
  *
  * Caller-owned state, no allocation, no static data. Feed it whatever the
  * link delivered; it returns each complete frame whose header (for the
@@ -26,7 +27,12 @@
  * each candidate's bytes again.)
  *
  * Counters only ever increase (the application may zero them):
+ *
+ * @code{.unparsed}
  *     bytes_in = bytes of returned frames + bytes_skipped + xf_parser_pending()
+ * @endcode
+ *
+ * No function blocks. A parser is not thread-safe: use it from one thread.
  */
 #ifndef XF_PARSER_H
 #define XF_PARSER_H
@@ -42,8 +48,12 @@
 
 XF_BEGIN_DECLS
 
-/* Ring size: a power of two that holds the longest packet and one more
- * position (the memo keeps a value for the position after the last byte). */
+/**
+ * Bytes of the parser's ring: a power of two that holds the longest packet
+ * (::XF_PACKET_MAX_LEN) and one more position (the memo keeps a value for
+ * the position after the last byte). 256, or 128 when ::XF_PACKET_MAX_LEN is
+ * below 128.
+ */
 #if XF_PACKET_MAX_LEN >= 128
 #define XF_PARSER_RING 256u
 #else
@@ -66,37 +76,53 @@ typedef struct xf_parser_stats {
  * does not change its data meanwhile.
  */
 typedef struct xf_frame {
-    const uint8_t *data;
-    size_t len;
+    const uint8_t *data; /**< the frame's first byte (its header) */
+    size_t len;          /**< the frame's length in bytes, CRC included (its length field) */
 } xf_frame;
 
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
 #if XF_PARSER_MEMO
-    uint8_t ring[XF_PARSER_RING + 3]; /* the last 3: a copy of the first 3, so 4 bytes at any index are adjacent */
+    uint8_t ring[XF_PARSER_RING + 3]; /**< private: bytes held; the last 3 copy the first 3, so any 4 are adjacent */
 #else
-    uint8_t ring[XF_PARSER_RING];
+    uint8_t ring[XF_PARSER_RING]; /**< private: bytes held */
 #endif
 #if XF_PARSER_MEMO
-    uint16_t memo[XF_PARSER_RING]; /* N(pos), the normalised CRC before pos, for pos in [head, end] */
+    uint16_t memo[XF_PARSER_RING]; /**< private: N(pos), the normalised CRC before pos, for pos in [head, end] */
 #endif
-    uint32_t head;     /* stream position of the first held byte: the earliest candidate */
-    uint32_t end;      /* one past the last held byte */
-    uint32_t look;     /* positions in (head, look) are examined: no candidate, or a failed contender */
-    uint8_t bulk;      /* a CRC failed since the parser was last empty: take whole chunks */
-    uint8_t look_done; /* no contender can follow for this head */
-    uint8_t h0, h1;    /* header bytes of the direction parsed */
-    uint8_t wrapped;   /* the last frame wrapped round the ring and was made contiguous (tests look) */
-    xf_parser_stats stats;
+    uint32_t head;     /**< private: stream position of the first held byte: the earliest candidate */
+    uint32_t end;      /**< private: one past the last held byte */
+    uint32_t look;     /**< private: positions in (head, look) are examined: no candidate, or a failed contender */
+    uint8_t bulk;      /**< private: a CRC failed since the parser was last empty: take whole chunks */
+    uint8_t look_done; /**< private: no contender can follow for this head */
+    /** @var xf_parser::h0
+     *  private: first header byte of the direction parsed */
+    uint8_t h0, h1;        /**< private: second header byte of the direction parsed */
+    uint8_t wrapped;       /**< private: the last frame wrapped round the ring and was made contiguous (tests look) */
+    xf_parser_stats stats; /**< counters, readable at any time; the application may zero them */
 } xf_parser;
 
-/** Start a parser for packets sent in direction @p dir (XF_DIR_GCU on a host). */
+/**
+ * Start a parser for packets sent in direction @p dir (::XF_DIR_GCU on a
+ * host): empty, counters zero.
+ * @param p    the parser's storage
+ * @param dir  the direction of the packets to find; others are skipped
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p p, or @p dir not a direction)
+ */
 XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir);
 
-/** Drop the bytes held (counted as skipped); keep the direction and the counters. */
+/**
+ * Drop the bytes held (counted as skipped); keep the direction and the
+ * counters. Does nothing for a NULL @p p.
+ * @param p  the parser
+ */
 XF_API void xf_parser_reset(xf_parser *p);
 
-/** Bytes held that belong to no returned frame yet. */
+/**
+ * Bytes held that belong to no returned frame yet.
+ * @param p  the parser
+ * @return the number of bytes, 0 for a NULL @p p
+ */
 XF_API size_t xf_parser_pending(const xf_parser *p);
 
 #define XF_PARSE_FRAME 1 /**< xf_parser_feed: *frame holds a frame */
@@ -109,30 +135,60 @@ XF_API size_t xf_parser_pending(const xf_parser *p);
  * can be found in bytes already held). Returns XF_PARSE_MORE when every
  * byte was taken and no frame is complete, or XF_ERR_ARG.
  *
- *     size_t n; xf_frame f;
- *     while (xf_parser_feed(&p, data, len, &n, &f) == XF_PARSE_FRAME) {
- *         handle(f.data, f.len);
- *         data += n; len -= n;
- *     }
+ * @code
+ * size_t n; xf_frame f;
+ * while (xf_parser_feed(&p, data, len, &n, &f) == XF_PARSE_FRAME) {
+ *     handle(f.data, f.len);
+ *     data += n; len -= n;
+ * }
+ * @endcode
+ *
+ * The frame's bytes are in the parser or, when a whole packet arrived in
+ * one chunk, in @p data itself; they stay valid until the next call on the
+ * parser, as long as the caller leaves @p data alone meanwhile.
+ * @param p         the parser
+ * @param data      the bytes received; may be NULL when @p len is 0
+ * @param len       number of bytes at @p data
+ * @param consumed  receives how many bytes of @p data were taken (may be NULL)
+ * @param frame     receives the frame when ::XF_PARSE_FRAME is returned
+ * @return ::XF_PARSE_FRAME, ::XF_PARSE_MORE, or ::XF_ERR_ARG (NULL @p p or
+ *   @p frame, or NULL @p data with @p len > 0)
  */
 XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
 
 /**
- * Decode a frame this parser returned, without computing its CRC again
+ * Decode a GCU frame the parser returned, without computing its CRC again
  * (the parser has checked header, length and CRC; only the header and
  * length are looked at again, cheaply). For bytes from anywhere else use
- * xf_gcu_unpack / xf_host_unpack.
- * @return XF_OK, XF_ERR_ARG, XF_ERR_HEADER (a frame of the other
- *   direction), XF_ERR_LENGTH.
+ * xf_gcu_unpack(). @p pkt is written only on success.
+ * @param frame  the frame, as xf_parser_feed() or xf_parser_flush() gave it
+ * @param pkt    receives the decoded packet
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p frame, frame data or @p pkt),
+ *   ::XF_ERR_HEADER (a frame of the other direction), ::XF_ERR_LENGTH (the
+ *   length is out of range or disagrees with the length field)
  */
 XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt);
+/**
+ * Decode a host frame the parser returned (GCU side: the simulator), as
+ * xf_frame_gcu() does for GCU frames. For bytes from anywhere else use
+ * xf_host_unpack(). @p pkt is written only on success.
+ * @param frame  the frame, as xf_parser_feed() or xf_parser_flush() gave it
+ * @param pkt    receives the decoded packet
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p frame, frame data or @p pkt),
+ *   ::XF_ERR_HEADER (a frame of the other direction), ::XF_ERR_LENGTH
+ */
 XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt);
 
 /**
  * The input has ended (end of file, link closed): give up the candidates
  * that can no longer complete and return the intact frames behind them.
  * Call until it returns XF_PARSE_MORE; then nothing is pending. The bytes
- * given up count as skipped.
+ * given up count as skipped. The frame stays valid until the next call on
+ * the parser.
+ * @param p      the parser
+ * @param frame  receives the frame when ::XF_PARSE_FRAME is returned
+ * @return ::XF_PARSE_FRAME, ::XF_PARSE_MORE (nothing held any more), or
+ *   ::XF_ERR_ARG (NULL @p p or @p frame)
  */
 XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame);
 
@@ -209,8 +265,8 @@ XF_API void xf_parser_reset(xf_parser *p)
  * The ring index mod 16 is the stream position mod 16, and blocks of 16
  * never straddle the ring's end: whole aligned blocks are unrolled with
  * every table row a constant; the bytes before the first and after the
- * last take a row pointer that steps along. This loop is about half the
- * cost of adversarial input. */
+ * last take a row pointer that steps along. This loop is a large share of
+ * the cost of adversarial input (docs/performance.md). */
 static inline void xf__append_memo(xf_parser *p, const uint8_t *d, size_t n)
 {
     const uint16_t *norm = xf__crc_norm_table();
@@ -619,7 +675,6 @@ XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame)
 static inline int xf__direct(xf_parser *p, const uint8_t *d, size_t avail, xf_frame *frame)
 {
     size_t len;
-    uint16_t want;
     if (avail < 4u || d[1] != p->h1) {
         return 0;
     }
@@ -631,8 +686,9 @@ static inline int xf__direct(xf_parser *p, const uint8_t *d, size_t avail, xf_fr
     if (len > XF_PACKET_MIN_LEN + 1u && XF_MEMCHR(d + 1, p->h0, len - XF_PACKET_MIN_LEN - 1u) != NULL) {
         return 0;
     }
-    want = (uint16_t)(((uint16_t)d[len - 2u] << 8) | d[len - 1u]);
-    if (xf_crc16(d, len - 2u) != want) {
+    /* The CRC (no reflection, no final XOR) of a packet with its own CRC
+     * appended big-endian is zero. */
+    if (xf_crc16(d, len) != 0u) {
         return 0; /* the general path rescans it */
     }
     frame->data = d;

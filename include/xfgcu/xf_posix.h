@@ -1,5 +1,6 @@
-/*
- * xf_posix.h - POSIX links behind the xf_hal interface: serial ports
+/**
+ * @file
+ * @brief POSIX links behind the xf_hal interface: serial ports
  * (libserialport, with a termios path for pseudo-terminals), UDP, and TCP
  * as the client of the GCU's single-client server.
  *
@@ -14,6 +15,13 @@
  * Errors carry the operating system's reason: after a failure,
  * link->error.text says what failed and why, in one line, e.g.
  * "open /dev/ttyUSB0: Permission denied".
+ *
+ * Blocking: the links are non-blocking. Their xf_hal read never waits;
+ * their write waits at most a bounded time for a full buffer (serial and
+ * TCP: 100 ms; UDP: never). Opening a link may block briefly in the
+ * operating system (opening a device, resolving a host name with DNS: pass
+ * a numeric address to avoid that). xf_tcp_wait() and xf_posix_poll() block
+ * by design, up to the time they are given. Each function below says so.
  */
 #ifndef XF_POSIX_H
 #define XF_POSIX_H
@@ -31,7 +39,7 @@ XF_BEGIN_DECLS
 #define XF_GCU_UDP_PORT        2337u             /**< the GCU's UDP port: host sends here, GCU sends from here */
 #define XF_HOST_UDP_PORT       2338u             /**< the host's UDP port: GCU sends here */
 
-/** Why the last operation of a link failed. */
+/** Why the last operation of a link failed (every link has one, as its `error` member). */
 typedef struct xf_os_error {
     int os_errno;   /**< errno, 0 when the failure is not the OS's */
     char text[192]; /**< one line: what, where, why */
@@ -39,35 +47,45 @@ typedef struct xf_os_error {
 
 /** Counters of a link; they only increase. */
 typedef struct xf_link_stats {
-    uint32_t bytes_tx;
-    uint32_t bytes_rx;
-    uint32_t packets_tx;
-    uint32_t opens;   /**< successful opens / connections, the first included */
-    uint32_t losses;  /**< times the link was found lost (hang-up, peer closed, reset) */
-    uint32_t foreign; /**< UDP datagrams dropped because they came from another source */
+    uint32_t bytes_tx;   /**< bytes written */
+    uint32_t bytes_rx;   /**< bytes read */
+    uint32_t packets_tx; /**< writes (packets) that succeeded */
+    uint32_t opens;      /**< successful opens / connections, the first included */
+    uint32_t losses;     /**< times the link was found lost (hang-up, peer closed, reset) */
+    uint32_t foreign;    /**< UDP datagrams dropped because they came from another source */
 } xf_link_stats;
 
-/** Monotonic milliseconds (CLOCK_MONOTONIC), wrapping at 2^32. */
+/**
+ * Monotonic milliseconds (CLOCK_MONOTONIC), wrapping at 2^32: the clock of
+ * the POSIX links' now_ms, and a clock for xf_client_step(). Never blocks.
+ * @return the time, ms
+ */
 uint32_t xf_posix_now_ms(void);
 
 /* ---- serial ------------------------------------------------------------------ */
 
 struct sp_port; /* libserialport's */
 
-/** Baud rates the GCU speaks; anything else is XF_ERR_RANGE. */
+/**
+ * Baud rates the GCU speaks; anything else is XF_ERR_RANGE.
+ * @param baud  the rate
+ * @return 1 for 115200, 250000, 500000 and 1000000; 0 otherwise (which
+ *   xf_serial_open() refuses with ::XF_ERR_RANGE)
+ */
 int xf_serial_baud_ok(uint32_t baud);
 
+/** A serial link's state: zero it (or close it) before xf_serial_open(). */
 typedef struct xf_serial {
-    char path[256];
-    uint32_t baud;
+    char path[256];        /**< the device opened (and reopened after a hang-up); empty when closed */
+    uint32_t baud;         /**< the baud rate */
     int fd;                /**< -1 while closed */
     struct sp_port *port;  /**< set when opened through libserialport */
     uint8_t via_termios;   /**< opened with plain termios (pseudo-terminals) */
     uint8_t force_termios; /**< set before open to skip libserialport (tests, odd drivers) */
     uint32_t retry_at;     /**< after a hang-up: next reopen attempt */
-    uint32_t backoff_ms;
-    xf_link_stats stats;
-    xf_os_error error;
+    uint32_t backoff_ms;   /**< after a hang-up: current delay between reopen attempts */
+    xf_link_stats stats;   /**< counters */
+    xf_os_error error;     /**< why the last operation failed */
 } xf_serial;
 
 /**
@@ -77,29 +95,68 @@ typedef struct xf_serial {
  * XF_ERR_CLOSED and the link reopens the same path by itself (back-off
  * 50 ms doubling to 1 s), so a re-plugged adapter or a restarted pty
  * (behind a stable symlink) comes back.
+ *
+ * Open on zeroed or closed storage (force_termios, set beforehand, is
+ * kept). May block briefly in the operating system while the device is
+ * opened and configured; never waits for the peer. On failure the link is
+ * closed and s->error says why.
+ * @param s     the link's storage
+ * @param path  the device, such as /dev/ttyUSB0 (shorter than 256 bytes)
+ * @param baud  115200, 250000, 500000 or 1000000 (xf_serial_baud_ok())
  * @return XF_OK, XF_ERR_ARG, XF_ERR_RANGE (baud), XF_ERR_NOT_FOUND (no such
  *   device, or not a terminal), XF_ERR_PERMISSION, XF_ERR_BUSY, XF_ERR_IO.
+ *   (::XF_ERR_ARG: NULL @p s or @p path, or @p path too long. Rarely another
+ *   code mapped from the OS's errno, such as ::XF_ERR_CLOSED for EIO.)
  */
 xf_err xf_serial_open(xf_serial *s, const char *path, uint32_t baud);
+/**
+ * Close the link; it no longer reopens by itself. Safe on a closed link;
+ * does nothing for a NULL @p s. Never blocks.
+ * @param s  the link
+ */
 void xf_serial_close(xf_serial *s);
-/** Fill @p hal with this link. Writes block at most 100 ms (a full driver buffer), else XF_ERR_IO. */
+/**
+ * Fill @p hal with this link. Writes block at most 100 ms (a full driver buffer), else XF_ERR_IO.
+ *
+ * The link must stay where it is while @p hal is in use. Its read never
+ * waits; after a hang-up, read and write return ::XF_ERR_CLOSED and try to
+ * reopen the device (back-off 50 ms doubling to 1 s). Write returns
+ * ::XF_OK, ::XF_ERR_CLOSED or ::XF_ERR_IO (never ::XF_ERR_AGAIN); read
+ * returns ::XF_OK, ::XF_ERR_CLOSED or ::XF_ERR_IO. Does nothing for a NULL
+ * @p hal.
+ * @param s    the link
+ * @param hal  receives the link's functions
+ */
 void xf_serial_hal(xf_serial *s, xf_hal *hal);
-/** "libserialport", "termios" or "closed". */
+/**
+ * Which way the link was opened.
+ * @param s  the link (may be NULL)
+ * @return "libserialport", "termios" or "closed" (NULL, never opened,
+ *   closed, or hung up and not reopened yet)
+ */
 const char *xf_serial_backend(const xf_serial *s);
 
 /** A serial port found on the system. Strings are empty when unknown. */
 typedef struct xf_serial_port_info {
-    char path[128];
-    char description[128];
-    int usb_vid; /**< -1 when not a USB device */
-    int usb_pid;
+    char path[128];        /**< the device path, such as /dev/ttyUSB0 */
+    char description[128]; /**< libserialport's description of the port */
+    int usb_vid;           /**< -1 when not a USB device */
+    int usb_pid;           /**< USB product id; -1 when not a USB device */
 } xf_serial_port_info;
 
-/** Call @p cb for each serial port libserialport finds. XF_ERR_IO if listing fails. */
+/**
+ * Call @p cb for each serial port libserialport finds. XF_ERR_IO if listing fails.
+ * Blocks while the system is asked for its ports (no device is opened).
+ * @param cb    called once per port, with the port's description (valid
+ *   during the call only) and @p user
+ * @param user  passed to @p cb
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cb), ::XF_ERR_IO (listing failed)
+ */
 xf_err xf_serial_list(void (*cb)(const xf_serial_port_info *info, void *user), void *user);
 
 /* ---- UDP ---------------------------------------------------------------------- */
 
+/** Where a UDP link sends and listens; start from xf_udp_config_init(). */
 typedef struct xf_udp_config {
     const char *gcu_host;   /**< GCU address (or broadcast address with `broadcast`); default XF_GCU_DEFAULT_ADDRESS */
     uint16_t gcu_port;      /**< default 2337 */
@@ -110,27 +167,59 @@ typedef struct xf_udp_config {
                                  address whose source port is gcu_port */
 } xf_udp_config;
 
+/** A UDP link's state. */
 typedef struct xf_udp {
-    int fd;
-    struct sockaddr_storage gcu;
-    socklen_t gcu_len;
-    uint8_t accept_any;
-    uint8_t broadcast;
-    uint16_t local_port; /**< the port bound (useful with local_port 0) */
-    xf_link_stats stats;
-    xf_os_error error;
+    int fd;                      /**< the socket; -1 while closed */
+    struct sockaddr_storage gcu; /**< where packets go */
+    socklen_t gcu_len;           /**< length of gcu */
+    uint8_t accept_any;          /**< as xf_udp_config.accept_any */
+    uint8_t broadcast;           /**< as xf_udp_config.broadcast */
+    uint16_t local_port;         /**< the port bound (useful with local_port 0) */
+    xf_link_stats stats;         /**< counters */
+    xf_os_error error;           /**< why the last operation failed */
 } xf_udp;
 
+/**
+ * Fill @p cfg with the defaults documented at each member. Does nothing for
+ * a NULL @p cfg.
+ * @param cfg  the configuration to fill
+ */
 void xf_udp_config_init(xf_udp_config *cfg);
-/** @return XF_OK, XF_ERR_ARG, XF_ERR_NOT_FOUND (address does not resolve), XF_ERR_BUSY (port in use),
- * XF_ERR_PERMISSION, XF_ERR_IO. */
+/**
+ * Open a UDP link: resolve the GCU's address, bind the local port,
+ * non-blocking socket. Unlike TCP there is no connection: the link is usable
+ * at once. May block while a host name resolves (DNS); a numeric address
+ * does not. On failure the link is closed and u->error says why.
+ * @param u    the link's storage
+ * @param cfg  where to send and listen; NULL means xf_udp_config_init()'s
+ *   defaults (a zero gcu_port is not replaced by the default)
+ * @return XF_OK, XF_ERR_ARG, XF_ERR_NOT_FOUND (address does not resolve), XF_ERR_BUSY (port in use),
+ * XF_ERR_PERMISSION, XF_ERR_IO.
+ */
 xf_err xf_udp_open(xf_udp *u, const xf_udp_config *cfg);
+/**
+ * Close the link. Safe on a closed link; does nothing for a NULL @p u.
+ * @param u  the link
+ */
 void xf_udp_close(xf_udp *u);
-/** Fill @p hal. Each write is one datagram; reads return whole datagrams from the GCU only. */
+/**
+ * Fill @p hal. Each write is one datagram; reads return whole datagrams from the GCU only.
+ *
+ * The link must stay where it is while @p hal is in use. Neither function
+ * waits. Write returns ::XF_OK (also when an earlier datagram was refused
+ * by ICMP: UDP cannot tell), ::XF_ERR_AGAIN (socket buffer full),
+ * ::XF_ERR_CLOSED (closed) or ::XF_ERR_IO. Read takes up to 64 datagrams
+ * while a whole packet still fits in the buffer, dropping (and counting)
+ * those from other sources; it returns ::XF_OK, ::XF_ERR_CLOSED (closed) or
+ * ::XF_ERR_IO. Does nothing for a NULL @p hal.
+ * @param u    the link
+ * @param hal  receives the link's functions
+ */
 void xf_udp_hal(xf_udp *u, xf_hal *hal);
 
 /* ---- TCP ---------------------------------------------------------------------- */
 
+/** Where a TCP link connects; start from xf_tcp_config_init(). */
 typedef struct xf_tcp_config {
     const char *host;            /**< default XF_GCU_DEFAULT_ADDRESS */
     uint16_t port;               /**< default 2332 */
@@ -139,38 +228,94 @@ typedef struct xf_tcp_config {
     uint32_t retry_max_ms;       /**< doubling up to this, default 500 */
 } xf_tcp_config;
 
+/** Where a TCP link's connection is (xf_tcp.state). */
 typedef enum xf_tcp_state { XF_TCP_DOWN = 0, XF_TCP_CONNECTING = 1, XF_TCP_UP = 2 } xf_tcp_state;
+/** @var XF_TCP_DOWN
+ *  no connection: waiting for the next attempt (or closed) */
+/** @var XF_TCP_CONNECTING
+ *  an attempt is in progress */
+/** @var XF_TCP_UP
+ *  connected */
 
+/** A TCP link's state. */
 typedef struct xf_tcp {
-    int fd;
-    xf_tcp_state state;
-    struct sockaddr_storage addr;
-    socklen_t addr_len;
-    xf_tcp_config cfg;
-    char host[128];
-    uint32_t started_at; /**< of the current connection attempt */
-    uint32_t retry_at;
-    uint32_t backoff_ms;
-    xf_link_stats stats;
-    xf_os_error error;
+    int fd;                       /**< the socket; -1 while there is none */
+    xf_tcp_state state;           /**< where the connection is */
+    struct sockaddr_storage addr; /**< the GCU's address, resolved at open */
+    socklen_t addr_len;           /**< length of addr */
+    xf_tcp_config cfg;            /**< the configuration (a copy, zero values replaced by defaults) */
+    char host[128];               /**< the host name; empty once closed (no reconnecting) */
+    uint32_t started_at;          /**< of the current connection attempt */
+    uint32_t retry_at;            /**< when the next attempt may start */
+    uint32_t backoff_ms;          /**< current delay between attempts */
+    xf_link_stats stats;          /**< counters */
+    xf_os_error error;            /**< why the last operation or attempt failed */
 } xf_tcp;
 
+/**
+ * Fill @p cfg with the defaults documented at each member. Does nothing for
+ * a NULL @p cfg.
+ * @param cfg  the configuration to fill
+ */
 void xf_tcp_config_init(xf_tcp_config *cfg);
 /**
  * Resolve the GCU's address and start connecting (non-blocking). The link
  * connects, and reconnects after a loss, by itself whenever it is read or
- * written. @return XF_OK, XF_ERR_ARG, XF_ERR_NOT_FOUND (does not resolve).
+ * written.
+ *
+ * May block while a host name resolves (DNS); a numeric address does not.
+ * Never waits for the connection: xf_tcp_wait() does.
+ * @param t    the link's storage
+ * @param cfg  where to connect; NULL means xf_tcp_config_init()'s defaults.
+ *   A NULL host, a zero connect_timeout_ms and a zero retry_min_ms are
+ *   replaced by the defaults (a zero port is not); retry_max_ms is raised to
+ *   retry_min_ms if below it
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p t, or a host name of 128 bytes or
+ *   more), ::XF_ERR_NOT_FOUND (does not resolve; t->error says why)
  */
 xf_err xf_tcp_open(xf_tcp *t, const xf_tcp_config *cfg);
-/** Block up to @p timeout_ms until connected: XF_OK, or XF_ERR_TIMEOUT / XF_ERR_CLOSED with error.text. */
+/**
+ * Block up to @p timeout_ms until connected: XF_OK, or XF_ERR_TIMEOUT / XF_ERR_CLOSED with error.text.
+ * Blocks (polling every 5 ms at most) by design: for start-up, before the
+ * client loop runs.
+ * @param t           the link, opened
+ * @param timeout_ms  how long to wait at most
+ * @return ::XF_OK (connected), ::XF_ERR_ARG (NULL @p t, or not opened),
+ *   ::XF_ERR_TIMEOUT (an attempt still in progress), ::XF_ERR_CLOSED (not
+ *   connected: refused or failed, t->error says why)
+ */
 xf_err xf_tcp_wait(xf_tcp *t, uint32_t timeout_ms);
+/**
+ * Close the link; it no longer reconnects. Safe on a closed link; does
+ * nothing for a NULL @p t.
+ * @param t  the link
+ */
 void xf_tcp_close(xf_tcp *t);
-/** Fill @p hal. Writes block at most 100 ms for a full socket buffer, else the connection is dropped. */
+/**
+ * Fill @p hal. Writes block at most 100 ms for a full socket buffer, else the connection is dropped.
+ *
+ * The link must stay where it is while @p hal is in use. Read never waits.
+ * Each read or write first moves the connection on (starts an attempt when
+ * the back-off has passed, checks one in progress); while not connected
+ * they return ::XF_ERR_CLOSED. A failed or closed connection returns
+ * ::XF_ERR_CLOSED and reconnects after the back-off. Write returns ::XF_OK or
+ * ::XF_ERR_CLOSED; read ::XF_OK or ::XF_ERR_CLOSED. The fd function gives -1
+ * unless connected. Does nothing for a NULL @p hal.
+ * @param t    the link
+ * @param hal  receives the link's functions
+ */
 void xf_tcp_hal(xf_tcp *t, xf_hal *hal);
 
 /* ---- the GCU side: links for the simulator ----------------------------------- */
 
+/** Which kind of link an xf_simlink is. */
 typedef enum xf_simlink_kind { XF_SIMLINK_PTY = 0, XF_SIMLINK_UDP = 1, XF_SIMLINK_TCP = 2 } xf_simlink_kind;
+/** @var XF_SIMLINK_PTY
+ *  a pseudo-terminal; the host opens its slave as a serial port */
+/** @var XF_SIMLINK_UDP
+ *  a UDP socket on the GCU's port */
+/** @var XF_SIMLINK_TCP
+ *  a TCP server serving one client at a time */
 
 /**
  * A simulated GCU's end of a link: a pseudo-terminal's master (the host
@@ -179,28 +324,66 @@ typedef enum xf_simlink_kind { XF_SIMLINK_PTY = 0, XF_SIMLINK_UDP = 1, XF_SIMLIN
  * second client is refused, like the real GCU).
  */
 typedef struct xf_simlink {
-    xf_simlink_kind kind;
-    int fd;              /**< pty master, UDP socket or TCP listener; -1 when closed */
-    int slave_fd;        /**< pty: a slave descriptor held open so the master never reads EIO */
-    int client_fd;       /**< TCP: the connected host, -1 if none */
-    char pty_path[64];   /**< pty: the slave's path */
-    char link_path[256]; /**< pty: a stable symlink to the slave ("" if none) */
-    char bind_host[64];
-    uint16_t port; /**< UDP / TCP: the port bound */
-    struct sockaddr_storage peer;
-    socklen_t peer_len; /**< UDP: 0 until a packet arrived */
-    uint8_t down;       /**< disconnected by xf_simlink_disconnect */
-    uint32_t up_at;
-    xf_link_stats stats;
-    xf_os_error error;
+    xf_simlink_kind kind;         /**< which kind of link */
+    int fd;                       /**< pty master, UDP socket or TCP listener; -1 when closed */
+    int slave_fd;                 /**< pty: a slave descriptor held open so the master never reads EIO */
+    int client_fd;                /**< TCP: the connected host, -1 if none */
+    char pty_path[64];            /**< pty: the slave's path */
+    char link_path[256];          /**< pty: a stable symlink to the slave ("" if none) */
+    char bind_host[64];           /**< UDP / TCP: the address bound */
+    uint16_t port;                /**< UDP / TCP: the port bound */
+    struct sockaddr_storage peer; /**< UDP: who sent the last packet (replies go there) */
+    socklen_t peer_len;           /**< UDP: 0 until a packet arrived */
+    uint8_t down;                 /**< disconnected by xf_simlink_disconnect */
+    uint32_t up_at;               /**< after xf_simlink_disconnect(): when the link comes back */
+    xf_link_stats stats;          /**< counters */
+    xf_os_error error;            /**< why the last operation failed */
 } xf_simlink;
 
-/** A new pty; its slave path is in l->pty_path, and @p symlink_path (may be NULL) points to it. */
+/**
+ * A new pty; its slave path is in l->pty_path, and @p symlink_path (may be NULL) points to it.
+ * The symlink is replaced atomically if it exists. When it cannot be made,
+ * the error is returned but the pty stays open: call xf_simlink_close()
+ * after any failure. Never waits.
+ * @param l             the link's storage
+ * @param symlink_path  a stable path for the host to open (shorter than 256 bytes), or NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l, or @p symlink_path too long), or
+ *   a code mapped from the OS's errno (l->error says why)
+ */
 xf_err xf_simlink_open_pty(xf_simlink *l, const char *symlink_path);
-/** Listen for UDP on @p host (NULL: 127.0.0.1) : @p port (0: any free, then l->port). */
+/**
+ * Listen for UDP on @p host (NULL: 127.0.0.1) : @p port (0: any free, then l->port).
+ * Replies go to whoever sent the last packet. May block while a host name
+ * resolves (DNS).
+ * @param l     the link's storage
+ * @param host  address to bind, or NULL for 127.0.0.1
+ * @param port  port to bind, 0 for any free one
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l), ::XF_ERR_NOT_FOUND (does not
+ *   resolve), or a code mapped from the OS's errno (::XF_ERR_BUSY: port in
+ *   use; l->error says why)
+ */
 xf_err xf_simlink_open_udp(xf_simlink *l, const char *host, uint16_t port);
-/** TCP server on @p host (NULL: 127.0.0.1) : @p port (0: any free). */
+/**
+ * TCP server on @p host (NULL: 127.0.0.1) : @p port (0: any free).
+ * Serves one host at a time and refuses others, like the real GCU. May
+ * block while a host name resolves (DNS).
+ * @param l     the link's storage
+ * @param host  address to bind, or NULL for 127.0.0.1
+ * @param port  port to bind, 0 for any free one (then l->port)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l), ::XF_ERR_NOT_FOUND (does not
+ *   resolve), or a code mapped from the OS's errno (::XF_ERR_BUSY: port in
+ *   use; l->error says why)
+ */
 xf_err xf_simlink_open_tcp(xf_simlink *l, const char *host, uint16_t port);
+/**
+ * Fill @p hal with the GCU's end of this link, for xf_sim_attach(). The link
+ * must stay where it is while @p hal is in use. Read never waits (a TCP
+ * server accepts a waiting host there) and returns ::XF_ERR_CLOSED while no
+ * host is connected or the link is disconnected; write waits at most
+ * 100 ms for a full buffer (pty, TCP). Does nothing for a NULL @p hal.
+ * @param l    the link
+ * @param hal  receives the link's functions
+ */
 void xf_simlink_hal(xf_simlink *l, xf_hal *hal);
 /**
  * Fault injection: drop the host now and come back after @p ms: the pty
@@ -208,8 +391,16 @@ void xf_simlink_hal(xf_simlink *l, xf_hal *hal);
  * TCP connection is closed and new ones refused meanwhile, UDP goes silent.
  * What the host sends meanwhile is lost, as with a GCU that is gone: it is
  * never answered (or executed) when the link comes back.
+ * Does nothing for a NULL @p l. Never waits.
+ * @param l   the link
+ * @param ms  how long the link stays down
  */
 void xf_simlink_disconnect(xf_simlink *l, uint32_t ms);
+/**
+ * Close the link and remove its symlink. Safe on a closed link; does
+ * nothing for a NULL @p l.
+ * @param l  the link
+ */
 void xf_simlink_close(xf_simlink *l);
 
 /* ---- many clients, one thread --------------------------------------------------- */
@@ -223,6 +414,17 @@ struct xf_sim;
  * readable or a client's next packet is due (with simulators, at most
  * 5 ms), then step every client and simulator. Call it in a loop; the clients
  * stay independent (no shared state). Returns XF_OK or XF_ERR_IO (poll).
+ *
+ * Blocks in poll() by design. The clients' callbacks run from here; they
+ * must not call xf_posix_poll(). The steps' own errors are not returned
+ * (see each client's xf_health). At most 256 descriptors are watched; with
+ * no client, no simulator and a negative @p max_wait_ms it waits forever.
+ * @param clients      the clients (none NULL; may be NULL when @p n_clients is 0)
+ * @param n_clients    how many
+ * @param sims         the simulators (none NULL; may be NULL when @p n_sims is 0)
+ * @param n_sims       how many
+ * @param max_wait_ms  longest wait, ms; negative: only the clients' deadlines bound it
+ * @return ::XF_OK, ::XF_ERR_IO (poll() failed other than by a signal)
  */
 xf_err xf_posix_poll(struct xf_client *const *clients, size_t n_clients, struct xf_sim *const *sims, size_t n_sims,
                      int max_wait_ms);

@@ -1,6 +1,7 @@
-/*
- * xf_sim.h - a simulated GCU: the gimbal side of the protocol, for tests,
- * demos and development without hardware.
+/**
+ * @file
+ * @brief A simulated GCU: the gimbal side of the protocol, for tests, demos
+ * and development without hardware.
  *
  * Portable C over xf_hal like the client (no OS, no heap, no globals). It
  * answers only correct host packets, one reply each; keeps the once-rule
@@ -10,6 +11,11 @@
  * angles slew at a finite speed, orthoview points down, FPV follows the
  * carrier); zooms, ranges, tracks; replies in protocol version 1 or 2;
  * and injects faults (drop, corrupt, delay) on request.
+ *
+ * Part of the xfgcu::client library (it needs libm, so not in builds
+ * without a C library). No function waits: xf_sim_step() takes as long as
+ * the link's read and write. A simulator is not thread-safe; drive it from
+ * one thread (xf_posix_poll() steps clients and simulators together).
  */
 #ifndef XF_SIM_H
 #define XF_SIM_H
@@ -29,10 +35,13 @@ XF_BEGIN_DECLS
 #define XF_SIM_DELAY_QUEUE 16 /**< replies held back by the delay fault */
 #endif
 
+/** A simulator's configuration; start from xf_sim_config_init(). */
 typedef struct xf_sim_config {
-    uint8_t version;                /**< version byte of replies: 1 or 2; default 1 */
-    uint8_t gimbal_code;            /**< default 40 (D-80AI) */
-    uint8_t hw_version, fw_version; /**< default 3, 12 */
+    uint8_t version;     /**< version byte of replies: 1 or 2; default 1 */
+    uint8_t gimbal_code; /**< default 40 (D-80AI) */
+    /** @var xf_sim_config::hw_version
+     *  hardware version reported, default 3 */
+    uint8_t hw_version, fw_version; /**< firmware version reported, default 12 */
     float slew_dps;                 /**< angle-control slew speed, default 120 deg/s */
     float max_rate_dps;             /**< rate clamp, default 180 deg/s */
     float zoom_max;                 /**< camera 1 optical zoom, default 30x */
@@ -45,105 +54,197 @@ typedef struct xf_sim_config {
 
 /** Faults to inject; set fields of xf_sim.fault at any time. */
 typedef struct xf_sim_faults {
-    uint16_t drop_next;     /**< drop the next N replies */
-    uint16_t drop_permille; /**< drop this share of replies at random */
-    uint16_t corrupt_next;  /**< flip a byte in the next N replies */
-    uint16_t corrupt_permille;
-    uint32_t delay_ms; /**< hold each reply this long (bounded by XF_SIM_DELAY_QUEUE) */
-    uint8_t silent;    /**< answer nothing */
+    uint16_t drop_next;        /**< drop the next N replies */
+    uint16_t drop_permille;    /**< drop this many replies per thousand, at random */
+    uint16_t corrupt_next;     /**< flip a byte in the next N replies */
+    uint16_t corrupt_permille; /**< flip a byte in this many replies per thousand, at random */
+    uint32_t delay_ms;         /**< hold each reply this long (at most XF_SIM_DELAY_QUEUE at once; more are dropped) */
+    uint8_t silent;            /**< answer nothing (replies are not even counted as dropped) */
 } xf_sim_faults;
 
 /** What the simulator has seen and done. */
 typedef struct xf_sim_stats {
     uint32_t packets_in; /**< correct host packets */
     uint32_t replies;    /**< replies written */
-    uint32_t dropped, corrupted;
-    uint32_t executed[256]; /**< executions per order (the once-rule counts here) */
-    uint32_t photos, recordings;
-    uint32_t ins_valid_packets; /**< host packets with ins_valid set */
-    uint32_t write_errors;
+    /** @var xf_sim_stats::dropped
+     *  replies dropped (faults, or a full delay queue) */
+    uint32_t dropped, corrupted; /**< replies with a byte flipped */
+    uint32_t executed[256];      /**< executions per order (the once-rule counts here) */
+    /** @var xf_sim_stats::photos
+     *  shutter executions */
+    uint32_t photos, recordings; /**< recordings started */
+    uint32_t ins_valid_packets;  /**< host packets with ins_valid set */
+    uint32_t write_errors;       /**< replies the link (or xf_sim_process()'s buffer) did not take */
 } xf_sim_stats;
 
+/** A reply held back by the delay fault (a member of xf_sim). */
 typedef struct xf_sim_delayed {
-    uint32_t due_ms;
-    uint8_t len;
-    uint8_t bytes[XF_PACKET_MIN_LEN + 1u];
+    uint32_t due_ms;                       /**< when it goes out */
+    uint8_t len;                           /**< its length */
+    uint8_t bytes[XF_PACKET_MIN_LEN + 1u]; /**< the reply */
 } xf_sim_delayed;
 
 /** Simulator state; members are readable (tests use them), change them only through functions and `fault`. */
 typedef struct xf_sim {
-    xf_sim_config cfg;
-    xf_sim_faults fault;
-    xf_sim_stats stats;
-    xf_hal hal;
-    uint8_t attached;
-    xf_parser parser;
-    uint32_t now_ms, last_step_ms;
-    uint8_t started;
-    uint32_t rng;
+    xf_sim_config cfg;   /**< the configuration (a copy) */
+    xf_sim_faults fault; /**< faults to inject: set its members at any time */
+    xf_sim_stats stats;  /**< what it has seen and done */
+    xf_hal hal;          /**< the link (a copy), when attached */
+    uint8_t attached;    /**< a link is attached */
+    xf_parser parser;    /**< parser of the host's packets */
+    /** @var xf_sim::now_ms
+     *  the time of the current step */
+    uint32_t now_ms, last_step_ms; /**< the time of the previous step that moved the gimbal */
+    uint8_t started;               /**< the first step has run */
+    uint32_t rng;                  /**< state of the fault PRNG */
     /* the last host packet */
-    xf_host_packet host;
-    uint8_t have_host;
-    uint8_t last_order; /* order of the previous host packet, for the once-rule */
-    uint8_t have_last_order;
+    xf_host_packet host;     /**< the last correct host packet */
+    uint8_t have_host;       /**< host holds a packet */
+    uint8_t last_order;      /**< order of the previous host packet, for the once-rule */
+    uint8_t have_last_order; /**< last_order is set */
     /* feedback of the last executed order */
-    uint8_t fb_order, fb_state, fb_pending_replies, fb_sent;
-    uint8_t fb_valid;
-    uint8_t calibrating;
-    uint32_t calibration_end_ms;
-    uint8_t fail_state[256]; /* configured failure state per order; 0 = succeed */
+    /** @var xf_sim::fb_order
+     *  the last executed order */
+    /** @var xf_sim::fb_state
+     *  its execution state */
+    /** @var xf_sim::fb_pending_replies
+     *  replies still to go before the state is sent (feedback_after) */
+    uint8_t fb_order, fb_state, fb_pending_replies, fb_sent; /**< the state has been sent once */
+    uint8_t fb_valid;                                        /**< fb_order and fb_state are set */
+    uint8_t calibrating;                                     /**< calibration is in its "operating" phase */
+    uint32_t calibration_end_ms;                             /**< when calibration ends */
+    uint8_t fail_state[256]; /**< configured failure state per order; 0 = succeed (xf_sim_set_failure()) */
     /* gimbal state */
-    uint8_t mode;
-    uint16_t pod_status;
-    float roll, pitch, yaw;             /* camera absolute, deg */
-    float rate[3];                      /* deg/s, last step */
-    float hold_yaw_offset;              /* head follow: yaw relative to the carrier */
-    float gaze_lat, gaze_lon, gaze_alt; /* gaze_geo target */
-    float zoom1, zoom2, zoom_dir;       /* x; zoom_dir: +1 in, -1 out, 0 still */
-    float zoom_target;                  /* zoom_to, 0 = none */
-    float distance_m;
-    int16_t track_x, track_y; /* target offsets */
-    uint8_t thermal_status;
-    uint16_t camera_status;
-    int8_t time_zone;
-    uint8_t lighting;
-    uint8_t neutral; /* slewing back to neutral */
-    float tgt[3];    /* click-to-aim / neutral target: roll, pitch, yaw */
-    uint8_t have_tgt;
-    xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE];
-    uint8_t n_delayed;
+    uint8_t mode;        /**< gimbal mode (::xf_mode) */
+    uint16_t pod_status; /**< `XF_POD_*` bits */
+    /** @var xf_sim::roll
+     *  camera's absolute roll, deg */
+    /** @var xf_sim::pitch
+     *  camera's absolute pitch, deg */
+    float roll, pitch, yaw; /**< camera's absolute yaw, deg */
+    float rate[3];          /**< angular velocities of the last step, deg/s: roll, pitch, yaw */
+    float hold_yaw_offset;  /**< head follow: yaw relative to the carrier */
+    /** @var xf_sim::gaze_lat
+     *  gaze_geo target latitude, deg (0 with gaze_lon 0: gaze lock) */
+    /** @var xf_sim::gaze_lon
+     *  gaze_geo target longitude, deg */
+    float gaze_lat, gaze_lon, gaze_alt; /**< gaze_geo target altitude, m */
+    /** @var xf_sim::zoom1
+     *  camera 1's zoom, x */
+    /** @var xf_sim::zoom2
+     *  camera 2's zoom, x */
+    float zoom1, zoom2, zoom_dir; /**< continuous zoom: +1 in, -1 out, 0 still */
+    float zoom_target;            /**< zoom_to's target, x; 0 = none */
+    float distance_m;             /**< laser range, m */
+    /** @var xf_sim::track_x
+     *  target offset x, as target_offset_x */
+    int16_t track_x, track_y;                   /**< target offset y, as target_offset_y */
+    uint8_t thermal_status;                     /**< V0.2 `XF_THERMAL_*` bits */
+    uint16_t camera_status;                     /**< V0.2 `XF_CAMERA_*` bits */
+    int8_t time_zone;                           /**< V0.2 time zone, hours */
+    uint8_t lighting;                           /**< fill light intensity */
+    uint8_t neutral;                            /**< unused */
+    float tgt[3];                               /**< click-to-aim / neutral target: roll, pitch, yaw */
+    uint8_t have_tgt;                           /**< slewing to tgt */
+    xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE]; /**< replies held back by the delay fault */
+    uint8_t n_delayed;                          /**< replies in delayed */
     /* xf_sim_process: replies go to this buffer instead of the link */
-    uint8_t *cap_buf;
-    size_t cap_cap, cap_len;
+    uint8_t *cap_buf; /**< xf_sim_process()'s output, NULL otherwise */
+    /** @var xf_sim::cap_cap
+     *  its capacity */
+    size_t cap_cap, cap_len; /**< bytes written to it */
 } xf_sim;
 
+/**
+ * Fill @p cfg with the defaults documented at each member of xf_sim_config.
+ * Does nothing for a NULL @p cfg.
+ * @param cfg  the configuration to fill
+ */
 void xf_sim_config_init(xf_sim_config *cfg);
 
-/** Start a simulator; @p cfg NULL means defaults. XF_ERR_RANGE for a version other than 1 or 2. */
-xf_err xf_sim_init(xf_sim *s, const xf_sim_config *cfg);
+/**
+ * Start a simulator (a macro over xf_sim_init_checked(), which checks that
+ * the caller and the library were built with the same options).
+ * @param s    the simulator to set up (caller's storage)
+ * @param cfg  its configuration; NULL means defaults
+ * @return ::XF_OK, ::XF_ERR_ARG (@p s NULL), ::XF_ERR_RANGE (a version other
+ *   than 1 or 2), ::XF_ERR_CONFIG (built with other options).
+ */
+#define xf_sim_init(s, cfg) xf_sim_init_checked((s), (cfg), XF_OPTIONS_CHECK, sizeof(xf_sim))
 
-/** Give it the link it talks on (NULL detaches: it then neither reads nor replies). */
+/**
+ * What xf_sim_init() calls, with the caller's build options: use the macro.
+ * @param s        as for xf_sim_init()
+ * @param cfg      as for xf_sim_init()
+ * @param options  the caller's ::XF_OPTIONS_WORD
+ * @param size     the caller's sizeof(xf_sim)
+ * @return what xf_sim_init() returns, or ::XF_ERR_CONFIG when @p options or
+ *   @p size differ from the library's (nothing is written to @p s).
+ */
+xf_err xf_sim_init_checked(xf_sim *s, const xf_sim_config *cfg, unsigned long options, size_t size);
+
+/**
+ * Give it the link it talks on (NULL detaches: it then neither reads nor replies).
+ * @param s    the simulator
+ * @param hal  the link (copied), or NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p s, or a link without the required functions)
+ */
 xf_err xf_sim_attach(xf_sim *s, const xf_hal *hal);
 
 /**
  * Read what the host sent, answer every correct packet, move the gimbal,
  * release delayed replies. Call it often (every few ms). Returns XF_OK or
  * the transport's error (XF_ERR_CLOSED while no host is connected).
+ *
+ * Reads the link up to 16 times. Replies the link does not take are counted
+ * in xf_sim_stats.write_errors, not returned. Never waits itself, but takes
+ * as long as the link's read and write.
+ * @param s       the simulator
+ * @param now_ms  the time, ms, on a wrapping clock (the gimbal moves by the
+ *   time since the previous step, at most 200 ms at once)
+ * @return ::XF_OK (also when detached), ::XF_ERR_ARG (NULL @p s), or the
+ *   link's read error (::XF_ERR_CLOSED, ::XF_ERR_IO); delayed replies are
+ *   then not released in this step
  */
 xf_err xf_sim_step(xf_sim *s, uint32_t now_ms);
 
 /**
  * Offline use (no link): take @p len bytes of host stream and write the
  * replies, back to back, into @p out (capacity @p cap); *out_len set.
- * Faults other than drop/corrupt do not apply.
+ * The delay fault does not apply; drop, corrupt and silent do.
+ *
+ * Replies that do not fit are dropped and counted in
+ * xf_sim_stats.write_errors. Never blocks.
+ * @param s        the simulator
+ * @param in       host bytes; may be NULL when @p len is 0
+ * @param len      number of bytes at @p in
+ * @param now_ms   the time, ms
+ * @param out      where the replies go; may be NULL when @p cap is 0
+ * @param cap      capacity of @p out
+ * @param out_len  receives the number of reply bytes written (may be NULL)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p s, or NULL @p in / @p out with a
+ *   non-zero length), ::XF_ERR_NO_SPACE (input given, no reply written, and
+ *   xf_sim_stats.write_errors not 0: a count that also includes earlier calls)
  */
 xf_err xf_sim_process(xf_sim *s, const uint8_t *in, size_t len, uint32_t now_ms, uint8_t *out, size_t cap,
                       size_t *out_len);
 
-/** Make executions of @p order answer @p state (0x01, or a failed-camera mask); 0 restores success. */
+/**
+ * Make executions of @p order answer @p state (0x01, or a failed-camera mask); 0 restores success.
+ * Does nothing for a NULL @p s.
+ * @param s      the simulator
+ * @param order  the order byte
+ * @param state  the state byte to answer (0 = succeed and execute)
+ */
 void xf_sim_set_failure(xf_sim *s, uint8_t order, uint8_t state);
 
-/** The current gimbal state as the next reply would carry it. */
+/**
+ * The current gimbal state as the next reply would carry it (order and
+ * feedback excepted: null order, no feedback bytes). Does nothing when
+ * @p s or @p pkt is NULL.
+ * @param s    the simulator
+ * @param pkt  receives the packet
+ */
 void xf_sim_snapshot(const xf_sim *s, xf_gcu_packet *pkt);
 
 XF_END_DECLS

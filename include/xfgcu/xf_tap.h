@@ -1,7 +1,12 @@
-/*
- * xf_tap.h - a link that wraps another and reports every byte going
- * through it, both ways, with the time: for tracing and recording.
- * Portable (no OS): the callback decides what to do with the bytes.
+/**
+ * @file
+ * @brief A link that wraps another and reports every byte going through
+ * it, both ways, with the time: for tracing and recording.
+ *
+ * Portable (no OS), header-only: the callback decides what to do with the
+ * bytes (xf_capture_chunk() writes them to a capture file). The tap adds no
+ * blocking of its own: its functions take as long as the wrapped link's and
+ * the callback's.
  */
 #ifndef XF_TAP_H
 #define XF_TAP_H
@@ -14,16 +19,38 @@
 
 XF_BEGIN_DECLS
 
-/** Called with each chunk written (XF_DIR_HOST: host -> GCU) or read (XF_DIR_GCU), as the link moved it. */
+/**
+ * Called with each chunk written (::XF_DIR_HOST: host -> GCU) or read
+ * (::XF_DIR_GCU), as the link moved it: after a successful write, and after
+ * a read that returned bytes. It runs inside the link's write or read, so
+ * inside xf_client_step() when a client uses the tap: it must not call back
+ * into the client or the link.
+ * @param user    the pointer given to xf_tap_init()
+ * @param dir     ::XF_DIR_HOST for bytes written, ::XF_DIR_GCU for bytes read
+ * @param data    the bytes, valid during the call only
+ * @param len     number of bytes (> 0 for reads)
+ * @param now_ms  the wrapped link's clock (xf_hal.now_ms)
+ */
 typedef void (*xf_tap_fn)(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
 
+/** A tap's state; fill it with xf_tap_init(). */
 typedef struct xf_tap {
-    xf_hal inner;
-    xf_tap_fn fn;
-    void *user;
+    xf_hal inner; /**< the wrapped link (a copy) */
+    xf_tap_fn fn; /**< the callback; NULL reports nothing */
+    void *user;   /**< passed to @c fn */
 } xf_tap;
 
-/** Wrap @p inner (copied); @p out becomes the tapped link. The tap must outlive @p out. */
+/**
+ * Wrap @p inner (copied); @p out becomes the tapped link: its functions call
+ * the inner link's and report what moved. The tap must outlive @p out. No
+ * argument is checked: @p tap, @p inner and @p out must not be NULL, and
+ * @p inner must have a now_ms function (every chunk is stamped with it).
+ * @param tap    the tap's storage
+ * @param inner  the link to wrap
+ * @param fn     the callback (may be NULL)
+ * @param user   passed to @p fn
+ * @param out    receives the tapped link
+ */
 static inline void xf_tap_init(xf_tap *tap, const xf_hal *inner, xf_tap_fn fn, void *user, xf_hal *out);
 
 static inline xf_err xf__tap_write(void *ctx, const uint8_t *data, size_t len)

@@ -1,11 +1,13 @@
-/*
- * xf_units.h - physical units <-> raw wire integers, GNSS time, and the
- * camera-axis transform of vendor appendix 3.
+/**
+ * @file
+ * @brief Physical units to and from raw wire integers, GNSS time, and the
+ * camera-axis transform of vendor appendix 3 (docs/protocol.md §8).
  *
  * Saturation policy: every conversion to a raw value returns the nearest
  * value inside the field's documented range (rounding half away from zero);
  * NaN becomes 0. Angles that wrap (roll, yaw) are wrapped instead of
- * clamped. Conversions from raw never fail. No libm is needed.
+ * clamped. Conversions from raw never fail. No libm is needed. The
+ * functions keep no state and never block.
  */
 #ifndef XF_UNITS_H
 #define XF_UNITS_H
@@ -21,58 +23,205 @@ XF_BEGIN_DECLS
 #define XF_WEEK_MS           604800000UL /**< milliseconds in a GNSS week */
 #define XF_LEAP_SECONDS_2017 18          /**< GPS - UTC since 2017-01-01 (pass what is current) */
 
-/** Round @p v to an integer, clamped to [lo, hi]; NaN gives 0 (or the bound nearest 0). */
+/**
+ * Round to the nearest integer (half away from zero), clamped to [lo, hi].
+ * @param v   the value; NaN counts as 0
+ * @param lo  lowest result
+ * @param hi  highest result (>= @p lo)
+ * @return the rounded value in [lo, hi]: 0 for NaN (or the bound nearest 0
+ *   when 0 is outside [lo, hi])
+ */
 XF_API int32_t xf_units_round(double v, int32_t lo, int32_t hi);
-/** @p deg wrapped into [lo, lo + 360). */
+/**
+ * An angle wrapped into [lo, lo + 360).
+ * @param deg  the angle, deg
+ * @param lo   start of the range, deg
+ * @return the angle in [lo, lo + 360); for NaN or a magnitude above 1e12,
+ *   0 when @p lo < 0 and @p lo otherwise
+ */
 XF_API double xf_units_wrap360(double deg, double lo);
-/** Single-precision versions (for int16-range fields): an MCU's FPU does these in hardware,
- *  and the conversions of attitude, accelerations and velocities use only these. */
+/**
+ * Single-precision xf_units_round() (for int16-range fields): an MCU's FPU
+ * does these in hardware, and the conversions of attitude, accelerations and
+ * velocities use only these.
+ * @param v   the value; NaN counts as 0
+ * @param lo  lowest result
+ * @param hi  highest result (>= @p lo)
+ * @return the rounded value in [lo, hi]
+ */
 XF_API int32_t xf_units_roundf(float v, int32_t lo, int32_t hi);
+/**
+ * Single-precision xf_units_wrap360().
+ * @param deg  the angle, deg
+ * @param lo   start of the range, deg
+ * @return the angle in [lo, lo + 360); for NaN or a magnitude above 1e7,
+ *   0 when @p lo < 0 and @p lo otherwise
+ */
 XF_API float xf_units_wrap360f(float deg, float lo);
 
 /* host main frame */
-XF_API int16_t xf_carrier_roll_raw(float deg);  /**< wrapped into [-180, 180), 0.01 deg */
-XF_API int16_t xf_carrier_pitch_raw(float deg); /**< clamped to [-90, 90] */
-XF_API uint16_t xf_carrier_yaw_raw(float deg);  /**< wrapped into [0, 360) */
-XF_API int16_t xf_accel_raw(float mps2);        /**< 0.01 m/s^2, clamped to int16 */
-XF_API int16_t xf_velocity_raw(float mps);      /**< 0.01 m/s, clamped to int16 */
-/** Control angle (Euler or relative), clamped to [-180, 180] deg, 0.01 deg. */
+/**
+ * Carrier roll for xf_host_main.carrier_roll.
+ * @param deg  roll, deg (any value: wrapped into [-180, 180))
+ * @return 0.01 deg, in [-18000, 17999]
+ */
+XF_API int16_t xf_carrier_roll_raw(float deg);
+/**
+ * Carrier pitch for xf_host_main.carrier_pitch.
+ * @param deg  pitch, deg (clamped to [-90, 90])
+ * @return 0.01 deg, in [-9000, 9000]
+ */
+XF_API int16_t xf_carrier_pitch_raw(float deg);
+/**
+ * Carrier yaw for xf_host_main.carrier_yaw.
+ * @param deg  yaw, deg (any value: wrapped into [0, 360))
+ * @return 0.01 deg, in [0, 35999]
+ */
+XF_API uint16_t xf_carrier_yaw_raw(float deg);
+/**
+ * Carrier acceleration (gravity excluded) for xf_host_main.accel_north and
+ * the like.
+ * @param mps2  acceleration, m/s^2
+ * @return 0.01 m/s^2, clamped to int16
+ */
+XF_API int16_t xf_accel_raw(float mps2);
+/**
+ * Carrier velocity for xf_host_main.vel_north and the like.
+ * @param mps  velocity, m/s
+ * @return 0.01 m/s, clamped to int16
+ */
+XF_API int16_t xf_velocity_raw(float mps);
+/**
+ * Control angle (Euler or relative to the carrier) for the control
+ * quantities of xf_host_main.
+ * @param deg  angle, deg (clamped to [-180, 180]; not wrapped)
+ * @return 0.01 deg, in [-18000, 18000]
+ */
 XF_API int16_t xf_ctrl_angle_raw(float deg);
-/** Control rate: one raw unit is 0.1 deg/s divided by the main screen's zoom (zoom < 1 counts as 1); clamped to [-1500,
- * 1500]. */
+/**
+ * Control rate for the control quantities of xf_host_main: one raw unit is
+ * 0.1 deg/s divided by the main screen's zoom, so the raw value is
+ * dps x 10 x zoom.
+ * @param dps   desired angular velocity, deg/s
+ * @param zoom  the main screen's zoom, x (below 1, NaN included, counts as 1)
+ * @return the raw rate, clamped to [-1500, 1500]
+ */
 XF_API int16_t xf_ctrl_rate_raw(float dps, float zoom);
 
 /* host sub frame and gaze_geo */
-XF_API int32_t xf_deg7_raw(double deg); /**< 1e-7 deg, clamped to [-180, 180] deg */
-XF_API int32_t xf_mm_raw(double m);     /**< metres to mm, clamped to int32 */
+/**
+ * Latitude or longitude for the host sub frame and gaze_geo.
+ * @param deg  degrees
+ * @return 1e-7 deg, clamped to [-180, 180] deg
+ */
+XF_API int32_t xf_deg7_raw(double deg);
+/**
+ * Altitude or height for the host sub frame and gaze_geo.
+ * @param m  metres
+ * @return millimetres, clamped to int32
+ */
+XF_API int32_t xf_mm_raw(double m);
 
 /* GCU frames */
-XF_API float xf_cdeg(int32_t raw);                          /**< 0.01 deg -> deg */
-XF_API float xf_gcu_rate_dps(int16_t raw, uint8_t version); /**< 0.01 deg/s (V0.1) or 0.1 deg/s (V0.2) -> deg/s */
-XF_API int16_t xf_gcu_rate_raw(float dps, uint8_t version); /**< inverse, clamped to int16 */
-XF_API float xf_zoom_x(uint16_t raw);                       /**< 0.1 x -> x */
-XF_API uint16_t xf_zoom_raw(float x);                       /**< x -> 0.1 x, clamped to [0, 65535] */
-XF_API double xf_deg7(int32_t raw);                         /**< 1e-7 deg -> deg */
-/** target_distance in metres; returns 0 and leaves *m alone when there is no valid measurement (raw <= 0). */
+/**
+ * Angle from 0.01 deg (cam_roll, rel_angle_x, ...) to degrees.
+ * @param raw  0.01 deg
+ * @return degrees
+ */
+XF_API float xf_cdeg(int32_t raw);
+/**
+ * GCU angular velocity (xf_gcu_main.rate_x and the like) in deg/s.
+ * @param raw      the wire value
+ * @param version  the packet's protocol version: V0.1 sends 0.01 deg/s,
+ *   V0.2 (any version >= 2) 0.1 deg/s
+ * @return deg/s
+ */
+XF_API float xf_gcu_rate_dps(int16_t raw, uint8_t version);
+/**
+ * Inverse of xf_gcu_rate_dps() (GCU side: the simulator).
+ * @param dps      deg/s
+ * @param version  protocol version of the packet, as for xf_gcu_rate_dps()
+ * @return the wire value, clamped to int16
+ */
+XF_API int16_t xf_gcu_rate_raw(float dps, uint8_t version);
+/**
+ * Zoom from 0.1 x (zoom_cam1, zoom_cam2) to x.
+ * @param raw  0.1 x
+ * @return zoom factor, x
+ */
+XF_API float xf_zoom_x(uint16_t raw);
+/**
+ * Zoom factor to 0.1 x.
+ * @param x  zoom factor, x
+ * @return 0.1 x, clamped to [0, 65535]
+ */
+XF_API uint16_t xf_zoom_raw(float x);
+/**
+ * Latitude or longitude from 1e-7 deg to degrees.
+ * @param raw  1e-7 deg
+ * @return degrees
+ */
+XF_API double xf_deg7(int32_t raw);
+/**
+ * Laser range (xf_gcu_sub.target_distance) in metres.
+ * @param raw  0.1 m; <= 0 (-10, 0) means no valid measurement
+ * @param m    receives the distance in metres when valid (may be NULL);
+ *   left alone otherwise
+ * @return 1 when the measurement is valid, 0 when not
+ */
 XF_API int xf_distance_m(int32_t raw, float *m);
-/** zoom_to's ZZ for a desired zoom rate: -(rate x 10), rate clamped to [1.0, 3276.8]. */
+/**
+ * zoom_to's ZZ (xf_command.zoom) for a desired zoom rate: -(rate x 10).
+ * @param rate  zoom rate, x (clamped to [1.0, 3276.8])
+ * @return ZZ, in [-32768, -10]
+ */
 XF_API int16_t xf_zoom_to_rate_raw(float rate);
 
 /**
- * GNSS week and milliseconds of week to Unix time in ms. @p leap_seconds is
- * GPS - UTC (18 since 2017). XF_ERR_RANGE if week < 0 or ms >= a week.
+ * GNSS week and milliseconds of week to Unix time in ms.
+ * @param week          GNSS week number (>= 0)
+ * @param ms            milliseconds of the week (< ::XF_WEEK_MS)
+ * @param leap_seconds  GPS - UTC in seconds: 18 since 2017 (::XF_LEAP_SECONDS_2017); pass what is current
+ * @param unix_ms       receives milliseconds since 1970-01-01T00:00:00Z (UTC)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p unix_ms), ::XF_ERR_RANGE (week < 0
+ *   or ms >= a week)
  */
 XF_API xf_err xf_gnss_to_unix_ms(int16_t week, uint32_t ms, int leap_seconds, int64_t *unix_ms);
-/** Inverse; XF_ERR_RANGE before the GPS epoch or past week 32767. */
+/**
+ * Unix time in ms to GNSS week and milliseconds of week (for the host sub
+ * frame); the inverse of xf_gnss_to_unix_ms().
+ * @param unix_ms       milliseconds since 1970-01-01T00:00:00Z (UTC)
+ * @param leap_seconds  GPS - UTC in seconds (18 since 2017)
+ * @param week          receives the GNSS week number
+ * @param ms            receives the milliseconds of the week
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p week or @p ms), ::XF_ERR_RANGE
+ *   (before the GPS epoch or past week 32767); the outputs are written only
+ *   on success
+ */
 XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *week, uint32_t *ms);
 
 /**
  * Vendor appendix 3: the camera's absolute X/Y/Z-axis angles (deg, rotation
  * order Z-Y-X) to the reported Euler angles: roll = Y, pitch = -X,
  * yaw = Z + 90 wrapped into [0, 360).
+ * @param ax     X-axis angle, deg
+ * @param ay     Y-axis angle, deg
+ * @param az     Z-axis angle, deg
+ * @param roll   receives the roll, deg (may be NULL)
+ * @param pitch  receives the pitch, deg (may be NULL)
+ * @param yaw    receives the yaw, deg, in [0, 360) (may be NULL)
  */
 XF_API void xf_axes_to_euler(float ax, float ay, float az, float *roll, float *pitch, float *yaw);
-/** Inverse of xf_axes_to_euler; az comes out in [-180, 180). */
+/**
+ * Inverse of xf_axes_to_euler(): X = -pitch, Y = roll, Z = yaw - 90 wrapped
+ * into [-180, 180).
+ * @param roll   roll, deg
+ * @param pitch  pitch, deg
+ * @param yaw    yaw, deg
+ * @param ax     receives the X-axis angle, deg (may be NULL)
+ * @param ay     receives the Y-axis angle, deg (may be NULL)
+ * @param az     receives the Z-axis angle, deg, in [-180, 180) (may be NULL)
+ */
 XF_API void xf_euler_to_axes(float roll, float pitch, float yaw, float *ax, float *ay, float *az);
 
 #if XF_EMIT_DEFINITIONS

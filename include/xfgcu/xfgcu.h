@@ -1,8 +1,11 @@
-/*
- * xfgcu.h - the whole codec of xfgcu, the C driver library for XFRobot
+/**
+ * @file
+ * @brief The whole codec of xfgcu, the C driver library for XFRobot
  * (Xianfei) gimbals speaking the GCU private protocol (V0.1 and V0.2).
  *
- * Layers, each usable alone:
+ * Includes every codec header. Layers, each usable alone:
+ *
+ * @code{.unparsed}
  *   xf_config.h   compile-time options (#ifndef defaults, #error checks)
  *   xf_error.h    the one error enum and xf_strerror()
  *   xf_bytes.h    little-endian put/get helpers
@@ -12,6 +15,7 @@
  *   xf_command.h  typed parameters of every order; feedback
  *   xf_parser.h   streaming parser that resynchronises after noise
  *   xf_units.h    physical units, GNSS time, camera axes
+ * @endcode
  *
  * Header-only by default (every function static inline, no allocation, no
  * static state, no OS); define XF_SEPARATE_IMPLEMENTATION and compile

@@ -35,7 +35,7 @@ void hex_line(const uint8_t *bytes, size_t n, char *buf);
 /** Fix the length field and CRC of a packet of @p len bytes. */
 void seal_packet(uint8_t *bytes, size_t len);
 
-/** The appendix-1 packet of the vendor document (gcu-protocol.md section 9.1). */
+/** The appendix-1 packet of the vendor document (docs/protocol.md section 9.1). */
 extern const uint8_t appendix1[72];
 #define APPENDIX1_HEX                                                                                                  \
     "A8 E5 48 00 01 00 00 64 00 9C FF 05 94 FB 65 00 C0 5D 70 00 90 FF 70 00 40 80 C0 F7 40 80 01 00 00 00 00 00 00 "  \

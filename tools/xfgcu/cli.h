@@ -3,7 +3,7 @@
  * one-line error reporter, number parsing, the options that come before
  * COMMAND, and the entry point of each command.
  *
- * Contract: shared/spec/cli.md. Every failure prints exactly one line
+ * Contract: docs/cli.md. Every failure prints exactly one line
  * "xfgcu: ..." to stderr and maps to one of the exit codes below.
  */
 #ifndef XFGCU_CLI_H

@@ -1,7 +1,7 @@
 /*
  * fields.h - the named fields of the four frames, as data.
  *
- * One row per canonical field name (gcu-protocol.md sections 3-6 and 10):
+ * One row per canonical field name (docs/protocol.md sections 3-6 and 10):
  * where the member lives in xf_host_packet / xf_gcu_packet, its wire type,
  * and how a person reads it. JSON output, JSON input and the readable table
  * all walk these rows, so a field cannot be printed under one name and

@@ -1,7 +1,7 @@
 /*
  * table.c - the readable table of decode.
  *
- * Units follow gcu-protocol.md; the GCU's angular rates depend on the
+ * Units follow docs/protocol.md; the GCU's angular rates depend on the
  * packet's version (0.01 deg/s in V0.1, 0.1 deg/s in V0.2), and the host's
  * control quantities on the gimbal's mode, which the packet does not say:
  * both readings are shown.
