@@ -69,5 +69,27 @@ if [ "$status" = 0 ] && { [ -d "$work/myapp2/build/xfgcu/tests" ] || [ -d "$work
   echo "README recipe: add_subdirectory built xfgcu's tests or tools for a consumer" >&2
   status=1
 fi
+# The README's promise for a machine without cmocka: configure says so in one line, and the
+# library, the program and the examples still build. (pkg-config is shown every .pc file but
+# cmocka's.)
+if [ "$status" = 0 ]; then
+  echo "--- without cmocka"
+  pc=$work/pc-no-cmocka
+  mkdir -p "$pc"
+  for d in $(pkg-config --variable pc_path pkg-config | tr : ' '); do
+    [ -d "$d" ] && find "$d" -maxdepth 1 -name '*.pc' ! -name 'cmocka.pc' -exec ln -sf {} "$pc/" \;
+  done
+  if ! PKG_CONFIG_LIBDIR=$pc cmake -S "$work/xfgcu" -B "$work/no-cmocka" -DCMAKE_BUILD_TYPE=Release \
+         > "$work/no-cmocka.log" 2>&1 ||
+     ! grep -q 'xfgcu: tests off: cmocka not found' "$work/no-cmocka.log" ||
+     ! cmake --build "$work/no-cmocka" --parallel "$(nproc)" >> "$work/no-cmocka.log" 2>&1 ||
+     [ ! -x "$work/no-cmocka/tools/xfgcu" ] || [ -d "$work/no-cmocka/tests" ]; then
+    echo "README: a build without cmocka did not go as promised; its output:" >&2
+    tail -20 "$work/no-cmocka.log" >&2
+    status=1
+  else
+    grep 'xfgcu: tests off' "$work/no-cmocka.log" | sed 's/^/    > /'
+  fi
+fi
 [ "$status" = 0 ] && echo "README recipes: all ran as printed"
 exit "$status"
