@@ -626,12 +626,19 @@ XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t 
     for (i = 0; i < info->nfields; i++) {
         xf_field f = (xf_field)info->fields[i];
         int32_t v = xf_command_get(cmd, f);
-        switch (xf_field_size(f)) {
+        size_t sz = xf_field_size(f);
+        /* Never true (n is the sum of the sizes), but it shows gcc 12 -O3
+         * that the writes stay in params[0, n) of a caller's 1-byte array
+         * (-Warray-bounds, -Wstringop-overflow: tests/matrix/user_tu.c). */
+        if (off + sz > n) {
+            break;
+        }
+        switch (sz) {
         case 1u: params[off] = (uint8_t)(v & 0xFF); break;
         case 2u: xf_put_u16le(params + off, (uint16_t)(v & 0xFFFF)); break;
         default: xf_put_s32le(params + off, v); break;
         }
-        off += xf_field_size(f);
+        off += sz;
     }
     if (out_len != NULL) {
         *out_len = n;
@@ -661,13 +668,17 @@ XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len
         int32_t v;
         int is_signed = (f == XF_F_HOURS || f == XF_F_DX || f == XF_F_DY || f == XF_F_ZOOM || f == XF_F_TEMP_HIGH ||
                          f == XF_F_TEMP_LOW);
-        switch (xf_field_size(f)) {
+        size_t sz = xf_field_size(f);
+        if (off + sz > len) { /* never (len was checked): as in xf_command_encode() */
+            return XF_ERR_PARAMS;
+        }
+        switch (sz) {
         case 1u: v = is_signed ? xf_u8_to_s8(params[off]) : params[off]; break;
         case 2u: v = is_signed ? xf_get_s16le(params + off) : xf_get_u16le(params + off); break;
         default: v = xf_get_s32le(params + off); break;
         }
         xf_command_set(&tmp, f, v);
-        off += xf_field_size(f);
+        off += sz;
     }
     {
         xf_err err = xf_command_check(&tmp, version, bad_field);
