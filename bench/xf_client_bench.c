@@ -23,7 +23,9 @@
 #include <unistd.h>
 
 #include "xfgcu/xf_client.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_simlink.h"
+#include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/xf_sim.h"
 
 /* ---- counting the heap ------------------------------------------------------------- */
@@ -109,12 +111,6 @@ static xf_err pass_read(void *ctx, uint8_t *b, size_t cap, size_t *n)
     return inner->read(inner->ctx, b, cap, n);
 }
 
-static uint32_t pass_now(void *ctx)
-{
-    xf_hal *inner = (xf_hal *)ctx;
-    return inner->now_ms(inner->ctx);
-}
-
 static int pass_fd(void *ctx) { return xf_hal_fd((xf_hal *)ctx); }
 
 static void *sim_thread(void *arg)
@@ -145,7 +141,6 @@ static int sim_open(sim_side *s, size_t i, int kind, const char *pty_link)
     stamped.ctx = &s->inner[i];
     stamped.write = stamped_write;
     stamped.read = pass_read;
-    stamped.now_ms = pass_now;
     stamped.fd = pass_fd;
     g_stamp_side = s;
     xf_sim_init(&s->sim[i], NULL);

@@ -41,7 +41,7 @@ set(XFGCU_DOCS_OUTPUT_DIR ${PROJECT_BINARY_DIR}/docs/api)
 set(_xf_doxyfile ${PROJECT_BINARY_DIR}/docs/Doxyfile)
 configure_file(${PROJECT_SOURCE_DIR}/docs/Doxyfile.in ${_xf_doxyfile} @ONLY)
 
-file(GLOB _xf_doc_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/include/xfgcu/*.h)
+file(GLOB_RECURSE _xf_doc_headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/include/xfgcu/*.h)
 # Touched only when Doxygen succeeds, so a run that failed on a warning is run again.
 set(_xf_doc_stamp ${XFGCU_DOCS_OUTPUT_DIR}/xfgcu_docs.stamp)
 

@@ -9,7 +9,9 @@
 #include <stdlib.h>
 
 #include "xfgcu/xf_client.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_simlink.h"
+#include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/xf_sim.h"
 
 static void on_result(void *user, const xf_cmd_result *r)

@@ -7,7 +7,9 @@
 #include <stdio.h>
 
 #include "xfgcu/xf_client.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_simlink.h"
+#include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/xf_sim.h"
 
 int main(int argc, char **argv)

@@ -4,6 +4,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+echo "--- generated files are what their generators make"
+scripts/gen_crc_tables.py --check
+scripts/gen_manpage.py docs/cli.md --check docs/xfgcu.1
+echo "generated files: fresh"
+
 echo "--- cppcheck"
 cppcheck --enable=warning,style,performance,portability --std=c99 --error-exitcode=2 --inline-suppr --quiet \
   --suppress=variableScope -UXF_CONFIG_HEADER -Iinclude src include tools/xfgcu examples

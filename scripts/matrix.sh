@@ -19,8 +19,8 @@ for cc in gcc clang; do
       "$cc" -std="$std" "${warn[@]}" -Iinclude -c "$src" -o "$out/$(basename "$src").$cc.$std.o"
       n=$((n + 1))
     done
-    # the codec compiled once (XF_SEPARATE_IMPLEMENTATION) and with its options
-    for defs in "-DXF_SEPARATE_IMPLEMENTATION" "-DXF_CRC_TABLE_256=1" "-DXF_PACKET_MAX_LEN=84" "-DXF_NO_LIBC=1"; do
+    # the codec's implementation translation unit with each option
+    for defs in "-DXF_CRC_TABLE_256=1" "-DXF_PACKET_MAX_LEN=84" "-DXF_NO_LIBC=1" "-DXF_PARSER_MEMO=0"; do
       "$cc" -std="$std" "${warn[@]}" $defs -Iinclude -c src/xf_codec.c -o "$out/codec.$cc.$std.o"
       n=$((n + 1))
     done
@@ -34,6 +34,24 @@ for cxx in g++ clang++; do
   done
 done
 echo "compiler matrix: $n compilations, all clean"
+
+# Every header alone, as C and as C++; every portable header (all but posix/) alone for a bare-metal
+# target: where a header lives says where it builds.
+nh=0
+for h in include/xfgcu/*.h include/xfgcu/posix/*.h; do
+  inc=${h#include/}
+  printf '#include "%s"\ntypedef int xf_matrix_nonempty;\n' "$inc" | gcc -std=c99 "${warn[@]}" -Iinclude -fsyntax-only -x c -
+  printf '#include "%s"\ntypedef int xf_matrix_nonempty;\n' "$inc" | g++ -std=c++11 -Wall -Wextra -Werror -pedantic-errors -Iinclude -fsyntax-only -x c++ -
+  nh=$((nh + 1))
+done
+nf=0
+for h in include/xfgcu/*.h; do
+  printf '#include "%s"\ntypedef int xf_matrix_nonempty;\n' "${h#include/}" |
+    arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -ffreestanding -std=c99 -Wall -Wextra -Werror -Iinclude \
+      -fsyntax-only -x c -
+  nf=$((nf + 1))
+done
+echo "headers: $nh alone as C and C++; the $nf portable ones alone freestanding (arm-none-eabi-gcc)"
 
 # The README's example must compile as printed (compiled only: it would talk to a real GCU).
 # It is either a whole program (it has a main) or a fragment, wrapped here in a function.
@@ -53,7 +71,7 @@ gcc -std=c99 -Wall -Wextra -Werror -Iinclude -c "$out/readme_example.c" -o "$out
 echo "README example: compiles"
 
 # ---- a user's translation unit -------------------------------------------------------------
-# tests/matrix/user_tu.c includes xfgcu/xfgcu.h (header-only, the default), calls every public
+# tests/matrix/user_tu.c defines XF_IMPLEMENTATION and includes xfgcu/xfgcu.h, calls every public
 # codec function with buffers of 1, 4 and 16 bytes (which must fail cleanly) and of
 # XF_PACKET_MAX_LEN and 4096 bytes, and checks its results. First: does it still call every
 # public function and function-like macro of the headers xfgcu.h includes (non-xf__ names)?

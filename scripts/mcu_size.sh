@@ -7,7 +7,7 @@ out=build/mcu
 mkdir -p "$out"
 
 flags=(-mcpu=cortex-m4 -mthumb -Os -std=c99 -pedantic-errors -Wall -Wextra -Wconversion -Werror -Iinclude)
-arm-none-eabi-gcc "${flags[@]}" -DXF_SEPARATE_IMPLEMENTATION -c src/xf_codec.c -o "$out/xf_codec.o"
+arm-none-eabi-gcc "${flags[@]}" -c src/xf_codec.c -o "$out/xf_codec.o"
 echo "the codec compiled once for a Cortex-M4 (-Os; every function, before --gc-sections):"
 arm-none-eabi-size "$out/xf_codec.o"
 

@@ -33,8 +33,6 @@ void xf_client_config_init(xf_client_config *cfg)
 
 size_t xf_client_size(void) { return sizeof(xf_client); }
 
-unsigned long xf_options_word(void) { return XF_OPTIONS_WORD; }
-
 xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
                               size_t size)
 {
@@ -116,9 +114,20 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
     xf__publish(c, &r);
 }
 
+/* Finish every command queued when the sweep starts, and only those: one
+ * that on_result submits meanwhile survives it (else a callback that always
+ * resubmits would never let it end). Ids go out in submission order and
+ * commands leave from the head, so the newer ones are the queue's last
+ * `added` (fewer once a nested sweep has taken every older one); 0 is
+ * skipped on the wrap. */
 static void xf__fail_all(xf_client *c, xf_cmd_status st)
 {
-    while (c->q_count > 0u) {
+    uint32_t first_new = c->next_id;
+    for (;;) {
+        uint32_t added = c->next_id - first_new - ((c->next_id < first_new) ? 1u : 0u);
+        if (c->q_count <= added) {
+            break;
+        }
         xf__finish(c, st, NULL);
     }
 }
@@ -465,8 +474,8 @@ static xf_err xf__send(xf_client *c)
     order = xf__next_order(c, &params, &n);
     len = XF_PACKET_MIN_LEN + n;
     /* header, order, parameters and CRC as the codec's packer writes them */
-    xf__put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
-    xf__put_tail(buf, len, order, params, (uint8_t)n);
+    xf_packet_put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
+    xf_packet_put_tail(buf, len, order, params, (uint8_t)n);
     err = c->hal.write(c->hal.ctx, buf, len);
     if (err != XF_OK) {
         c->health.send_errors++;
@@ -506,6 +515,10 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
     if (c == NULL) {
         return XF_ERR_ARG;
     }
+    if (c->busy) {
+        return XF_ERR_BUSY; /* from a callback: the outer step (or sweep) is half done */
+    }
+    c->busy = 1;
     c->now_ms = now_ms;
     if (!c->started) {
         c->started = 1;
@@ -524,6 +537,7 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
         xf__update_link(c);
     }
     xf__update_window(c);
+    c->busy = 0;
     return (rx != XF_OK) ? rx : tx;
 }
 
@@ -662,7 +676,10 @@ size_t xf_client_pending(const xf_client *c) { return (c == NULL) ? 0u : c->q_co
 void xf_client_cancel_all(xf_client *c)
 {
     if (c != NULL) {
+        uint8_t outer = c->busy; /* set when called from a callback of a step */
+        c->busy = 1;
         xf__fail_all(c, XF_CMD_CANCELLED);
+        c->busy = outer;
     }
 }
 

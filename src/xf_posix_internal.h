@@ -2,7 +2,7 @@
 #ifndef XF_POSIX_INTERNAL_H
 #define XF_POSIX_INTERNAL_H
 
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
 
 /* errno -> our code: who is at fault decides the code, the text keeps the detail. */
 xf_err xf__errno_code(int e);

@@ -4,7 +4,8 @@
 #include <poll.h>
 
 #include "xfgcu/xf_client.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/xf_sim.h"
 
 #define XF_POLL_MAX 256

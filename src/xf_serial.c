@@ -352,12 +352,6 @@ static xf_err xf__serial_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_l
     return XF_OK;
 }
 
-static uint32_t xf__serial_now(void *ctx)
-{
-    (void)ctx;
-    return xf_posix_now_ms();
-}
-
 static int xf__serial_fd(void *ctx)
 {
     xf_serial *s = (xf_serial *)ctx;
@@ -370,7 +364,6 @@ void xf_serial_hal(xf_serial *s, xf_hal *hal)
         hal->ctx = s;
         hal->write = xf__serial_write;
         hal->read = xf__serial_read;
-        hal->now_ms = xf__serial_now;
         hal->fd = xf__serial_fd;
     }
 }

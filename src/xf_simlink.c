@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "xf_posix_internal.h"
+#include "xfgcu/posix/xf_simlink.h"
 
 static void xf__simlink_reset(xf_simlink *l, xf_simlink_kind kind)
 {
@@ -330,12 +331,6 @@ static xf_err xf__simlink_write(void *ctx, const uint8_t *data, size_t len)
     return XF_OK;
 }
 
-static uint32_t xf__simlink_now(void *ctx)
-{
-    (void)ctx;
-    return xf_posix_now_ms();
-}
-
 static int xf__simlink_fd(void *ctx)
 {
     xf_simlink *l = (xf_simlink *)ctx;
@@ -351,7 +346,6 @@ void xf_simlink_hal(xf_simlink *l, xf_hal *hal)
         hal->ctx = l;
         hal->read = xf__simlink_read;
         hal->write = xf__simlink_write;
-        hal->now_ms = xf__simlink_now;
         hal->fd = xf__simlink_fd;
     }
 }

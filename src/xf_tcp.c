@@ -286,12 +286,6 @@ static xf_err xf__tcp_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
     return XF_OK;
 }
 
-static uint32_t xf__tcp_now(void *ctx)
-{
-    (void)ctx;
-    return xf_posix_now_ms();
-}
-
 static int xf__tcp_fd(void *ctx)
 {
     xf_tcp *t = (xf_tcp *)ctx;
@@ -304,7 +298,6 @@ void xf_tcp_hal(xf_tcp *t, xf_hal *hal)
         hal->ctx = t;
         hal->write = xf__tcp_write;
         hal->read = xf__tcp_read;
-        hal->now_ms = xf__tcp_now;
         hal->fd = xf__tcp_fd;
     }
 }

@@ -214,12 +214,6 @@ static xf_err xf__udp_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
     return XF_OK;
 }
 
-static uint32_t xf__udp_now(void *ctx)
-{
-    (void)ctx;
-    return xf_posix_now_ms();
-}
-
 static int xf__udp_fd(void *ctx) { return ((xf_udp *)ctx)->fd; }
 
 void xf_udp_hal(xf_udp *u, xf_hal *hal)
@@ -228,7 +222,6 @@ void xf_udp_hal(xf_udp *u, xf_hal *hal)
         hal->ctx = u;
         hal->write = xf__udp_write;
         hal->read = xf__udp_read;
-        hal->now_ms = xf__udp_now;
         hal->fd = xf__udp_fd;
     }
 }

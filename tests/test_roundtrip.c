@@ -10,8 +10,8 @@
  * with the reference rules of test_orders.h, and every command that passes
  * must encode to the reference bytes and decode back equal.
  *
- * This file is also built with XF_SEPARATE_IMPLEMENTATION against a
- * compiled src/xf_codec.c (test_roundtrip_separate).
+ * This file is also built without XF_IMPLEMENTATION, against the compiled
+ * codec library (test_roundtrip_library).
  */
 #include "test_fields.h"
 #include "test_orders.h"

@@ -71,12 +71,6 @@ static xf_err uart_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
     return XF_OK;
 }
 
-static uint32_t uart_now(void *ctx)
-{
-    (void)ctx;
-    return board_millis();
-}
-
 void uart_hal_init(uint32_t baud, xf_hal *hal)
 {
     USART2_BRR = (BOARD_CLOCK_HZ + baud / 2u) / baud;
@@ -85,6 +79,5 @@ void uart_hal_init(uint32_t baud, xf_hal *hal)
     hal->ctx = NULL;
     hal->write = uart_write;
     hal->read = uart_read;
-    hal->now_ms = uart_now;
     hal->fd = NULL; /* no descriptors on an MCU */
 }

@@ -41,14 +41,8 @@
  *
  * Callbacks (xf_client_config) run on the thread that steps the client, from
  * inside xf_client_step() (and on_result also from inside
- * xf_client_cancel_all()). A callback may read the client's state and may
- * call xf_client_submit(), xf_client_cancel_all(),
- * xf_client_external_track(), xf_client_external_track_stop() and the
- * xf_client_set_*() inputs; it may step or drive other clients. It must not
- * call xf_client_step() (or xf_posix_poll()) on its own client: a step is
- * not re-entrant, and a nested one would read and parse new bytes in the
- * middle of the outer step's parse. Pointers a callback receives are valid
- * during the call only.
+ * xf_client_cancel_all()). What they may call on their own client is listed
+ * at the callback types (xf_on_result_fn): everything but a step.
  */
 #ifndef XF_CLIENT_H
 #define XF_CLIENT_H
@@ -215,14 +209,53 @@ typedef struct xf_gnss {
 } xf_gnss;
 
 /**
+ * @name Callbacks, and what they may call
+ *
+ * The four callbacks run on the thread that steps the client, from inside
+ * xf_client_step(); on_result also from inside xf_client_cancel_all(). On
+ * its own client a callback may call:
+ *
+ * - Reading state, yes: xf_client_telemetry(), xf_client_health(),
+ *   xf_client_parser_stats(), xf_client_link(), xf_client_command_status(),
+ *   xf_client_pending(), xf_client_next_deadline(), xf_telemetry_convert().
+ *   They give the state as it is at that moment: on_bytes for a reply runs
+ *   before the client has processed it; in on_link, and in on_result for
+ *   ::XF_CMD_LINK_LOST, xf_health.link is already the new state; in
+ *   on_result the command's own status is already final.
+ * - Commands, yes: xf_client_submit() and xf_client_external_track_stop()
+ *   queue behind the commands already there. One submitted while every
+ *   command is being finished (link lost, xf_client_cancel_all()) is not
+ *   part of that sweep: it stays queued, and runs next.
+ * - xf_client_cancel_all(), yes: every command queued at that moment is
+ *   cancelled and reported to on_result from inside the call (nested in the
+ *   callback).
+ * - Inputs, yes: xf_client_set_carrier(), xf_client_set_gnss(),
+ *   xf_client_set_rates(), xf_client_set_angles(),
+ *   xf_client_clear_control(), xf_client_external_track(). The next packet
+ *   built uses them (this step's, if one is due and not yet sent). Pass the
+ *   time of the step (on_bytes has it).
+ * - xf_client_step(), no: a step is not re-entrant (a nested one would read
+ *   and parse new bytes in the middle of the outer step's parse), so called
+ *   from a callback it returns ::XF_ERR_BUSY at once and does nothing. Nor
+ *   xf_posix_poll() with this client among its clients.
+ * - xf_client_init(), no: it would wipe the client under the step that runs
+ *   the callback (not checked).
+ *
+ * A callback may step and drive other clients. Pointers it receives are
+ * valid during the call only.
+ * @{
+ */
+
+/**
  * A command reached its final status, exactly once per submitted command
  * (and, for calibration, once more earlier with ::XF_CMD_OPERATING). Runs
  * inside xf_client_step(), or inside xf_client_cancel_all() for
- * ::XF_CMD_CANCELLED; what it may call: see xf_client.h. A command submitted
+ * ::XF_CMD_CANCELLED; what it may call: see above. A command submitted
  * from here while the client is finishing every queued command (link lost,
- * xf_client_cancel_all()) is finished in the same sweep with the same status
- * and reported again: never resubmit unconditionally on ::XF_CMD_LINK_LOST
- * or ::XF_CMD_CANCELLED, or the sweep never ends.
+ * xf_client_cancel_all()) survives that sweep, so a callback that resubmits
+ * what failed does not keep the sweep going: the new command runs next (and
+ * with the link down, ends in ::XF_CMD_LINK_LOST at its timeout unless a
+ * reply comes first).
  * @param user    xf_client_config.user
  * @param result  the result, valid during the call only (final results are
  *   also kept for xf_client_command_status())
@@ -231,16 +264,17 @@ typedef void (*xf_on_result_fn)(void *user, const xf_cmd_result *result);
 /**
  * A valid reply arrived and the telemetry was updated: once per reply,
  * after that reply's on_link and on_result. Runs inside xf_client_step();
- * what it may call: see xf_client.h.
+ * what it may call: see above.
  * @param user       xf_client_config.user
  * @param telemetry  the client's telemetry (as xf_client_telemetry() gives
  *   it); it changes with the next reply
  */
 typedef void (*xf_on_telemetry_fn)(void *user, const xf_telemetry *telemetry);
 /**
- * The link state changed. On ::XF_LINK_DOWN every queued and running
- * command has already been finished with ::XF_CMD_LINK_LOST. Runs inside
- * xf_client_step(); what it may call: see xf_client.h.
+ * The link state changed. On ::XF_LINK_DOWN every command that was queued
+ * or running has already been finished with ::XF_CMD_LINK_LOST (those that
+ * on_result submitted meanwhile stay queued). Runs inside
+ * xf_client_step(); what it may call: see above.
  * @param user   xf_client_config.user
  * @param state  the new state
  */
@@ -249,8 +283,8 @@ typedef void (*xf_on_link_fn)(void *user, xf_link_state state);
  * Every packet sent and received, raw (for tracing and recording): each
  * packet the link accepted (::XF_DIR_HOST), and each valid GCU packet
  * received (::XF_DIR_GCU), before the client processes it. Bytes that belong
- * to no valid packet are not reported (xf_tap.h reports the raw stream).
- * Runs inside xf_client_step(); what it may call: see xf_client.h.
+ * to no valid packet are not reported (wrap the HAL to see the raw stream).
+ * Runs inside xf_client_step(); what it may call: see above.
  * @param user    xf_client_config.user
  * @param dir     ::XF_DIR_HOST (sent) or ::XF_DIR_GCU (received)
  * @param data    the packet, valid during the call only
@@ -258,6 +292,8 @@ typedef void (*xf_on_link_fn)(void *user, xf_link_state state);
  * @param now_ms  the time given to xf_client_step()
  */
 typedef void (*xf_on_bytes_fn)(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
+
+/** @} */
 
 /**
  * Limits: the ages and link times are uint16_t, up to 65535 ms (a minute
@@ -352,6 +388,7 @@ typedef struct xf_client {
     uint8_t started;                      /**< private: the first step has run */
     uint8_t awaiting;                     /**< private: the last packet sent has had no reply yet */
     uint8_t window_awaiting;              /**< private: the same, when the window started */
+    uint8_t busy; /**< private: in xf_client_step() or xf_client_cancel_all(): a nested step returns ::XF_ERR_BUSY */
 } xf_client;
 
 /**
@@ -401,12 +438,6 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
 size_t xf_client_size(void);
 
 /**
- * ::XF_OPTIONS_WORD of the library (for a foreign-function interface).
- * @return the option word the library was built with
- */
-unsigned long xf_options_word(void);
-
-/**
  * Do what is due at @p now_ms: read and parse what arrived, update
  * telemetry and health, resolve commands, send the next packet when due.
  * Callbacks run from here. Returns XF_OK, or the transport's error of this
@@ -417,12 +448,14 @@ unsigned long xf_options_word(void);
  * at most one packet: a step that comes late sends one packet, not a burst
  * to catch up. Never waits itself, but takes as long as the link's read and
  * write (a POSIX serial or TCP write waits at most 100 ms for a full driver
- * buffer). Not re-entrant: never call it from one of the client's
- * callbacks.
+ * buffer). Not re-entrant: called from one of the client's callbacks
+ * it returns ::XF_ERR_BUSY and does nothing.
  * @param c       the client
  * @param now_ms  the time, ms, on a wrapping clock the application keeps
  *   (xf_posix_now_ms() on POSIX); the same clock for every call and input
- * @return ::XF_OK; ::XF_ERR_ARG (NULL @p c); or the link's error of this
+ * @return ::XF_OK; ::XF_ERR_ARG (NULL @p c); ::XF_ERR_BUSY (called from one
+ *   of the client's callbacks, or from inside xf_client_cancel_all(): nothing
+ *   done, not even the time taken); or the link's error of this
  *   step: a read error (::XF_ERR_CLOSED, ::XF_ERR_IO: reading stops for
  *   this step, the packet due is still sent) takes precedence over a write
  *   error (::XF_ERR_AGAIN, ::XF_ERR_CLOSED, ::XF_ERR_IO: counted in
@@ -554,7 +587,10 @@ size_t xf_client_pending(const xf_client *c);
  * xf_client_command_status(). A running command may already have reached
  * the GCU and be executed all the same; the next packet is a null. The
  * external-track stream is not stopped (xf_client_external_track_stop()).
- * Does nothing for a NULL @p c.
+ * Commands that on_result submits meanwhile are not cancelled: they stay
+ * queued. Never blocks; may be called from the client's callbacks (then
+ * its on_result calls nest in the callback's). Does nothing for a NULL
+ * @p c.
  * @param c  the client
  */
 void xf_client_cancel_all(xf_client *c);

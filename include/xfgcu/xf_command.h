@@ -358,25 +358,18 @@ XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed
 #define XF__Z        0u
 #define XF__V_0_OR_2 0xFEu /* TT is 0 or 2 (off / on, stop / keep going) */
 
-static inline const xf_order_info *xf__order_table(void)
-{
-    static const xf_order_info table[XF_ORDER_COUNT] = {XF__ORDER_ROWS(XF__ROW)};
-    return table;
-}
+/* The tables are at file scope, under their own names: defined where the
+ * definitions are emitted only, once a program (nm shows each once). */
+static const xf_order_info xf__order_rows[XF_ORDER_COUNT] = {XF__ORDER_ROWS(XF__ROW)};
+static inline const xf_order_info *xf__order_table(void) { return xf__order_rows; }
 
 /* The largest TT of each row in V0.1 and V0.2 (or XF__V_0_OR_2), in the table's order. */
-static inline const uint8_t (*xf__value_max(void))[2]
-{
-    static const uint8_t vmax[XF_ORDER_COUNT][2] = {XF__ORDER_ROWS(XF__VMAX)};
-    return vmax;
-}
+static const uint8_t xf__order_vmax[XF_ORDER_COUNT][2] = {XF__ORDER_ROWS(XF__VMAX)};
+static inline const uint8_t (*xf__value_max(void))[2] { return xf__order_vmax; }
 
 /* The names of the table's rows, in its order, each ended by a NUL. */
-static inline const char *xf__order_names(void)
-{
-    static const char names[] = XF__ORDER_ROWS(XF__NAME);
-    return names;
-}
+static const char xf__order_name_list[] = XF__ORDER_ROWS(XF__NAME);
+static inline const char *xf__order_names(void) { return xf__order_name_list; }
 
 /* The @p i-th of the NUL-ended names packed in @p names. */
 static inline const char *xf__nth_name(const char *names, size_t i)
@@ -450,13 +443,15 @@ XF_API const char *xf_mode_name(uint8_t mode)
     }
 }
 
+/* An array, not a literal per member: the bad-field reports of
+ * xf_command_check are all a firmware keeps of the codec's names. */
+static const char xf__field_name_list[] = "cameras\0value\0hours\0x0\0y0\0x1\0y1\0dx\0dy\0zoom\0temp_high\0"
+                                          "temp_low\0longitude\0latitude\0altitude\0?";
+
 XF_API const char *xf_field_name(xf_field f)
 {
-    /* An array, not a literal per member: the bad-field reports of
-     * xf_command_check are all a firmware keeps of the codec's names. */
-    static const char names[] = "cameras\0value\0hours\0x0\0y0\0x1\0y1\0dx\0dy\0zoom\0temp_high\0temp_low\0"
-                                "longitude\0latitude\0altitude\0?";
-    return xf__nth_name(names, ((unsigned)f <= (unsigned)XF_F_ALTITUDE) ? (size_t)f : (size_t)XF_F_ALTITUDE + 1u);
+    return xf__nth_name(xf__field_name_list,
+                        ((unsigned)f <= (unsigned)XF_F_ALTITUDE) ? (size_t)f : (size_t)XF_F_ALTITUDE + 1u);
 }
 
 XF_API size_t xf_field_size(xf_field f)

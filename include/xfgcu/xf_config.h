@@ -10,8 +10,8 @@
  *
  * - ::XF_CRC_TABLE_256: 0 (default) the vendor's 16-entry nibble table, two
  *   lookups per byte; 1 a 256-entry table, one lookup per byte.
- * - ::XF_PACKET_MAX_LEN: largest packet the parser and the packet structs
- *   hold, 84..255 (default 255, the protocol's own limit). An MCU that only
+ * - ::XF_PACKET_MAX_LEN: largest packet the parser accepts and holds,
+ *   84..255 (default 255, the protocol's own limit). An MCU that only
  *   receives GCU replies (72 or 73 bytes) may set 84 to save RAM; longer
  *   packets are then counted as length errors.
  * - ::XF_PARSER_MEMO: 1 (default) the parser keeps, for each byte in its
@@ -20,12 +20,9 @@
  *   less per ring slot, and less flash): candidates after a failure are
  *   checked by re-reading them, still exact, at O(packet length) each on
  *   adversarial input.
- * - `XF_SEPARATE_IMPLEMENTATION`: undefined (default) every function is
- *   `static inline` in the headers (header-only). Defined (in every
- *   translation unit): the headers only declare; compile src/xf_codec.c once
- *   (it defines `XF_IMPLEMENTATION`) so the code exists once in flash.
- * - ::XF_API: storage class of every function; derived from the option above
- *   unless you define it yourself.
+ * - `XF_IMPLEMENTATION`: defined in exactly one translation unit (the
+ *   library's src/xf_codec.c, or one file of yours), before the first
+ *   include, where the codec's functions and tables are defined (::XF_API).
  * - ::XF_NO_LIBC: 0 (default) memcpy, memset and memchr from `<string.h>`;
  *   1 for freestanding targets without a C library (riscv64-unknown-elf
  *   -nostdlib, say): small loops of our own, and `<string.h>` is never
@@ -157,26 +154,27 @@
 #define XF_OPTIONS_CHECK ((unsigned long)(XF_OPTIONS_WORD XF__OPTIONS(XF__OPTION_READ)))
 
 /**
- * Storage class of every codec function. Header-only builds (the default)
- * get `static inline`; with `XF_SEPARATE_IMPLEMENTATION` defined it is empty
- * (external linkage, the definitions compiled once in src/xf_codec.c).
- * Define it yourself to override both.
+ * Storage class of every codec function: external linkage, so that each
+ * function and each table is defined once in a program, in the one
+ * translation unit that defines `XF_IMPLEMENTATION` (the stb way). The
+ * compiled library (src/xf_codec.c, the `xfgcu::codec` target) is that
+ * translation unit; without it, put
+ * @code
+ *   #define XF_IMPLEMENTATION
+ *   #include "xfgcu/xfgcu.h"
+ * @endcode
+ * in one .c file of yours. Define `XF_API` yourself to add attributes.
  */
 #ifndef XF_API
-#ifdef XF_SEPARATE_IMPLEMENTATION
 #define XF_API
-#else
-#define XF_API static inline
-#endif
 #endif
 
 /**
- * 1 where the headers emit the codec's function definitions: in header-only
- * builds, and in the one translation unit that defines `XF_IMPLEMENTATION`
- * (src/xf_codec.c) when `XF_SEPARATE_IMPLEMENTATION` is defined. 0 elsewhere:
- * the headers only declare.
+ * 1 in the translation unit that defines `XF_IMPLEMENTATION`, where the
+ * headers emit the codec's definitions (functions, tables, the option
+ * symbols); 0 elsewhere, where they only declare.
  */
-#if !defined(XF_SEPARATE_IMPLEMENTATION) || defined(XF_IMPLEMENTATION)
+#ifdef XF_IMPLEMENTATION
 #define XF_EMIT_DEFINITIONS 1
 #else
 #define XF_EMIT_DEFINITIONS 0
@@ -211,6 +209,10 @@
 
 XF_BEGIN_DECLS
 XF__OPTIONS(XF__OPTION_DECLARE)
+#if XF_EMIT_DEFINITIONS
+#define XF__OPTION_DEFINE(name, value) const unsigned char XF__OPTION_SYM(name, value) = 0;
+XF__OPTIONS(XF__OPTION_DEFINE)
+#endif
 XF_END_DECLS
 
 #endif /* XF_CONFIG_H */

@@ -24,10 +24,6 @@
  *      n = 0; keep calling, a backend that reconnects does so here), or
  *      XF_ERR_IO.
  *
- *  now_ms(ctx)
- *      A monotonic millisecond clock. It wraps at 2^32: compare times with
- *      xf_ms_since(), never with < or >.
- *
  *  fd(ctx)      (optional, POSIX only; NULL on an MCU)
  *      The descriptor to wait on for readability, or -1 while there is none
  *      (closed, reconnecting). It may change after XF_ERR_CLOSED, so ask
@@ -37,6 +33,14 @@
  * A backend's functions are called from one thread only (the one that
  * steps the client or simulator using it), never concurrently. The helpers
  * below are header-only and never block.
+ *
+ * No clock: the client takes time only from its callers
+ * (xf_client_step(c, now_ms) and the setters), so that one clock drives it,
+ * tests can run it on a virtual clock, and an MCU passes its tick counter;
+ * the HAL has no clock. The simulator takes time from its step calls too
+ * (xf_sim_step()). Times
+ * are milliseconds on a clock that wraps at 2^32: compare them with
+ * xf_ms_since(), never with < or >.
  */
 #ifndef XF_HAL_H
 #define XF_HAL_H
@@ -50,10 +54,10 @@ XF_BEGIN_DECLS
 
 /**
  * A link: a context pointer and the functions that move bytes over it.
- * write, read and now_ms are required (xf_hal_check()); fd is optional. The
+ * write and read are required (xf_hal_check()); fd is optional. The
  * client and simulator copy the struct; the context it points to must
- * outlive them. Implementations: xf_posix.h (serial, UDP, TCP, the
- * simulator's ends), xf_tap.h (a wrapper), or your own.
+ * outlive them. Implementations: posix/xf_posix.h (serial, UDP, TCP),
+ * posix/xf_simlink.h (the simulator's ends), or your own.
  */
 typedef struct xf_hal {
     void *ctx; /**< the backend's state, passed to every function below */
@@ -81,14 +85,6 @@ typedef struct xf_hal {
      */
     xf_err (*read)(void *ctx, uint8_t *buf, size_t cap, size_t *out_len);
     /**
-     * A monotonic millisecond clock. It wraps at 2^32: compare times with
-     * xf_ms_since(), never with < or >. xf_tap stamps its chunks with it;
-     * the client and simulator take the time from their step calls instead.
-     * @param ctx  xf_hal.ctx
-     * @return the time, ms
-     */
-    uint32_t (*now_ms)(void *ctx);
-    /**
      * Optional (POSIX only; NULL on an MCU): the descriptor to wait on for
      * readability. It may change after ::XF_ERR_CLOSED, so ask again each
      * time round the poll loop (xf_hal_fd()).
@@ -108,13 +104,13 @@ typedef struct xf_hal {
 static inline uint32_t xf_ms_since(uint32_t now, uint32_t then) { return (uint32_t)(now - then); }
 
 /**
- * Whether a link has the three required functions (write, read, now_ms).
+ * Whether a link has the two required functions (write and read).
  * @param hal  the link
  * @return ::XF_OK, or ::XF_ERR_ARG (NULL @p hal, or a required function missing)
  */
 static inline xf_err xf_hal_check(const xf_hal *hal)
 {
-    return (hal != NULL && hal->write != NULL && hal->read != NULL && hal->now_ms != NULL) ? XF_OK : XF_ERR_ARG;
+    return (hal != NULL && hal->write != NULL && hal->read != NULL) ? XF_OK : XF_ERR_ARG;
 }
 
 /**

@@ -101,7 +101,7 @@ typedef struct xf_host_packet {
     xf_host_sub sub;               /**< sub frame, bytes 37-68 */
     uint8_t order;                 /**< byte 69: xf_order, or any other value (raw) */
     uint8_t params_len;            /**< parameter bytes used, 0..::XF_PARAMS_MAX */
-    uint8_t params[XF_PARAMS_MAX]; /**< parameter bytes, from byte 70 (xf_command_encode() fills them) */
+    uint8_t params[XF_PARAMS_CAP]; /**< parameter bytes, from byte 70 (xf_command_encode() fills them) */
 } xf_host_packet;
 
 /** A GCU -> host packet. `params` holds the feedback bytes. */
@@ -111,7 +111,7 @@ typedef struct xf_gcu_packet {
     xf_gcu_sub sub;                /**< sub frame, bytes 37-68 */
     uint8_t order;                 /**< the order the feedback answers */
     uint8_t params_len;            /**< feedback bytes: 0 for the null order, 1 otherwise */
-    uint8_t params[XF_PARAMS_MAX]; /**< feedback bytes, from byte 70 (xf_feedback_decode() reads them) */
+    uint8_t params[XF_PARAMS_CAP]; /**< feedback bytes, from byte 70 (xf_feedback_decode() reads them) */
 } xf_gcu_packet;
 
 /**
@@ -210,14 +210,33 @@ XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt);
  */
 XF_API void xf_host_packet_init(xf_host_packet *pkt, uint8_t version);
 
-/* Internal, shared by the packers and the client's packet writer: header,
- * length and version; then order, parameters and the big-endian CRC. */
-XF_API void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version);
-XF_API void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len);
+/**
+ * Low-level packet writing, for code that writes a frame's fields straight
+ * into the bytes (as the client does) instead of through xf_host_pack():
+ * the two header bytes of @p dir, the length and the version. Write the
+ * frame fields (XF_OFF_MAIN ..), then call xf_packet_put_tail().
+ * @param buf      at least @p len bytes; nothing is checked
+ * @param dir      the direction, which picks the header bytes
+ * @param len      the whole packet's length, XF_PACKET_MIN_LEN + parameters
+ * @param version  the protocol version byte
+ */
+XF_API void xf_packet_put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version);
+
+/**
+ * Low-level packet writing, after xf_packet_put_header() and the frame
+ * fields: the order, the parameter bytes and the big-endian CRC over all
+ * bytes before it.
+ * @param buf         the packet, @p len bytes; nothing is checked
+ * @param len         the whole packet's length (= XF_PACKET_MIN_LEN + @p params_len)
+ * @param order       the order byte
+ * @param params      the parameter bytes; may be NULL when @p params_len is 0
+ * @param params_len  number of parameter bytes
+ */
+XF_API void xf_packet_put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len);
 
 #if XF_EMIT_DEFINITIONS
 
-XF_API void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version)
+XF_API void xf_packet_put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version)
 {
     buf[0] = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
     buf[1] = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
@@ -225,7 +244,7 @@ XF_API void xf__put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t v
     buf[XF_OFF_VERSION] = version;
 }
 
-XF_API void xf__put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len)
+XF_API void xf_packet_put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len)
 {
     uint16_t crc;
     buf[XF_OFF_ORDER] = order;
@@ -324,7 +343,7 @@ XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, 
     }
     m = &pkt->main;
     s = &pkt->sub;
-    xf__put_header(buf, XF_DIR_HOST, len, pkt->version);
+    xf_packet_put_header(buf, XF_DIR_HOST, len, pkt->version);
     xf_put_s16le(buf + XF_OFF_HOST_ROLL_CTRL, m->roll_ctrl);
     xf_put_s16le(buf + XF_OFF_HOST_PITCH_CTRL, m->pitch_ctrl);
     xf_put_s16le(buf + XF_OFF_HOST_YAW_CTRL, m->yaw_ctrl);
@@ -349,7 +368,7 @@ XF_API xf_err xf_host_pack(const xf_host_packet *pkt, uint8_t *buf, size_t cap, 
     xf_put_s16le(buf + XF_OFF_HOST_GNSS_WEEK, s->gnss_week);
     xf_put_s32le(buf + XF_OFF_HOST_RELATIVE_HEIGHT, s->relative_height);
     XF_MEMCPY(buf + XF_OFF_HOST_RESERVED_SUB, s->reserved_sub, sizeof(s->reserved_sub));
-    xf__put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
+    xf_packet_put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
     if (out_len != NULL) {
         *out_len = len;
     }
@@ -373,7 +392,7 @@ XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, si
     }
     m = &pkt->main;
     s = &pkt->sub;
-    xf__put_header(buf, XF_DIR_GCU, len, pkt->version);
+    xf_packet_put_header(buf, XF_DIR_GCU, len, pkt->version);
     buf[XF_OFF_GCU_GIMBAL_MODE] = m->gimbal_mode;
     xf_put_u16le(buf + XF_OFF_GCU_POD_STATUS, m->pod_status);
     xf_put_s16le(buf + XF_OFF_GCU_TARGET_OFFSET_X, m->target_offset_x);
@@ -403,7 +422,7 @@ XF_API xf_err xf_gcu_pack(const xf_gcu_packet *pkt, uint8_t *buf, size_t cap, si
     xf_put_u16le(buf + XF_OFF_GCU_CAMERA_STATUS, s->camera_status);
     buf[XF_OFF_GCU_TIME_ZONE] = (uint8_t)s->time_zone;
     XF_MEMCPY(buf + XF_OFF_GCU_RESERVED_SUB, s->reserved_sub, sizeof(s->reserved_sub));
-    xf__put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
+    xf_packet_put_tail(buf, len, pkt->order, pkt->params, pkt->params_len);
     if (out_len != NULL) {
         *out_len = len;
     }

@@ -104,12 +104,40 @@ typedef struct xf_parser {
 
 /**
  * Start a parser for packets sent in direction @p dir (::XF_DIR_GCU on a
- * host): empty, counters zero.
+ * host): empty, counters zero. A macro over xf_parser_init_checked(), which
+ * checks that the caller and the codec were built with the same layout
+ * options (xf_config.h).
  * @param p    the parser's storage
  * @param dir  the direction of the packets to find; others are skipped
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p p, or @p dir not a direction)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p p, or @p dir not a direction),
+ *   ::XF_ERR_CONFIG (built with other options)
  */
-XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir);
+#define xf_parser_init(p, dir) xf_parser_init_checked((p), (dir), XF_OPTIONS_CHECK, sizeof(xf_parser))
+
+/**
+ * What xf_parser_init() calls, with the caller's build options: use the
+ * macro (a foreign-function interface passes xf_options_word() and
+ * xf_parser_size()).
+ * @param p        the parser's storage
+ * @param dir      the direction of the packets to find
+ * @param options  the caller's ::XF_OPTIONS_WORD
+ * @param size     the caller's sizeof(xf_parser)
+ * @return as xf_parser_init(); ::XF_ERR_CONFIG when @p options or @p size
+ *   differ from the codec's (nothing is written to @p p)
+ */
+XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned long options, size_t size);
+
+/**
+ * sizeof(xf_parser) in the compiled codec (for a foreign-function interface).
+ * @return the size in bytes
+ */
+XF_API size_t xf_parser_size(void);
+
+/**
+ * ::XF_OPTIONS_WORD of the compiled codec (for a foreign-function interface).
+ * @return the layout options the codec was built with
+ */
+XF_API unsigned long xf_options_word(void);
 
 /**
  * Drop the bytes held (counted as skipped); keep the direction and the
@@ -206,8 +234,15 @@ XF_STATIC_ASSERT(XF_PARSER_RING % 16u == 0u, ring_index_mod_16_is_position_mod_1
 
 static inline uint8_t xf__rb(const xf_parser *p, uint32_t pos) { return p->ring[pos & XF__RMASK]; }
 
-XF_API xf_err xf_parser_init(xf_parser *p, xf_direction dir)
+XF_API size_t xf_parser_size(void) { return sizeof(xf_parser); }
+
+XF_API unsigned long xf_options_word(void) { return XF_OPTIONS_WORD; }
+
+XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned long options, size_t size)
 {
+    if (options != XF_OPTIONS_WORD || size != sizeof(xf_parser)) {
+        return XF_ERR_CONFIG; /* the caller's xf_parser is not ours: writing to it would overrun it */
+    }
     if (p == NULL || (dir != XF_DIR_HOST && dir != XF_DIR_GCU)) {
         return XF_ERR_ARG;
     }

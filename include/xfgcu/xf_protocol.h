@@ -23,9 +23,15 @@ XF_BEGIN_DECLS
 #define XF_GCU_HEADER0  0x8Au /**< GCU -> host, byte 0 */
 #define XF_GCU_HEADER1  0x5Eu /**< GCU -> host, byte 1 */
 
-#define XF_PACKET_MIN_LEN   72u  /**< header..order + CRC, no parameter */
-#define XF_PACKET_LIMIT     255u /**< the protocol's own upper bound (the vendor CRC takes a uint8_t length) */
-#define XF_PARAMS_MAX       (XF_PACKET_MAX_LEN - XF_PACKET_MIN_LEN) /**< parameter / feedback bytes a packet struct holds */
+#define XF_PACKET_MIN_LEN 72u  /**< header..order + CRC, no parameter */
+#define XF_PACKET_LIMIT   255u /**< the protocol's own upper bound (the vendor CRC takes a uint8_t length) */
+#define XF_PARAMS_MAX                                                                                                  \
+    (XF_PACKET_MAX_LEN -                                                                                               \
+     XF_PACKET_MIN_LEN) /**< parameter / feedback bytes of the longest packet this build packs and accepts */
+/** Room for parameter / feedback bytes in a packet struct: the protocol's
+ * most, whatever ::XF_PACKET_MAX_LEN, so that no packet struct changes with
+ * an option (only ::XF_PARAMS_MAX of it is used). */
+#define XF_PARAMS_CAP       (XF_PACKET_LIMIT - XF_PACKET_MIN_LEN)
 #define XF_PARAMS_KNOWN_MAX 12u /**< longest parameter block of any known order (gaze_geo) */
 
 /* byte offsets */

@@ -17,9 +17,13 @@
  *   xf_units.h    physical units, GNSS time, camera axes
  * @endcode
  *
- * Header-only by default (every function static inline, no allocation, no
- * static state, no OS); define XF_SEPARATE_IMPLEMENTATION and compile
- * src/xf_codec.c once to have a single copy in flash.
+ * No allocation, no static state, no OS. The functions and tables are
+ * defined once, where XF_IMPLEMENTATION is defined (the compiled xfgcu::codec
+ * library, src/xf_codec.c; or one file of yours, for header-only use):
+ * @code
+ *   #define XF_IMPLEMENTATION
+ *   #include "xfgcu/xfgcu.h"
+ * @endcode
  */
 #ifndef XFGCU_H
 #define XFGCU_H

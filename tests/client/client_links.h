@@ -9,7 +9,9 @@
 #include <unistd.h>
 
 #include "client_test.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_poll.h"
+#include "xfgcu/posix/xf_simlink.h"
 
 typedef struct tx {
     xf_simlink_kind kind;

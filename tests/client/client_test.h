@@ -312,8 +312,6 @@ static inline xf_err ct_end_read(void *ctx, uint8_t *buf, size_t cap, size_t *n)
     return XF_OK;
 }
 
-static inline uint32_t ct_end_now(void *ctx) { return ((ct_end *)ctx)->rig->now; }
-
 static inline uint32_t ct_rig_clock(void *ctx) { return ((ct_rig *)ctx)->now; }
 
 /*
@@ -338,7 +336,6 @@ static inline ct_rig *ct_rig_new_at(const xf_client_config *cc, const xf_sim_con
     r->host_hal.ctx = &r->host;
     r->host_hal.read = ct_end_read;
     r->host_hal.write = ct_end_write;
-    r->host_hal.now_ms = ct_end_now;
     r->host_hal.fd = NULL;
     r->gcu_hal = r->host_hal;
     r->gcu_hal.ctx = &r->gcu;

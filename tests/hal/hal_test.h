@@ -25,7 +25,7 @@
 #include <unistd.h>
 #include <cmocka.h>
 
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
 #include "xfgcu/xfgcu.h"
 #include "../xf_test_assert.h"
 

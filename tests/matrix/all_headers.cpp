@@ -1,12 +1,12 @@
 /* Every public header in one translation unit, for the compiler matrix (C and C++). */
 #include "xfgcu/xfgcu.h"
-#include "xfgcu/xf_capture.h"
 #include "xfgcu/xf_client.h"
 #include "xfgcu/xf_hal.h"
 #include "xfgcu/xf_mem.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_poll.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_simlink.h"
 #include "xfgcu/xf_sim.h"
-#include "xfgcu/xf_tap.h"
 
 int xf_matrix_probe(void);
 int xf_matrix_probe(void)

@@ -1,8 +1,10 @@
 /*
  * user_tu.c - a user's translation unit for the compiler matrix (scripts/matrix.sh).
  *
- * Includes xfgcu/xfgcu.h in header-only mode (the default) and calls every
- * public codec function and function-like macro of the headers it includes,
+ * The one file of a header-only user that defines XF_IMPLEMENTATION (so the
+ * codec's definitions are compiled here, where the optimiser sees the caller's
+ * buffers), it includes xfgcu/xfgcu.h and calls every public codec function
+ * and function-like macro of the headers it includes,
  * with small fixed-size buffers (1, 4, 16 bytes: the calls must fail cleanly,
  * XF_ERR_NO_SPACE, XF_ERR_TRUNCATED, ...) and large ones (XF_PACKET_MAX_LEN,
  * a 4096-byte stream). It must compile without a warning as C99 and as C++
@@ -18,6 +20,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+#define XF_IMPLEMENTATION
 #include "xfgcu/xfgcu.h"
 
 /* XF_STATIC_ASSERT, at file scope as documented */
@@ -377,6 +380,32 @@ static void test_packet_small_buffers(void)
     big[20] ^= 0x01u;
     CHECK(xf_packet_check(big, 72, XF_DIR_HOST) == XF_ERR_CRC);
     CHECK(xf_host_unpack(big, 72, &hp) == XF_ERR_CRC);
+}
+
+/* The low-level writers make the same bytes as the packer; the checked init
+ * refuses another layout. */
+static void test_packet_writers(void)
+{
+    static const uint8_t params[2] = {0x01, 0x02};
+    xf_host_packet hp;
+    xf_parser p;
+    uint8_t a[XF_PACKET_MIN_LEN + 2u], b[XF_PACKET_MIN_LEN + 2u];
+    size_t n = 0;
+    xf_host_packet_init(&hp, XF_PROTOCOL_V1);
+    hp.order = XF_ORDER_PALETTE;
+    hp.params_len = 2;
+    XF_MEMCPY(hp.params, params, 2u);
+    CHECK(xf_host_pack(&hp, a, sizeof(a), &n) == XF_OK && n == sizeof(a));
+    XF_MEMCPY(b, a, sizeof(b));
+    XF_MEMSET(b, 0, XF_OFF_MAIN);
+    XF_MEMSET(b + XF_OFF_ORDER, 0, sizeof(b) - XF_OFF_ORDER);
+    xf_packet_put_header(b, XF_DIR_HOST, sizeof(b), XF_PROTOCOL_V1);
+    xf_packet_put_tail(b, sizeof(b), XF_ORDER_PALETTE, params, 2u);
+    CHECK(memcmp(a, b, sizeof(a)) == 0);
+    CHECK(xf_parser_size() == sizeof(xf_parser) && xf_options_word() == XF_OPTIONS_WORD);
+    CHECK(xf_parser_init_checked(&p, XF_DIR_GCU, XF_OPTIONS_WORD, sizeof(p)) == XF_OK);
+    CHECK(xf_parser_init_checked(&p, XF_DIR_GCU, XF_OPTIONS_WORD, sizeof(p) + 1u) == XF_ERR_CONFIG);
+    CHECK(xf_parser_init_checked(&p, XF_DIR_GCU, XF_OPTIONS_WORD ^ 1ul, sizeof(p)) == XF_ERR_CONFIG);
 }
 
 static void test_packet_large(void)
@@ -1138,6 +1167,7 @@ int main(void)
     test_protocol();
     test_vendor_packet();
     test_packet_small_buffers();
+    test_packet_writers();
     test_packet_large();
     test_order_table();
     test_names();

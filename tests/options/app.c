@@ -24,17 +24,11 @@ static xf_err app_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
     return XF_OK;
 }
 
-static uint32_t app_now(void *ctx)
-{
-    (void)ctx;
-    return 0;
-}
-
 int main(void)
 {
     static xf_client client;
     static xf_sim sim;
-    xf_hal hal = {NULL, app_write, app_read, app_now, NULL};
+    xf_hal hal = {NULL, app_write, app_read, NULL};
     xf_err c = xf_client_init(&client, &hal, NULL);
     xf_err s = xf_sim_init(&sim, NULL);
     printf("client init: %s; sim init: %s\n", xf_strerror(c), xf_strerror(s));

@@ -29,12 +29,6 @@ static xf_err t_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
     return XF_OK;
 }
 
-static uint32_t t_now(void *ctx)
-{
-    (void)ctx;
-    return 0;
-}
-
 /* A client with guard bytes behind it, all set to a canary value. */
 typedef struct guarded {
     xf_client c;
@@ -65,7 +59,7 @@ static void test_library_reports_its_options(void **state)
 static void test_client_refuses_other_options(void **state)
 {
     static guarded g;
-    xf_hal hal = {NULL, t_write, t_read, t_now, NULL};
+    xf_hal hal = {NULL, t_write, t_read, NULL};
     unsigned long other_len = (XF_OPTIONS_WORD & ~0xFFul) | 84ul;
     (void)state;
     memset(&g, 0xA5, sizeof(g));

@@ -226,3 +226,34 @@ void seal_packet(uint8_t *bytes, size_t len)
     bytes[len - 2u] = (uint8_t)(crc >> 8);
     bytes[len - 1u] = (uint8_t)(crc & 0xFFu);
 }
+
+json_t *parse_line(const char *text)
+{
+    json_error_t e;
+    json_t *obj = json_loadb(text, strcspn(text, "\n"), 0, &e);
+    if (obj == NULL) {
+        print_error("not JSON (%s): %s\n", e.text, text);
+        fail();
+    }
+    return obj;
+}
+
+json_int_t int_key(const json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!json_is_integer(v)) {
+        print_error("key %s is missing or not an integer\n", key);
+        fail();
+    }
+    return json_integer_value(v);
+}
+
+const char *str_key(const json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!json_is_string(v)) {
+        print_error("key %s is missing or not a string\n", key);
+        fail();
+    }
+    return json_string_value(v);
+}

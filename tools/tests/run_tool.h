@@ -5,6 +5,7 @@
 #ifndef XFGCU_RUN_TOOL_H
 #define XFGCU_RUN_TOOL_H
 
+#include <jansson.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -29,6 +30,13 @@ size_t count_lines(const char *text);
  * line starting "xfgcu: " that contains every needle (NULL-terminated list).
  */
 void assert_failure(const tool_result *r, int status, ...);
+
+/** The JSON object on the first line of @p text (fails the test if it is not JSON). */
+json_t *parse_line(const char *text);
+/** The integer under @p key (fails the test if there is none). */
+json_int_t int_key(const json_t *obj, const char *key);
+/** The string under @p key (fails the test if there is none). */
+const char *str_key(const json_t *obj, const char *key);
 
 /** Uppercase hex with single spaces and a newline, as `encode` prints. */
 void hex_line(const uint8_t *bytes, size_t n, char *buf);

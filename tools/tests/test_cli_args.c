@@ -23,6 +23,27 @@ static void assert_ok_containing(tool_result *r, const char *needle)
     }
 }
 
+/* Arguments (NULL-terminated) and a piece of the one-line error they must give, with exit 2. */
+typedef struct failure_case {
+    const char *args[10];
+    const char *needle;
+} failure_case;
+
+static void expect_failures(const failure_case *cases, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        int argc = 0;
+        tool_result r;
+        while (cases[i].args[argc] != NULL) {
+            argc++;
+        }
+        r = run_tool_argv(argc, cases[i].args, NULL);
+        assert_failure(&r, 2, cases[i].needle, NULL);
+        tool_result_free(&r);
+    }
+}
+
 static void test_version(void **state)
 {
     tool_result r = run_tool(NULL, "--version", NULL);
@@ -58,6 +79,39 @@ static void test_command_help(void **state)
     r = run_tool(NULL, "encode", "zoom-to", "--help", NULL);
     assert_ok_containing(&r, "usage: xfgcu encode [--protocol 1|2] zoom-to (--rate R | --fraction N)");
     tool_result_free(&r);
+}
+
+/* getopt_long() with the program's own rules: whole option names only, "--opt=VALUE", no value
+ * for a switch, no clusters, "--" ends the options; --help among a command's arguments. */
+static void test_option_forms(void **state)
+{
+    static const failure_case bad[] = {
+        {{"--bau", "115200", "encode", "null", NULL}, "unknown option '--bau' (try 'xfgcu --help')"},
+        {{"-hx", NULL}, "unknown option '-hx'"},
+        {{"--help=1", NULL}, "--help takes no value"},
+        {{"decode", "--json=1", APPENDIX1_HEX, NULL}, "decode: --json takes no value"},
+        {{"decode", "--js", APPENDIX1_HEX, NULL}, "decode: unknown option '--js'"},
+        {{"encode", "zoom-to", "--rat", "5", NULL}, "encode zoom-to: unknown option '--rat'"},
+        {{"encode", "zoom-to", "--rate", NULL}, "encode zoom-to: --rate needs a value: R"},
+        {{"encode", "zoom-to", "--help", "--protocol", "3", NULL}, "--protocol 3: must be 1 or 2"},
+        {{"encode", "shutter", "--", "extra", NULL}, "encode shutter: unexpected argument 'extra'"},
+        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "shutter", "--help", NULL},
+         "record shutter: unknown option '--help' (see 'xfgcu send shutter --help')"},
+    };
+    tool_result r = run_tool(NULL, "-h", NULL);
+    (void)state;
+    assert_ok_containing(&r, "usage: xfgcu");
+    tool_result_free(&r);
+    r = run_tool(NULL, "--", "encode", "null", NULL);
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "zoom-to", "--rate", "0.5", "--help", NULL); /* --help wins over the values */
+    assert_ok_containing(&r, "usage: xfgcu encode [--protocol 1|2] zoom-to");
+    tool_result_free(&r);
+    r = run_tool(NULL, "--timeout=500", "encode", "--protocol=2", "zoom-to", "--rate=5.5", "--cameras=all", NULL);
+    assert_ok_containing(&r, "A8 E5 4B 00 02");
+    tool_result_free(&r);
+    expect_failures(bad, sizeof(bad) / sizeof(bad[0]));
 }
 
 static void test_no_command(void **state)
@@ -222,10 +276,7 @@ static void test_online_commands_need_a_link(void **state)
  * (the links named here do not exist). */
 static void test_online_bad_arguments(void **state)
 {
-    static const struct {
-        const char *args[10];
-        const char *needle;
-    } cases[] = {
+    static const failure_case cases[] = {
         {{"--tcp", "127.0.0.1:9", "send", NULL}, "send: which command?"},
         {{"--tcp", "127.0.0.1:9", "send", "frobnicate", NULL}, "send: unknown command 'frobnicate'"},
         {{"--tcp", "127.0.0.1:9", "send", "--bogus", NULL}, "send: unknown option '--bogus'"},
@@ -256,6 +307,8 @@ static void test_online_bad_arguments(void **state)
         {{"replay", "--json", "--brief", "a.cap", NULL}, "--json and --brief exclude each other"},
         {{"replay", "/tmp/xfgcu-no-such-capture", NULL}, "replay: cannot open /tmp/xfgcu-no-such-capture"},
         {{"sim", "--tcp", "70000", NULL}, "sim: --tcp 70000: must be a port"},
+        {{"sim", "--tcp=70000", NULL}, "sim: --tcp 70000: must be a port"},
+        {{"sim", "--pty=x", NULL}, "sim: --pty takes no value"},
         {{"sim", "--udp", "--tcp", NULL}, "sim: give only one of"},
         {{"sim", "--fail", "zoom-in", NULL}, "sim: --fail zoom-in: expected ORDER=STATE"},
         {{"sim", "--fail", "frobnicate=1", NULL}, "'frobnicate' is not an order"},
@@ -269,18 +322,8 @@ static void test_online_bad_arguments(void **state)
         {{"demo", "now", NULL}, "demo: unexpected argument 'now'"},
         {{"--rate", "500", "send", "shutter", NULL}, "--rate 500"},
     };
-    size_t i;
     (void)state;
-    for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
-        int n = 0;
-        tool_result r;
-        while (cases[i].args[n] != NULL) {
-            n++;
-        }
-        r = run_tool_argv(n, cases[i].args, NULL);
-        assert_failure(&r, 2, cases[i].needle, NULL);
-        tool_result_free(&r);
-    }
+    expect_failures(cases, sizeof(cases) / sizeof(cases[0]));
 }
 
 int main(void)
@@ -289,6 +332,7 @@ int main(void)
         cmocka_unit_test(test_version),
         cmocka_unit_test(test_help),
         cmocka_unit_test(test_command_help),
+        cmocka_unit_test(test_option_forms),
         cmocka_unit_test(test_no_command),
         cmocka_unit_test(test_unknown_command_and_option),
         cmocka_unit_test(test_baud),

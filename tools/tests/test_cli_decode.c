@@ -18,37 +18,6 @@
 
 /* ---- helpers ------------------------------------------------------------------ */
 
-static json_t *parse_line(const char *text)
-{
-    json_error_t e;
-    json_t *obj = json_loadb(text, strcspn(text, "\n"), 0, &e);
-    if (obj == NULL) {
-        print_error("not JSON (%s): %s\n", e.text, text);
-        fail();
-    }
-    return obj;
-}
-
-static json_int_t int_key(const json_t *obj, const char *key)
-{
-    json_t *v = json_object_get(obj, key);
-    if (!json_is_integer(v)) {
-        print_error("key %s is missing or not an integer\n", key);
-        fail();
-    }
-    return json_integer_value(v);
-}
-
-static const char *str_key(const json_t *obj, const char *key)
-{
-    json_t *v = json_object_get(obj, key);
-    if (!json_is_string(v)) {
-        print_error("key %s is missing or not a string\n", key);
-        fail();
-    }
-    return json_string_value(v);
-}
-
 static void hex_plain(const uint8_t *b, size_t n, char *buf)
 {
     size_t i;

@@ -51,27 +51,6 @@ static void expect(const tool_result *r, int status, const char *out)
     }
 }
 
-static json_t *parse_json_line(const char *line, size_t len)
-{
-    json_error_t e;
-    json_t *obj = json_loadb(line, len, 0, &e);
-    if (obj == NULL) {
-        print_error("not JSON (%s): %.*s\n", e.text, (int)len, line);
-        fail();
-    }
-    return obj;
-}
-
-static json_int_t int_key(const json_t *obj, const char *key)
-{
-    json_t *v = json_object_get(obj, key);
-    if (!json_is_integer(v)) {
-        print_error("key %s is missing or not an integer\n", key);
-        fail();
-    }
-    return json_integer_value(v);
-}
-
 /* Every line of @p text is a GCU packet object with the decode --json keys; returns how many. */
 static size_t check_gcu_lines(const char *text, uint8_t version)
 {
@@ -83,7 +62,7 @@ static size_t check_gcu_lines(const char *text, uint8_t version)
     const char *p = text;
     while (*p != '\0') {
         size_t len = strcspn(p, "\n");
-        json_t *obj = parse_json_line(p, len);
+        json_t *obj = parse_line(p);
         assert_string_equal(json_string_value(json_object_get(obj, "direction")), "gcu");
         assert_non_null(json_object_get(obj, "params"));
         for (k = 0; k < sizeof(keys) / sizeof(keys[0]); k++) {
@@ -109,7 +88,7 @@ static void attitude(const sim_proc *s, long *pitch, long *yaw)
     json_t *obj;
     assert_int_equal(r.status, 0);
     assert_int_equal(count_lines(r.out), 1);
-    obj = parse_json_line(r.out, strcspn(r.out, "\n"));
+    obj = parse_line(r.out);
     *pitch = (long)int_key(obj, "cam_pitch");
     *yaw = (long)int_key(obj, "cam_yaw");
     json_decref(obj);
@@ -309,7 +288,7 @@ static void count_directions(const char *jsonl, size_t *host, size_t *gcu, int *
     *shutter = 0;
     while (*p != '\0') {
         size_t len = strcspn(p, "\n");
-        json_t *obj = parse_json_line(p, len);
+        json_t *obj = parse_line(p);
         const char *dir = json_string_value(json_object_get(obj, "direction"));
         assert_true(json_is_number(json_object_get(obj, "t")));
         assert_non_null(dir);

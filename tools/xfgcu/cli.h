@@ -1,7 +1,7 @@
 /*
  * cli.h - what the modules of the xfgcu program share: exit codes, the
- * one-line error reporter, number parsing, the options that come before
- * COMMAND, and the entry point of each command.
+ * one-line error reporter, number parsing, option parsing (getopt_long),
+ * the options that come before COMMAND, and the entry point of each command.
  *
  * Contract: docs/cli.md. Every failure prints exactly one line
  * "xfgcu: ..." to stderr and maps to one of the exit codes below.
@@ -9,6 +9,7 @@
 #ifndef XFGCU_CLI_H
 #define XFGCU_CLI_H
 
+#include <getopt.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -25,12 +26,19 @@
 #define CLI_PRINTF(fmt, args)
 #endif
 
-/** Print "xfgcu: <message>\n" to stderr; returns XFGCU_EXIT_USAGE so callers can `return cli_fail(...)`. */
-int cli_fail(const char *fmt, ...) CLI_PRINTF(1, 2);
-/** Same line; returns XFGCU_EXIT_LINK (link error or timeout). */
-int cli_fail_link(const char *fmt, ...) CLI_PRINTF(1, 2);
-/** Print "xfgcu: note: <message>\n" to stderr (not a failure). */
-void cli_note(const char *fmt, ...) CLI_PRINTF(1, 2);
+/**
+ * Print "xfgcu: [<where>: ]<message>\n" to stderr (stdout is flushed first, so that what was
+ * printed before the failure comes first) and return @p code. The macros below are the uses.
+ */
+int cli_report(int code, const char *where, const char *fmt, ...) CLI_PRINTF(3, 4);
+/** A usage error or bad input: returns XFGCU_EXIT_USAGE so callers can `return cli_fail(...)`. */
+#define cli_fail(...) cli_report(XFGCU_EXIT_USAGE, NULL, __VA_ARGS__)
+/** The same, prefixed "<where>: " ("decode", "encode zoom-to", "stdin line 3"). */
+#define cli_fail_in(where, ...) cli_report(XFGCU_EXIT_USAGE, (where), __VA_ARGS__)
+/** A link error or timeout: returns XFGCU_EXIT_LINK. */
+#define cli_fail_link(...) cli_report(XFGCU_EXIT_LINK, NULL, __VA_ARGS__)
+/** "xfgcu: note: <message>" (a warning, not a failure). */
+#define cli_note(...) ((void)cli_report(XFGCU_EXIT_OK, "note", __VA_ARGS__))
 
 /**
  * Parse a whole string as an integer: decimal, or hex with a 0x prefix,
@@ -40,6 +48,64 @@ void cli_note(const char *fmt, ...) CLI_PRINTF(1, 2);
 int cli_parse_int(const char *s, long long *out);
 /** Parse a whole string as a finite decimal number. @return 0 or -1. */
 int cli_parse_real(const char *s, double *out);
+
+/* ---- options ----------------------------------------------------------------
+ * Every option loop is getopt_long() over a `struct option` table whose `val`
+ * is what cli_next() returns (an id > 1: not CLI_ARG). cli_next() keeps the
+ * program's contract where getopt_long() is looser: long options are taken
+ * by their whole name only (no abbreviations), no short option clusters, no
+ * messages of getopt's own; its errors are the one-line "xfgcu: ..." ones. */
+
+#define CLI_IN_ORDER "-:" /**< options and arguments mixed, in the order given */
+#define CLI_STOP     "+:" /**< options up to the first argument (COMMAND); cli_rest() says where it is */
+
+enum {
+    CLI_BAD = -2, /**< an unknown option, or a value given to one that takes none: the error is printed */
+    CLI_END = -1, /**< no more arguments */
+    CLI_ARG = 1   /**< an argument that is not an option: cli_args.value */
+};
+
+/** A getopt_long() loop over argv[1..argc-1]. */
+typedef struct cli_args {
+    int argc;
+    char **argv;
+    const char *optstring;     /**< CLI_IN_ORDER or CLI_STOP, then the short options ("h") */
+    const struct option *opts; /**< the long options, ended by a zero row */
+    const char *context;       /**< "decode", "encode zoom-to": the messages' prefix; NULL before COMMAND */
+    const char *hint;          /**< "see 'xfgcu HINT --help'" for unknown options; NULL: the context */
+    int quiet;                 /**< print nothing: a pass that only looks for some options */
+    const struct option *opt;  /**< the option cli_next() returned */
+    const char *value;         /**< its value (NULL when none was given), or the argument */
+    int index;                 /**< where it is in argv */
+    int tail;                  /**< CLI_IN_ORDER: the arguments after "--" are served from here */
+} cli_args;
+
+/** Start a loop (getopt's state is reset): @p optstring and @p opts as in cli_args. */
+void cli_args_init(cli_args *a, int argc, char **argv, const char *optstring, const struct option *opts,
+                   const char *context);
+/**
+ * The next option's `val`, CLI_ARG, CLI_END or CLI_BAD. An option whose
+ * value is missing is returned with cli_args.value NULL: the cli_value_*
+ * functions then say what it needs.
+ */
+int cli_next(cli_args *a);
+/** An option with an optional value given without '=' ("--tcp 2332"): take the next argument as its
+ * value, unless it starts with '-'. */
+void cli_optional_next(cli_args *a);
+/** After CLI_END: the index of the first argument not parsed (CLI_STOP: COMMAND; argc when none). */
+int cli_rest(const cli_args *a);
+/** The error for an argument (CLI_ARG) nobody takes: "CONTEXT: unexpected argument 'X' (see ...)". */
+int cli_unexpected(const cli_args *a);
+
+/* The value of the option cli_next() returned, checked. @p what says what it must be, in the
+ * messages "[CONTEXT: ]--opt needs a value: WHAT" and "[CONTEXT: ]--opt TEXT: must be WHAT".
+ * With @p given (may be NULL), a second time is an error. Each returns an exit code. */
+int cli_value_real(const cli_args *a, double lo, double hi, const char *what, double *out, int *given);
+int cli_value_long(const cli_args *a, long lo, long hi, const char *what, long *out, int *given);
+/** A text that must not be empty. */
+int cli_value_text(const cli_args *a, const char *what, const char **out);
+/** --protocol: 1 or 2. */
+int cli_value_protocol(const cli_args *a, uint8_t *version);
 
 /** The options before COMMAND (cli.md "Link options"), already validated. */
 typedef struct cli_link {

@@ -354,15 +354,17 @@ static int tour(demo *d)
 
 int cmd_demo(const cli_link *link, int argc, char **argv)
 {
+    static const struct option demo_options[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
     demo *d;
+    cli_args a;
     int rc;
     (void)link; /* its own link */
-    if (argc > 1 && strcmp(argv[1], "--help") == 0) {
-        help_demo(stdout);
-        return XFGCU_EXIT_OK;
-    }
-    if (argc > 1) {
-        return cli_unexpected("demo", argv[1]);
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, demo_options, "demo");
+    switch (cli_next(&a)) {
+    case 'h': help_demo(stdout); return XFGCU_EXIT_OK;
+    case CLI_ARG: return cli_unexpected(&a);
+    case CLI_END: break;
+    default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
     }
     d = calloc(1, sizeof(*d));
     if (d == NULL) {

@@ -52,23 +52,28 @@ typedef struct monitor {
 
 /* ---- arguments ---------------------------------------------------------------------- */
 
-static int take_arg(monitor *m, int argc, char **argv, int *i)
+enum { O_JSON = 256, O_COUNT, O_DURATION, O_HELP };
+
+static const struct option monitor_options[] = {
+    {"json", no_argument, NULL, O_JSON},
+    {"count", required_argument, NULL, O_COUNT},
+    {"duration", required_argument, NULL, O_DURATION},
+    {"help", no_argument, NULL, O_HELP},
+    {NULL, 0, NULL, 0},
+};
+
+static int take_arg(monitor *m, const cli_args *a, int id)
 {
-    int rc = cli_opt_long("monitor", argc, argv, i, "--count", 1, 1000000000L, "a number of packets, 1..1000000000",
-                          &m->count, &m->has_count);
-    if (rc < 0) {
-        rc = cli_opt_real("monitor", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000",
-                          &m->duration, &m->has_duration);
+    switch (id) {
+    case O_JSON: m->json = 1; return XFGCU_EXIT_OK;
+    case O_COUNT:
+        return cli_value_long(a, 1, 1000000000L, "a number of packets, 1..1000000000", &m->count, &m->has_count);
+    case O_DURATION:
+        return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &m->duration, &m->has_duration);
+    case O_HELP: m->help = 1; return XFGCU_EXIT_OK;
+    case CLI_ARG: return cli_unexpected(a);
+    default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
     }
-    if (rc < 0 && strcmp(argv[*i], "--json") == 0) {
-        m->json = 1;
-        rc = XFGCU_EXIT_OK;
-    }
-    if (rc < 0 && strcmp(argv[*i], "--help") == 0) {
-        m->help = 1;
-        rc = XFGCU_EXIT_OK;
-    }
-    return (rc < 0) ? cli_unexpected("monitor", argv[*i]) : rc;
 }
 
 /* ---- callbacks ------------------------------------------------------------------------ */
@@ -225,10 +230,12 @@ int cmd_monitor(const cli_link *link, int argc, char **argv)
 {
     monitor m;
     online_hooks hooks;
-    int i, rc = XFGCU_EXIT_OK;
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
     memset(&m, 0, sizeof(m));
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(&m, argc, argv, &i);
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, monitor_options, "monitor");
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        rc = take_arg(&m, &a, id);
     }
     if (rc != XFGCU_EXIT_OK || m.help) {
         if (m.help && rc == XFGCU_EXIT_OK) {

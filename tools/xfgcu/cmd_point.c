@@ -37,39 +37,41 @@ typedef struct point_args {
     int has_pitch, has_yaw, has_roll, has_wait, help;
 } point_args;
 
-static int take_arg(point_args *a, int argc, char **argv, int *i)
+enum { O_PITCH = 256, O_YAW, O_ROLL, O_WAIT, O_HELP };
+
+static const struct option point_options[] = {
+    {"pitch", required_argument, NULL, O_PITCH}, {"yaw", required_argument, NULL, O_YAW},
+    {"roll", required_argument, NULL, O_ROLL},   {"wait", required_argument, NULL, O_WAIT},
+    {"help", no_argument, NULL, O_HELP},         {NULL, 0, NULL, 0},
+};
+
+static int take_arg(point_args *p, const cli_args *a, int id)
 {
-    int rc =
-        cli_opt_real("point", argc, argv, i, "--pitch", -180.0, 180.0, "degrees, -180..180", &a->pitch, &a->has_pitch);
-    if (rc < 0) {
-        rc = cli_opt_real("point", argc, argv, i, "--yaw", -360.0, 360.0, "degrees, -360..360", &a->yaw, &a->has_yaw);
+    switch (id) {
+    case O_PITCH: return cli_value_real(a, -180.0, 180.0, "degrees, -180..180", &p->pitch, &p->has_pitch);
+    case O_YAW: return cli_value_real(a, -360.0, 360.0, "degrees, -360..360", &p->yaw, &p->has_yaw);
+    case O_ROLL: return cli_value_real(a, -180.0, 180.0, "degrees, -180..180", &p->roll, &p->has_roll);
+    case O_WAIT: return cli_value_real(a, 0.1, 600.0, "seconds, 0.1..600", &p->wait_s, &p->has_wait);
+    case O_HELP: p->help = 1; return XFGCU_EXIT_OK;
+    case CLI_ARG: return cli_unexpected(a);
+    default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
     }
-    if (rc < 0) {
-        rc =
-            cli_opt_real("point", argc, argv, i, "--roll", -180.0, 180.0, "degrees, -180..180", &a->roll, &a->has_roll);
-    }
-    if (rc < 0) {
-        rc = cli_opt_real("point", argc, argv, i, "--wait", 0.1, 600.0, "seconds, 0.1..600", &a->wait_s, &a->has_wait);
-    }
-    if (rc < 0 && strcmp(argv[*i], "--help") == 0) {
-        a->help = 1;
-        rc = XFGCU_EXIT_OK;
-    }
-    return (rc < 0) ? cli_unexpected("point", argv[*i]) : rc;
 }
 
-static int parse_args(point_args *a, int argc, char **argv)
+static int parse_args(point_args *p, int argc, char **argv)
 {
-    int i, rc = XFGCU_EXIT_OK;
-    memset(a, 0, sizeof(*a));
-    a->wait_s = 10.0;
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(a, argc, argv, &i);
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
+    memset(p, 0, sizeof(*p));
+    p->wait_s = 10.0;
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, point_options, "point");
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        rc = take_arg(p, &a, id);
     }
-    if (rc == XFGCU_EXIT_OK && !a->help && !a->has_pitch) {
+    if (rc == XFGCU_EXIT_OK && !p->help && !p->has_pitch) {
         rc = cli_fail("point: missing --pitch DEG");
     }
-    if (rc == XFGCU_EXIT_OK && !a->help && !a->has_yaw) {
+    if (rc == XFGCU_EXIT_OK && !p->help && !p->has_yaw) {
         rc = cli_fail("point: missing --yaw DEG");
     }
     return rc;
@@ -87,8 +89,10 @@ static int arrived(const xf_client *c, uint32_t since, const point_args *a)
            (!a->has_roll || fabs((double)xf_cdeg(t->cam_roll) - a->roll) <= TOLERANCE_DEG);
 }
 
-static int stream_angles(online *o, const point_args *a)
+/* Once in Euler angle control (online_mode_fn). */
+static int stream_angles(online *o, const void *args)
 {
+    const point_args *a = (const point_args *)args;
     uint32_t start = xf_posix_now_ms(), limit = (uint32_t)(a->wait_s * 1000.0);
     const xf_telemetry *t = xf_client_telemetry(&o->client);
     char where[96];
@@ -112,38 +116,14 @@ static int stream_angles(online *o, const point_args *a)
     return XFGCU_EXIT_OK;
 }
 
-static int run_point(const cli_link *link, const point_args *a)
-{
-    online *o = online_new();
-    xf_command cmd;
-    xf_cmd_result r;
-    int rc = (o != NULL) ? online_open(o, link, "point", NULL) : XFGCU_EXIT_USAGE;
-    if (rc == XFGCU_EXIT_OK) {
-        xf_client_clear_control(&o->client); /* no angles until the mode reads them as angles */
-        xf_command_init(&cmd, XF_ORDER_EULER);
-        rc = online_run(o, &cmd, &r, NULL, NULL);
-    }
-    if (rc == XFGCU_EXIT_OK) {
-        rc = online_result_exit(o, "point: euler (Euler angle control)", &r);
-    }
-    if (rc == XFGCU_EXIT_OK) {
-        rc = stream_angles(o, a);
-    }
-    online_free(o);
-    return rc;
-}
-
 int cmd_point(const cli_link *link, int argc, char **argv)
 {
     point_args a;
     int rc = parse_args(&a, argc, argv);
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
-    }
-    if (a.help) {
+    if (rc == XFGCU_EXIT_OK && a.help) {
         help_point(stdout);
-        return XFGCU_EXIT_OK;
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = online_run_in_mode(link, "point", XF_ORDER_EULER, "point: euler (Euler angle control)", stream_angles, &a);
     }
-    cli_signals_init();
-    return run_point(link, &a);
+    return rc;
 }

@@ -37,41 +37,47 @@ typedef struct rate_args {
     int has_pitch, has_yaw, has_duration, help;
 } rate_args;
 
-static int take_arg(rate_args *a, int argc, char **argv, int *i)
+enum { O_PITCH = 256, O_YAW, O_DURATION, O_HELP };
+
+static const struct option rate_options[] = {
+    {"pitch", required_argument, NULL, O_PITCH},
+    {"yaw", required_argument, NULL, O_YAW},
+    {"duration", required_argument, NULL, O_DURATION},
+    {"help", no_argument, NULL, O_HELP},
+    {NULL, 0, NULL, 0},
+};
+
+static int take_arg(rate_args *r, const cli_args *a, int id)
 {
-    int rc =
-        cli_opt_real("rate", argc, argv, i, "--pitch", -MAX_DPS, MAX_DPS, "deg/s, -150..150", &a->pitch, &a->has_pitch);
-    if (rc < 0) {
-        rc = cli_opt_real("rate", argc, argv, i, "--yaw", -MAX_DPS, MAX_DPS, "deg/s, -150..150", &a->yaw, &a->has_yaw);
+    switch (id) {
+    case O_PITCH: return cli_value_real(a, -MAX_DPS, MAX_DPS, "deg/s, -150..150", &r->pitch, &r->has_pitch);
+    case O_YAW: return cli_value_real(a, -MAX_DPS, MAX_DPS, "deg/s, -150..150", &r->yaw, &r->has_yaw);
+    case O_DURATION: return cli_value_real(a, 0.02, 3600.0, "seconds, 0.02..3600", &r->duration, &r->has_duration);
+    case O_HELP: r->help = 1; return XFGCU_EXIT_OK;
+    case CLI_ARG: return cli_unexpected(a);
+    default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
     }
-    if (rc < 0) {
-        rc = cli_opt_real("rate", argc, argv, i, "--duration", 0.02, 3600.0, "seconds, 0.02..3600", &a->duration,
-                          &a->has_duration);
-    }
-    if (rc < 0 && strcmp(argv[*i], "--help") == 0) {
-        a->help = 1;
-        rc = XFGCU_EXIT_OK;
-    }
-    return (rc < 0) ? cli_unexpected("rate", argv[*i]) : rc;
 }
 
-static int parse_args(rate_args *a, int argc, char **argv)
+static int parse_args(rate_args *r, int argc, char **argv)
 {
-    int i, rc = XFGCU_EXIT_OK;
-    memset(a, 0, sizeof(*a));
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(a, argc, argv, &i);
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
+    memset(r, 0, sizeof(*r));
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, rate_options, "rate");
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        rc = take_arg(r, &a, id);
     }
-    if (rc != XFGCU_EXIT_OK || a->help) {
+    if (rc != XFGCU_EXIT_OK || r->help) {
         return rc;
     }
-    if (!a->has_pitch) {
+    if (!r->has_pitch) {
         return cli_fail("rate: missing --pitch DPS");
     }
-    if (!a->has_yaw) {
+    if (!r->has_yaw) {
         return cli_fail("rate: missing --yaw DPS");
     }
-    if (!a->has_duration) {
+    if (!r->has_duration) {
         return cli_fail("rate: missing --duration S");
     }
     return XFGCU_EXIT_OK;
@@ -92,8 +98,10 @@ static void stream_rates(online *o, const rate_args *a, uint32_t *elapsed)
     online_linger(o, ZERO_PACKETS);
 }
 
-static int turn(online *o, const rate_args *a)
+/* Once in head lock (online_mode_fn). */
+static int turn(online *o, const void *args)
 {
+    const rate_args *a = (const rate_args *)args;
     const xf_telemetry *t = xf_client_telemetry(&o->client);
     double pitch0 = (double)xf_cdeg(t->cam_pitch), yaw0 = (double)xf_cdeg(t->cam_yaw);
     uint32_t elapsed = 0;
@@ -112,38 +120,14 @@ static int turn(online *o, const rate_args *a)
     return XFGCU_EXIT_OK;
 }
 
-static int run_rate(const cli_link *link, const rate_args *a)
-{
-    online *o = online_new();
-    xf_command cmd;
-    xf_cmd_result r;
-    int rc = (o != NULL) ? online_open(o, link, "rate", NULL) : XFGCU_EXIT_USAGE;
-    if (rc == XFGCU_EXIT_OK) {
-        xf_client_clear_control(&o->client); /* no rates until the mode reads them as rates */
-        xf_command_init(&cmd, XF_ORDER_HEAD_LOCK);
-        rc = online_run(o, &cmd, &r, NULL, NULL);
-    }
-    if (rc == XFGCU_EXIT_OK) {
-        rc = online_result_exit(o, "rate: head_lock", &r);
-    }
-    if (rc == XFGCU_EXIT_OK) {
-        rc = turn(o, a);
-    }
-    online_free(o);
-    return rc;
-}
-
 int cmd_rate(const cli_link *link, int argc, char **argv)
 {
     rate_args a;
     int rc = parse_args(&a, argc, argv);
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
-    }
-    if (a.help) {
+    if (rc == XFGCU_EXIT_OK && a.help) {
         help_rate(stdout);
-        return XFGCU_EXIT_OK;
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = online_run_in_mode(link, "rate", XF_ORDER_HEAD_LOCK, "rate: head_lock", turn, &a);
     }
-    cli_signals_init();
-    return run_rate(link, &a);
+    return rc;
 }

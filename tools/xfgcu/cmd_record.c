@@ -14,7 +14,7 @@
 #include "cli.h"
 #include "cmdargs.h"
 #include "online.h"
-#include "xfgcu/xf_capture.h"
+#include "capture.h"
 
 #define NULLS_AFTER 3u
 #define DRAIN_MS    250u
@@ -46,48 +46,52 @@ typedef struct record {
     double duration;
     int has_count, has_duration, help;
     const cmd_spec *spec;
-    int cargc;
-    char **cargv;
     uint32_t sent, received;
 } record;
 
 /* ---- arguments ---------------------------------------------------------------------- */
 
-static int take_arg(record *r, int argc, char **argv, int *i)
+enum { O_DURATION = 256, O_COUNT, O_HELP };
+
+static const struct option record_options[] = {
+    {"duration", required_argument, NULL, O_DURATION},
+    {"count", required_argument, NULL, O_COUNT},
+    {"help", no_argument, NULL, O_HELP},
+    {NULL, 0, NULL, 0},
+};
+
+/* FILE, then COMMAND */
+static int take_word(record *r, const char *word)
 {
-    int rc;
-    if (r->spec != NULL) { /* everything after COMMAND is the command's */
-        r->cargv[r->cargc++] = argv[*i];
-        return XFGCU_EXIT_OK;
-    }
-    rc = cli_opt_real("record", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000", &r->duration,
-                      &r->has_duration);
-    if (rc < 0) {
-        rc = cli_opt_long("record", argc, argv, i, "--count", 1, 1000000000L, "a number of packets, 1..1000000000",
-                          &r->count, &r->has_count);
-    }
-    if (rc >= 0) {
-        return rc;
-    }
-    if (strcmp(argv[*i], "--help") == 0) {
-        r->help = 1;
-    } else if (argv[*i][0] == '-' && argv[*i][1] != '\0') {
-        return cli_unexpected("record", argv[*i]);
-    } else if (r->file == NULL) {
-        r->file = argv[*i];
-    } else if ((r->spec = cmdargs_find(argv[*i])) == NULL) {
-        return cli_fail("record: unknown command '%s' (see 'xfgcu send --help'); FILE is '%s'", argv[*i], r->file);
-    } else {
-        r->cargv[r->cargc++] = argv[*i];
+    if (r->file == NULL) {
+        r->file = word;
+    } else if ((r->spec = cmdargs_find(word)) == NULL) {
+        return cli_fail("record: unknown command '%s' (see 'xfgcu send --help'); FILE is '%s'", word, r->file);
     }
     return XFGCU_EXIT_OK;
 }
 
+static int take_arg(record *r, const cli_args *a, int id)
+{
+    switch (id) {
+    case O_DURATION:
+        return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &r->duration, &r->has_duration);
+    case O_COUNT:
+        return cli_value_long(a, 1, 1000000000L, "a number of packets, 1..1000000000", &r->count, &r->has_count);
+    case O_HELP: r->help = 1; return XFGCU_EXIT_OK;
+    case CLI_ARG: return take_word(r, a->value);
+    default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
+    }
+}
+
+/* Options of record up to COMMAND; everything after COMMAND is the command's. */
 static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_command *cmd)
 {
-    int i, rc = XFGCU_EXIT_OK;
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(r, argc, argv, &i);
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, record_options, "record");
+    while (rc == XFGCU_EXIT_OK && r->spec == NULL && (id = cli_next(&a)) != CLI_END) {
+        rc = take_arg(r, &a, id);
     }
     if (rc != XFGCU_EXIT_OK || r->help) {
         return rc;
@@ -95,7 +99,8 @@ static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_comm
     if (r->file == NULL) {
         return cli_fail("record: missing FILE (where the capture goes)");
     }
-    return (r->spec != NULL) ? cmdargs_parse(r->spec, "record", r->cargc, r->cargv, version, cmd) : XFGCU_EXIT_OK;
+    return (r->spec != NULL) ? cmdargs_parse(r->spec, "record", argc - a.index, argv + a.index, &version, NULL, cmd)
+                             : XFGCU_EXIT_OK;
 }
 
 /* ---- callbacks ------------------------------------------------------------------------ */
@@ -232,10 +237,6 @@ int cmd_record(const cli_link *link, int argc, char **argv)
     xf_command cmd;
     int rc;
     memset(&r, 0, sizeof(r));
-    r.cargv = calloc((size_t)argc + 1u, sizeof(*r.cargv));
-    if (r.cargv == NULL) {
-        return cli_fail("record: out of memory");
-    }
     rc = parse_args(&r, argc, argv, link->protocol, &cmd);
     if (rc == XFGCU_EXIT_OK && r.help) {
         help_record(stdout);
@@ -245,6 +246,5 @@ int cmd_record(const cli_link *link, int argc, char **argv)
             rc = run_record(&r, link, &cmd);
         }
     }
-    free(r.cargv);
     return rc;
 }

@@ -16,7 +16,7 @@
 #include "jsonpkt.h"
 #include "online.h"
 #include "table.h"
-#include "xfgcu/xf_capture.h"
+#include "capture.h"
 
 void help_replay(FILE *out)
 {
@@ -185,35 +185,50 @@ static void print_summary(const replay *r)
 
 /* ---- the command ------------------------------------------------------------------------ */
 
-static int take_arg(replay *r, const char *arg)
+enum { O_JSON = 256, O_BRIEF, O_HELP };
+
+static const struct option replay_options[] = {
+    {"json", no_argument, NULL, O_JSON},
+    {"brief", no_argument, NULL, O_BRIEF},
+    {"help", no_argument, NULL, O_HELP},
+    {NULL, 0, NULL, 0},
+};
+
+static int take_arg(replay *r, const cli_args *a, int id)
 {
-    if (strcmp(arg, "--json") == 0 || strcmp(arg, "--brief") == 0) {
-        int style = (arg[2] == 'j') ? STYLE_JSON : STYLE_BRIEF;
+    int style = (id == O_JSON) ? STYLE_JSON : STYLE_BRIEF;
+    switch (id) {
+    case O_JSON:
+    case O_BRIEF:
         if (r->style != STYLE_TABLE && r->style != style) {
             return cli_fail("replay: --json and --brief exclude each other");
         }
         r->style = style;
-    } else if (strcmp(arg, "--help") == 0) {
-        r->help = 1;
-    } else if ((arg[0] == '-' && arg[1] != '\0') || r->file != NULL) {
-        return cli_unexpected("replay", arg);
-    } else {
-        r->file = arg;
+        return XFGCU_EXIT_OK;
+    case O_HELP: r->help = 1; return XFGCU_EXIT_OK;
+    case CLI_ARG:
+        if (r->file != NULL) {
+            return cli_unexpected(a);
+        }
+        r->file = a->value;
+        return XFGCU_EXIT_OK;
+    default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
     }
-    return XFGCU_EXIT_OK;
 }
 
 int cmd_replay(const cli_link *link, int argc, char **argv)
 {
     replay *r = calloc(1, sizeof(*r));
     FILE *in;
-    int i, rc = XFGCU_EXIT_OK;
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
     (void)link; /* offline */
     if (r == NULL) {
         return cli_fail("replay: out of memory");
     }
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(r, argv[i]);
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, replay_options, "replay");
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        rc = take_arg(r, &a, id);
     }
     if (rc == XFGCU_EXIT_OK && r->help) {
         help_replay(stdout);

@@ -8,7 +8,6 @@
  * "operating" lines while a calibration runs; a failure also prints its
  * one line on stderr. Exit 0 ok, 1 failed, 3 timeout or link lost.
  */
-#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
@@ -36,17 +35,6 @@ void help_send(FILE *out)
     fputs("\n  --cameras MASK: a number (1, 0x03), a list of cameras (1,2 = 0x03) or all (0xFF).\n\n", out);
     help_link_options(out);
     fputs("\nexample: xfgcu --tcp 192.168.144.108 send zoom-to --rate 5.5\n", out);
-}
-
-typedef cmd_line send_args;
-
-static int take_arg(send_args *a, int argc, char **argv, int *i)
-{
-    int rc;
-    if (cmd_line_take(a, argc, argv, i, &rc)) {
-        return rc;
-    }
-    return cmd_line_command(a, "send", argv[*i]);
 }
 
 static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_ms)
@@ -86,35 +74,16 @@ static int run_send(const cli_link *link, const xf_command *cmd, const char *nam
 
 int cmd_send(const cli_link *link, int argc, char **argv)
 {
-    send_args a;
-    cli_link l = *link;
-    xf_command cmd;
-    int i, rc = XFGCU_EXIT_OK;
-    memset(&a, 0, sizeof(a));
-    a.version = link->protocol;
-    a.cargv = calloc((size_t)argc + 1u, sizeof(*a.cargv));
-    if (a.cargv == NULL) {
-        return cli_fail("send: out of memory");
+    cmd_line l;
+    cli_link with_version = *link;
+    int rc = cmd_line_parse(&l, "send", link->protocol, 0, help_send, argc, argv);
+    if (rc != XFGCU_EXIT_OK || l.help) {
+        return rc;
     }
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(&a, argc, argv, &i);
+    if (l.spec == NULL) {
+        return cli_fail("send: which command? (see 'xfgcu send --help')");
     }
-    if (rc == XFGCU_EXIT_OK && a.help) {
-        if (a.spec != NULL) {
-            cmdargs_help(a.spec, "send", stdout);
-        } else {
-            help_send(stdout);
-        }
-    } else if (rc == XFGCU_EXIT_OK && a.spec == NULL) {
-        rc = cli_fail("send: which command? (see 'xfgcu send --help')");
-    } else if (rc == XFGCU_EXIT_OK) {
-        rc = cmdargs_parse(a.spec, "send", a.cargc, a.cargv, a.version, &cmd);
-        if (rc == XFGCU_EXIT_OK) {
-            l.protocol = a.version;
-            cli_signals_init();
-            rc = run_send(&l, &cmd, cmdargs_name(a.spec));
-        }
-    }
-    free(a.cargv);
-    return rc;
+    with_version.protocol = l.version;
+    cli_signals_init();
+    return run_send(&with_version, &l.cmd, cmdargs_name(l.spec));
 }

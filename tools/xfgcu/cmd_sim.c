@@ -17,7 +17,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "cmdargs.h"
 #include "online.h"
 #include "xfgcu/xf_sim.h"
 
@@ -66,44 +65,59 @@ typedef struct sim_args {
 
 /* ---- arguments ------------------------------------------------------------------------- */
 
-/* --udp [PORT] / --tcp [PORT]: the port is optional, taken when the next argument is a number. */
-static int take_kind(sim_args *a, int argc, char **argv, int *i)
+/* The ids of the options: the link's are O_KIND + its sim_kind. */
+enum {
+    O_KIND = 256,
+    O_LINK = 300,
+    O_BAUD,
+    O_BIND,
+    O_PROTOCOL,
+    O_FAIL,
+    O_DROP,
+    O_DELAY,
+    O_CALIBRATION,
+    O_DURATION,
+    O_VERBOSE,
+    O_HELP
+};
+
+static const struct option sim_options[] = {
+    {"tcp", optional_argument, NULL, O_KIND + SIM_TCP},
+    {"udp", optional_argument, NULL, O_KIND + SIM_UDP},
+    {"pty", no_argument, NULL, O_KIND + SIM_PTY},
+    {"serial", required_argument, NULL, O_KIND + SIM_SERIAL},
+    {"link", required_argument, NULL, O_LINK},
+    {"baud", required_argument, NULL, O_BAUD},
+    {"bind", required_argument, NULL, O_BIND},
+    {"protocol", required_argument, NULL, O_PROTOCOL},
+    {"fail", required_argument, NULL, O_FAIL},
+    {"drop", required_argument, NULL, O_DROP},
+    {"delay", required_argument, NULL, O_DELAY},
+    {"calibration-ms", required_argument, NULL, O_CALIBRATION},
+    {"duration", required_argument, NULL, O_DURATION},
+    {"verbose", no_argument, NULL, O_VERBOSE},
+    {"help", no_argument, NULL, O_HELP},
+    {NULL, 0, NULL, 0},
+};
+
+/* --tcp [PORT], --udp [PORT], --pty, --serial PATH: the port is optional, taken when the next
+ * argument does not look like an option. */
+static int take_kind(sim_args *s, cli_args *a, int kind)
 {
-    static const char *const names[] = {"--tcp", "--udp", "--pty", "--serial"};
-    const char *arg = argv[*i];
-    int k;
-    for (k = 0; k < 4; k++) {
-        size_t n = strlen(names[k]);
-        if (strncmp(arg, names[k], n) == 0 && (arg[n] == '\0' || arg[n] == '=')) {
-            break;
-        }
-    }
-    if (k == 4) {
-        return -1;
-    }
-    if (a->has_kind) {
+    if (s->has_kind) {
         return cli_fail("sim: give only one of --tcp, --udp, --pty, --serial");
     }
-    a->has_kind = 1;
-    a->kind = k;
-    if (k == SIM_SERIAL) {
-        const char *v = NULL;
-        (void)cli_take_option(argc, argv, i, "--serial", &v);
-        a->serial = v;
-        return (v == NULL || v[0] == '\0') ? cli_fail("sim: --serial needs a value: a device path") : XFGCU_EXIT_OK;
+    s->has_kind = 1;
+    s->kind = kind;
+    switch ((sim_kind)kind) {
+    case SIM_SERIAL: return cli_value_text(a, "a device path", &s->serial);
+    case SIM_PTY: return XFGCU_EXIT_OK;
+    default:
+        s->port = (kind == SIM_TCP) ? (long)XF_GCU_TCP_PORT : (long)XF_GCU_UDP_PORT;
+        cli_optional_next(a);
+        return (a->value != NULL) ? cli_value_long(a, 0, 65535, "a port 0..65535 (0: any free port)", &s->port, NULL)
+                                  : XFGCU_EXIT_OK;
     }
-    if (k == SIM_PTY) {
-        return (arg[4] == '=') ? cli_fail("sim: --pty takes no value") : XFGCU_EXIT_OK;
-    }
-    a->port = (k == SIM_TCP) ? (long)XF_GCU_TCP_PORT : (long)XF_GCU_UDP_PORT;
-    if (arg[4] == '=') {
-        return cli_long_in("sim", names[k], arg + 5, 0, 65535, "a port 0..65535 (0: any free port)", &a->port);
-    }
-    if (*i + 1 < argc && argv[*i + 1][0] != '-') {
-        (*i)++;
-        return cli_long_in("sim", names[k], argv[*i], 0, 65535, "a port 0..65535 (0: any free port)", &a->port);
-    }
-    return XFGCU_EXIT_OK;
 }
 
 /* --fail ORDER=STATE */
@@ -131,71 +145,26 @@ static int take_fail(sim_args *a, const char *text)
     return XFGCU_EXIT_OK;
 }
 
-static int take_text(const char **to, const char *opt, const char *meta, const char *v)
+static int take_arg(sim_args *s, cli_args *a, int id)
 {
-    if (v == NULL || v[0] == '\0') {
-        return cli_fail("sim: %s needs a value: %s", opt, meta);
+    switch (id) {
+    case O_LINK: return cli_value_text(a, "PATH", &s->link);
+    case O_BAUD: return cli_value_baud(a, &s->baud, &s->has_baud);
+    case O_BIND: return cli_value_text(a, "ADDR", &s->bind);
+    case O_PROTOCOL: return cli_value_protocol(a, &s->version);
+    case O_FAIL: return take_fail(s, a->value);
+    case O_DROP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->drop, &s->has_drop);
+    case O_DELAY: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->delay, &s->has_delay);
+    case O_CALIBRATION:
+        return cli_value_long(a, 0, 600000, "milliseconds, 0..600000", &s->calibration_ms, &s->has_calibration);
+    case O_DURATION:
+        return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &s->duration, &s->has_duration);
+    case O_VERBOSE: s->verbose = 1; return XFGCU_EXIT_OK;
+    case O_HELP: s->help = 1; return XFGCU_EXIT_OK;
+    case CLI_ARG: return cli_unexpected(a);
+    case CLI_BAD: return XFGCU_EXIT_USAGE;
+    default: return take_kind(s, a, id - O_KIND);
     }
-    *to = v;
-    return XFGCU_EXIT_OK;
-}
-
-static int take_value_option(sim_args *a, int argc, char **argv, int *i)
-{
-    const char *v = NULL;
-    int rc = cli_opt_long("sim", argc, argv, i, "--drop", 0, 1000, "per mille, 0..1000", &a->drop, &a->has_drop);
-    if (rc < 0) {
-        rc =
-            cli_opt_long("sim", argc, argv, i, "--delay", 0, 10000, "milliseconds, 0..10000", &a->delay, &a->has_delay);
-    }
-    if (rc < 0) {
-        rc = cli_opt_long("sim", argc, argv, i, "--calibration-ms", 0, 600000, "milliseconds, 0..600000",
-                          &a->calibration_ms, &a->has_calibration);
-    }
-    if (rc < 0) {
-        rc = cli_opt_real("sim", argc, argv, i, "--duration", 0.1, 31536000.0, "seconds, 0.1..31536000", &a->duration,
-                          &a->has_duration);
-    }
-    if (rc < 0) {
-        rc = cli_opt_long("sim", argc, argv, i, "--baud", 1, 100000000L, "115200, 250000, 500000 or 1000000", &a->baud,
-                          &a->has_baud);
-        if (rc == XFGCU_EXIT_OK && !xf_serial_baud_ok((uint32_t)a->baud)) {
-            rc = cli_fail("sim: --baud %ld: must be 115200, 250000, 500000 or 1000000", a->baud);
-        }
-    }
-    if (rc >= 0) {
-        return rc;
-    }
-    if (cli_take_option(argc, argv, i, "--fail", &v)) {
-        return take_fail(a, v);
-    }
-    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
-        return cli_parse_protocol(v, &a->version);
-    }
-    if (cli_take_option(argc, argv, i, "--bind", &v)) {
-        return take_text(&a->bind, "--bind", "ADDR", v);
-    }
-    if (cli_take_option(argc, argv, i, "--link", &v)) {
-        return take_text(&a->link, "--link", "PATH", v);
-    }
-    return -1;
-}
-
-static int take_arg(sim_args *a, int argc, char **argv, int *i)
-{
-    int rc = take_kind(a, argc, argv, i);
-    if (rc < 0) {
-        rc = take_value_option(a, argc, argv, i);
-    }
-    if (rc < 0 && strcmp(argv[*i], "--verbose") == 0) {
-        a->verbose = 1;
-        rc = XFGCU_EXIT_OK;
-    }
-    if (rc < 0 && strcmp(argv[*i], "--help") == 0) {
-        a->help = 1;
-        rc = XFGCU_EXIT_OK;
-    }
-    return (rc < 0) ? cli_unexpected("sim", argv[*i]) : rc;
 }
 
 static int check_args(const sim_args *a)
@@ -334,13 +303,15 @@ int cmd_sim(const cli_link *link, int argc, char **argv)
 {
     sim_args a;
     sim_run *s;
-    int i, rc = XFGCU_EXIT_OK;
+    cli_args args;
+    int id, rc = XFGCU_EXIT_OK;
     memset(&a, 0, sizeof(a));
     a.port = (long)XF_GCU_TCP_PORT;
     a.version = link->protocol;
     a.baud = link->baud;
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(&a, argc, argv, &i);
+    cli_args_init(&args, argc, argv, CLI_IN_ORDER, sim_options, "sim");
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&args)) != CLI_END) {
+        rc = take_arg(&a, &args, id);
     }
     if (rc == XFGCU_EXIT_OK && a.help) {
         help_sim(stdout);

@@ -1,9 +1,13 @@
 /*
  * cmdargs.c - numbers, options, and the arguments of every named command.
  *
- * Each command is a row: its order and the options it takes. An option
- * says how its text becomes xf_command members (kind + first member) and
- * how it combines with the others:
+ * Options: every loop of the program is getopt_long() through cli_next()
+ * (cli.h), which adds the program's own one-line messages.
+ *
+ * Commands: one per order of the codec's table (xf_order_at), named by the
+ * codec (xf_order_name, '-' for '_'). The command line adds, per order, the
+ * options it takes and how each maps onto xf_command members (kind + first
+ * member), and how they combine:
  *   OPT_REQUIRED  must be given;
  *   OPT_CHOICE    exactly one of the command's CHOICE options is given
  *                 (--start | --stop, --rate | --fraction, --on | --off);
@@ -19,13 +23,12 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 
-/* ---- numbers and options ------------------------------------------------ */
+/* ---- numbers ------------------------------------------------------------- */
 
 int cli_parse_int(const char *s, long long *out)
 {
@@ -80,43 +83,176 @@ int cli_parse_real(const char *s, double *out)
     return 0;
 }
 
-int cli_take_option(int argc, char **argv, int *i, const char *name, const char **value)
+/* ---- options ------------------------------------------------------------- */
+
+void cli_args_init(cli_args *a, int argc, char **argv, const char *optstring, const struct option *opts,
+                   const char *context)
 {
-    const char *arg = argv[*i];
-    size_t n = strlen(name);
-    if (strncmp(arg, name, n) != 0) {
-        return 0;
-    }
-    if (arg[n] == '=') {
-        *value = arg + n + 1;
-        return 1;
-    }
-    if (arg[n] != '\0') {
-        return 0;
-    }
-    if (*i + 1 < argc) {
-        (*i)++;
-        *value = argv[*i];
-    } else {
-        *value = NULL;
-    }
-    return 1;
+    memset(a, 0, sizeof(*a));
+    a->argc = argc;
+    a->argv = argv;
+    a->optstring = optstring;
+    a->opts = opts;
+    a->context = context;
+    optind = 0; /* glibc: a new scan from argv[1], its state reset */
+    opterr = 0; /* getopt prints nothing: the errors are ours */
 }
 
-int cli_parse_protocol(const char *text, uint8_t *version)
+/* The row that "--name" or "--name=VALUE" names exactly, or NULL. */
+static const struct option *long_option(const struct option *opts, const char *text)
 {
-    long long v;
-    if (text == NULL) {
-        return cli_fail("--protocol needs a value: 1 or 2");
+    size_t n = strcspn(text + 2, "=");
+    if (strncmp(text, "--", 2) != 0) {
+        return NULL;
     }
-    if (cli_parse_int(text, &v) != 0 || (v != 1 && v != 2)) {
-        return cli_fail("--protocol %s: must be 1 or 2", text);
+    for (; opts->name != NULL; opts++) {
+        if (strlen(opts->name) == n && strncmp(opts->name, text + 2, n) == 0) {
+            return opts;
+        }
     }
-    *version = (uint8_t)v;
+    return NULL;
+}
+
+/* An unknown option (@p o NULL), or a value given to option @p o, which takes none. */
+static int bad_option(const cli_args *a, const char *text, const struct option *o)
+{
+    const char *hint = (a->hint != NULL) ? a->hint : a->context;
+    if (a->quiet) {
+        return CLI_BAD;
+    }
+    if (o != NULL) {
+        (void)cli_fail_in(a->context, "--%s takes no value", o->name);
+    } else if (hint == NULL) {
+        (void)cli_fail("unknown option '%s' (try 'xfgcu --help')", text);
+    } else {
+        (void)cli_fail_in(a->context, "unknown option '%s' (see 'xfgcu %s --help')", text, hint);
+    }
+    return CLI_BAD;
+}
+
+/* getopt_long() returned @p id for argv[a->index]: the option, if its whole name was given. */
+static int checked_option(cli_args *a, int id)
+{
+    const char *text = a->argv[a->index];
+    const struct option *o = long_option(a->opts, text);
+    if (text[1] != '-') { /* a short option: alone, not in a cluster */
+        if (id == '?' || id == ':' || text[2] != '\0') {
+            return bad_option(a, text, NULL);
+        }
+        for (o = a->opts; o->name != NULL && o->val != id; o++) {
+        }
+        a->opt = o; /* its long form (-h: --help) */
+        return id;
+    }
+    if (o == NULL || (id != '?' && id != ':' && id != o->val)) {
+        return bad_option(a, text, NULL); /* unknown, ambiguous or abbreviated */
+    }
+    if (id == '?') {
+        return bad_option(a, text, o); /* "--name=VALUE" for an option without a value */
+    }
+    a->opt = o; /* id ':' (the value is missing) comes back as the option, with no value */
+    return o->val;
+}
+
+int cli_next(cli_args *a)
+{
+    int id;
+    a->opt = NULL;
+    a->value = NULL;
+    if (a->tail == 0) {
+        a->index = (optind > 0) ? optind : 1; /* no permutation: getopt reads argv[optind] */
+        id = getopt_long(a->argc, a->argv, a->optstring, a->opts, NULL);
+        if (id != -1) {
+            a->value = optarg;
+            return (id == CLI_ARG) ? CLI_ARG : checked_option(a, id);
+        }
+        a->tail = optind; /* CLI_STOP: COMMAND; CLI_IN_ORDER: what follows "--" */
+    }
+    if (a->optstring[0] != '-' || a->tail >= a->argc) {
+        return CLI_END;
+    }
+    a->index = a->tail++;
+    a->value = a->argv[a->index];
+    return CLI_ARG;
+}
+
+void cli_optional_next(cli_args *a)
+{
+    if (a->value == NULL && optind < a->argc && a->argv[optind][0] != '-') {
+        a->value = a->argv[optind++];
+    }
+}
+
+int cli_rest(const cli_args *a) { return a->tail; }
+
+int cli_unexpected(const cli_args *a)
+{
+    return cli_fail_in(a->context, "unexpected argument '%s' (see 'xfgcu %s --help')", a->value,
+                       (a->hint != NULL) ? a->hint : a->context);
+}
+
+/* The value is there, and the option was not given before. */
+static int value_given(const cli_args *a, const char *what, int *given)
+{
+    if (given != NULL && *given) {
+        return cli_fail_in(a->context, "--%s given twice", a->opt->name);
+    }
+    if (given != NULL) {
+        *given = 1;
+    }
+    if (a->value == NULL || a->value[0] == '\0') {
+        return cli_fail_in(a->context, "--%s needs a value: %s", a->opt->name, what);
+    }
     return XFGCU_EXIT_OK;
 }
 
-/* ---- the table of commands ---------------------------------------------- */
+static int value_not(const cli_args *a, const char *what)
+{
+    return cli_fail_in(a->context, "--%s %s: must be %s", a->opt->name, a->value, what);
+}
+
+int cli_value_real(const cli_args *a, double lo, double hi, const char *what, double *out, int *given)
+{
+    int rc = value_given(a, what, given);
+    if (rc == XFGCU_EXIT_OK && (cli_parse_real(a->value, out) != 0 || *out < lo || *out > hi)) {
+        rc = value_not(a, what);
+    }
+    return rc;
+}
+
+int cli_value_long(const cli_args *a, long lo, long hi, const char *what, long *out, int *given)
+{
+    long long v = 0;
+    int rc = value_given(a, what, given);
+    if (rc == XFGCU_EXIT_OK && (cli_parse_int(a->value, &v) != 0 || v < lo || v > hi)) {
+        rc = value_not(a, what);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        *out = (long)v;
+    }
+    return rc;
+}
+
+int cli_value_text(const cli_args *a, const char *what, const char **out)
+{
+    int rc = value_given(a, what, NULL);
+    if (rc == XFGCU_EXIT_OK) {
+        *out = a->value;
+    }
+    return rc;
+}
+
+int cli_value_protocol(const cli_args *a, uint8_t *version)
+{
+    long v = 0;
+    int rc = cli_value_long(a, XF_PROTOCOL_V1, XF_PROTOCOL_V2, "1 or 2", &v, NULL);
+    if (rc == XFGCU_EXIT_OK) {
+        *version = (uint8_t)v;
+    }
+    return rc;
+}
+
+/* ---- the commands: the codec's orders, with options ---------------------- */
 
 typedef enum opt_kind {
     K_SWITCH,    /* no value: stores `lo` in the member */
@@ -148,13 +284,12 @@ typedef struct opt_spec {
 
 #define MAX_OPTS 4
 
-struct cmd_spec {
-    const char *name; /* as typed: canonical name with '-' for '_' */
-    uint8_t order;
+/* What the command line adds to an order of the codec: its options, and a line of help. */
+typedef struct cmd_extra {
     uint8_t nopts;
     const opt_spec *opts;
     const char *summary;
-};
+} cmd_extra;
 
 #define NEED(i) ((uint8_t)(1u << (i)))
 #define SWITCH(nm, v, needs, what)                                                                                     \
@@ -175,10 +310,10 @@ static const opt_spec gaze_geo_opts[] = {
 static const opt_spec track_opts[] = {
     SWITCH("--start", 1, NEED(2), "start tracking the target in the box"),
     SWITCH("--stop", 0, 0, "stop tracking"),
-    {"--box", K_BOX, XF_F_X0, 0, 0, 0, 10000, "X0,Y0,X1,Y1", GRID_BOX},
+    {"--box", K_BOX, XF_F_X0, 0, 0, 0, XF_GRID_MAX, "X0,Y0,X1,Y1", GRID_BOX},
 };
 static const opt_spec click_opts[] = {
-    {"--at", K_POINT, XF_F_X0, OPT_REQUIRED, 0, 0, 10000, "X,Y", GRID_POINT},
+    {"--at", K_POINT, XF_F_X0, OPT_REQUIRED, 0, 0, XF_GRID_MAX, "X,Y", GRID_POINT},
 };
 static const opt_spec external_track_opts[] = {
     SWITCH("--start", 2, NEED(2), "track (streamed: send it with each new offset)"),
@@ -227,7 +362,7 @@ static const opt_spec time_zone_opts[] = {
 static const opt_spec area_temp_opts[] = {
     SWITCH("--on", 1, NEED(2), "measure the temperature in the box"),
     SWITCH("--off", 0, 0, "stop measuring"),
-    {"--box", K_BOX, XF_F_X0, 0, 0, 0, 10000, "X0,Y0,X1,Y1", GRID_BOX},
+    {"--box", K_BOX, XF_F_X0, 0, 0, 0, XF_GRID_MAX, "X0,Y0,X1,Y1", GRID_BOX},
 };
 static const opt_spec temp_alarm_opts[] = {
     SWITCH("--on", 1, NEED(2) | NEED(3), "alarm outside [--low, --high]"),
@@ -246,55 +381,83 @@ static const opt_spec isotherm_opts[] = {
 static const opt_spec spot_temp_opts[] = {
     SWITCH("--on", 1, NEED(2), "measure the temperature at the point"),
     SWITCH("--off", 0, 0, "stop measuring"),
-    {"--at", K_POINT, XF_F_X0, 0, 0, 0, 10000, "X,Y", GRID_POINT},
+    {"--at", K_POINT, XF_F_X0, 0, 0, 0, XF_GRID_MAX, "X,Y", GRID_POINT},
 };
 static const opt_spec on_off_opts[] = {
     SWITCH("--on", 1, 0, "on"),
     SWITCH("--off", 0, 0, "off"),
 };
 
-/* Same order as the codec's table; every order of the protocol has a row (checked by the tests). */
-static const cmd_spec commands[] = {
-    {"null", XF_ORDER_NULL, NO_OPTS, "the null order: goes between two commands of the same order"},
-    {"calibration", XF_ORDER_CALIBRATION, NO_OPTS, "calibrate the gimbal (keep it still)"},
-    {"neutral", XF_ORDER_NEUTRAL, NO_OPTS, "back to neutral without changing mode"},
-    {"osd-coordinate", XF_ORDER_OSD_COORDINATE, OPTS(osd_coordinate_opts), "which coordinates the OSD shows"},
-    {"auto-flip", XF_ORDER_AUTO_FLIP, OPTS(auto_flip_opts), "image auto-flip on or off"},
-    {"time-zone", XF_ORDER_TIME_ZONE, OPTS(time_zone_opts), "set the GCU's time zone"},
-    {"angle-control", XF_ORDER_ANGLE_CONTROL, NO_OPTS, "angle control mode (\"FPV\" in V2.0.4)"},
-    {"head-lock", XF_ORDER_HEAD_LOCK, NO_OPTS, "head lock mode"},
-    {"head-follow", XF_ORDER_HEAD_FOLLOW, NO_OPTS, "head follow mode"},
-    {"orthoview", XF_ORDER_ORTHOVIEW, NO_OPTS, "orthoview mode: pitch locked at -90 degrees"},
-    {"euler", XF_ORDER_EULER, NO_OPTS, "Euler angle control mode"},
-    {"gaze-geo", XF_ORDER_GAZE_GEO, OPTS(gaze_geo_opts), "point at a geo-coordinate (needs carrier INS data)"},
-    {"gaze-lock", XF_ORDER_GAZE_LOCK, NO_OPTS, "keep aiming at the point now in the centre (needs carrier INS data)"},
-    {"track", XF_ORDER_TRACK, OPTS(track_opts), "track a target with the gimbal's image processor"},
-    {"click-to-aim", XF_ORDER_CLICK_TO_AIM, OPTS(click_opts), "aim at a point of the picture"},
-    {"external-track", XF_ORDER_EXTERNAL_TRACK, OPTS(external_track_opts),
-     "track with offsets from an external detector"},
-    {"fpv", XF_ORDER_FPV, NO_OPTS, "FPV mode: control quantities relative to the carrier"},
-    {"shutter", XF_ORDER_SHUTTER, NO_OPTS, "take a picture"},
-    {"record", XF_ORDER_RECORD, NO_OPTS, "start or stop recording (toggle)"},
-    {"zoom-in", XF_ORDER_ZOOM_IN, NO_OPTS, "zoom in continuously"},
-    {"zoom-out", XF_ORDER_ZOOM_OUT, NO_OPTS, "zoom out continuously"},
-    {"zoom-stop", XF_ORDER_ZOOM_STOP, NO_OPTS, "stop zooming"},
-    {"zoom-to", XF_ORDER_ZOOM_TO, OPTS(zoom_to_opts), "zoom to a rate or to a fraction of the zoom range"},
-    {"focus", XF_ORDER_FOCUS, NO_OPTS, "focus"},
-    {"palette", XF_ORDER_PALETTE, OPTS(palette_opts), "choose the thermal palette"},
-    {"night-vision", XF_ORDER_NIGHT_VISION, OPTS(night_vision_opts), "night vision off, on or auto"},
-    {"area-temp", XF_ORDER_AREA_TEMP, OPTS(area_temp_opts), "area temperature measurement"},
-    {"temp-alarm", XF_ORDER_TEMP_ALARM, OPTS(temp_alarm_opts), "temperature alarm"},
-    {"isotherm", XF_ORDER_ISOTHERM, OPTS(isotherm_opts), "isotherm (in-range highlighting)"},
-    {"spot-temp", XF_ORDER_SPOT_TEMP, OPTS(spot_temp_opts), "spot temperature measurement"},
-    {"osd", XF_ORDER_OSD, OPTS(osd_opts), "show or hide the OSD"},
-    {"pip", XF_ORDER_PIP, OPTS(pip_opts), "picture-in-picture view"},
-    {"target-detection", XF_ORDER_TARGET_DETECTION, OPTS(on_off_opts), "target detection on or off"},
-    {"digital-zoom", XF_ORDER_DIGITAL_ZOOM, OPTS(on_off_opts), "digital zoom of the zoom camera on or off"},
-    {"lighting", XF_ORDER_LIGHTING, OPTS(lighting_opts), "set the light's intensity"},
-    {"ranging", XF_ORDER_RANGING, OPTS(ranging_opts), "laser ranging on or off"},
+/*
+ * Per order of the codec (xf_order_lookup), by its code: the options and the
+ * summary. The names, the parameters, their order and defaults are the
+ * codec's; an order it adds gets a command at once, without options until
+ * it has a row here (the tests check that every order has one).
+ */
+static const cmd_extra extras[256] = {
+    [XF_ORDER_NULL] = {NO_OPTS, "the null order: goes between two commands of the same order"},
+    [XF_ORDER_CALIBRATION] = {NO_OPTS, "calibrate the gimbal (keep it still)"},
+    [XF_ORDER_NEUTRAL] = {NO_OPTS, "back to neutral without changing mode"},
+    [XF_ORDER_OSD_COORDINATE] = {OPTS(osd_coordinate_opts), "which coordinates the OSD shows"},
+    [XF_ORDER_AUTO_FLIP] = {OPTS(auto_flip_opts), "image auto-flip on or off"},
+    [XF_ORDER_TIME_ZONE] = {OPTS(time_zone_opts), "set the GCU's time zone"},
+    [XF_ORDER_ANGLE_CONTROL] = {NO_OPTS, "angle control mode (\"FPV\" in V2.0.4)"},
+    [XF_ORDER_HEAD_LOCK] = {NO_OPTS, "head lock mode"},
+    [XF_ORDER_HEAD_FOLLOW] = {NO_OPTS, "head follow mode"},
+    [XF_ORDER_ORTHOVIEW] = {NO_OPTS, "orthoview mode: pitch locked at -90 degrees"},
+    [XF_ORDER_EULER] = {NO_OPTS, "Euler angle control mode"},
+    [XF_ORDER_GAZE_GEO] = {OPTS(gaze_geo_opts), "point at a geo-coordinate (needs carrier INS data)"},
+    [XF_ORDER_GAZE_LOCK] = {NO_OPTS, "keep aiming at the point now in the centre (needs carrier INS data)"},
+    [XF_ORDER_TRACK] = {OPTS(track_opts), "track a target with the gimbal's image processor"},
+    [XF_ORDER_CLICK_TO_AIM] = {OPTS(click_opts), "aim at a point of the picture"},
+    [XF_ORDER_EXTERNAL_TRACK] = {OPTS(external_track_opts), "track with offsets from an external detector"},
+    [XF_ORDER_FPV] = {NO_OPTS, "FPV mode: control quantities relative to the carrier"},
+    [XF_ORDER_SHUTTER] = {NO_OPTS, "take a picture"},
+    [XF_ORDER_RECORD] = {NO_OPTS, "start or stop recording (toggle)"},
+    [XF_ORDER_ZOOM_IN] = {NO_OPTS, "zoom in continuously"},
+    [XF_ORDER_ZOOM_OUT] = {NO_OPTS, "zoom out continuously"},
+    [XF_ORDER_ZOOM_STOP] = {NO_OPTS, "stop zooming"},
+    [XF_ORDER_ZOOM_TO] = {OPTS(zoom_to_opts), "zoom to a rate or to a fraction of the zoom range"},
+    [XF_ORDER_FOCUS] = {NO_OPTS, "focus"},
+    [XF_ORDER_PALETTE] = {OPTS(palette_opts), "choose the thermal palette"},
+    [XF_ORDER_NIGHT_VISION] = {OPTS(night_vision_opts), "night vision off, on or auto"},
+    [XF_ORDER_AREA_TEMP] = {OPTS(area_temp_opts), "area temperature measurement"},
+    [XF_ORDER_TEMP_ALARM] = {OPTS(temp_alarm_opts), "temperature alarm"},
+    [XF_ORDER_ISOTHERM] = {OPTS(isotherm_opts), "isotherm (in-range highlighting)"},
+    [XF_ORDER_SPOT_TEMP] = {OPTS(spot_temp_opts), "spot temperature measurement"},
+    [XF_ORDER_OSD] = {OPTS(osd_opts), "show or hide the OSD"},
+    [XF_ORDER_PIP] = {OPTS(pip_opts), "picture-in-picture view"},
+    [XF_ORDER_TARGET_DETECTION] = {OPTS(on_off_opts), "target detection on or off"},
+    [XF_ORDER_DIGITAL_ZOOM] = {OPTS(on_off_opts), "digital zoom of the zoom camera on or off"},
+    [XF_ORDER_LIGHTING] = {OPTS(lighting_opts), "set the light's intensity"},
+    [XF_ORDER_RANGING] = {OPTS(ranging_opts), "laser ranging on or off"},
 };
 
-#define N_COMMANDS (sizeof(commands) / sizeof(commands[0]))
+/* ---- the commands, from the codec's table --------------------------------- */
+
+struct cmd_spec {
+    const xf_order_info *info; /* the codec's row */
+    const cmd_extra *extra;    /* what the command line adds */
+    char name[32];             /* as typed: the canonical name with '-' for '_' */
+};
+
+/* The commands in the order of the codec's table, named once. */
+static const cmd_spec *spec_at(size_t i)
+{
+    static cmd_spec specs[XF_ORDER_COUNT];
+    static int named = 0;
+    size_t k, n;
+    for (k = 0; !named && k < XF_ORDER_COUNT; k++) {
+        const char *name = xf_order_name(xf_order_at(k)->order);
+        specs[k].info = xf_order_at(k);
+        specs[k].extra = &extras[specs[k].info->order];
+        for (n = 0; name[n] != '\0' && n + 1u < sizeof(specs[k].name); n++) {
+            specs[k].name[n] = (name[n] == '_') ? '-' : name[n];
+        }
+    }
+    named = 1;
+    return (i < XF_ORDER_COUNT) ? &specs[i] : NULL;
+}
 
 const cmd_spec *cmdargs_find(const char *name)
 {
@@ -303,9 +466,9 @@ const cmd_spec *cmdargs_find(const char *name)
     if (xf_order_from_name(name, &order) != XF_OK) {
         return NULL;
     }
-    for (i = 0; i < N_COMMANDS; i++) {
-        if (commands[i].order == order) {
-            return &commands[i];
+    for (i = 0; spec_at(i) != NULL; i++) {
+        if (spec_at(i)->info->order == order) {
+            return spec_at(i);
         }
     }
     return NULL;
@@ -317,10 +480,9 @@ const char *cmdargs_name(const cmd_spec *spec) { return spec->name; }
 
 static int takes_cameras(const cmd_spec *spec)
 {
-    const xf_order_info *info = xf_order_lookup(spec->order);
     size_t i;
-    for (i = 0; info != NULL && i < info->nfields; i++) {
-        if (info->fields[i] == XF_F_CAMERAS) {
+    for (i = 0; i < spec->info->nfields; i++) {
+        if (spec->info->fields[i] == XF_F_CAMERAS) {
             return 1;
         }
     }
@@ -350,17 +512,17 @@ static void choices_text(const cmd_spec *spec, const char *sep, char *buf, size_
     size_t i, k;
     int first = 1;
     buf[0] = '\0';
-    for (i = 0; i < spec->nopts; i++) {
-        const opt_spec *o = &spec->opts[i];
+    for (i = 0; i < spec->extra->nopts; i++) {
+        const opt_spec *o = &spec->extra->opts[i];
         if ((o->flags & OPT_CHOICE) == 0u) {
             continue;
         }
         append(buf, cap, first ? "" : sep);
         append_opt(buf, cap, o);
-        for (k = 0; k < spec->nopts; k++) {
+        for (k = 0; k < spec->extra->nopts; k++) {
             if ((o->needs & NEED(k)) != 0u) {
                 append(buf, cap, " ");
-                append_opt(buf, cap, &spec->opts[k]);
+                append_opt(buf, cap, &spec->extra->opts[k]);
             }
         }
         first = 0;
@@ -378,10 +540,10 @@ static void usage_text(const cmd_spec *spec, char *buf, size_t cap)
         append(buf, cap, choices);
         append(buf, cap, ")");
     }
-    for (i = 0; i < spec->nopts; i++) {
-        if ((spec->opts[i].flags & OPT_REQUIRED) != 0u) {
+    for (i = 0; i < spec->extra->nopts; i++) {
+        if ((spec->extra->opts[i].flags & OPT_REQUIRED) != 0u) {
             append(buf, cap, buf[0] != '\0' ? " " : "");
-            append_opt(buf, cap, &spec->opts[i]);
+            append_opt(buf, cap, &spec->extra->opts[i]);
         }
     }
     if (takes_cameras(spec)) {
@@ -391,24 +553,26 @@ static void usage_text(const cmd_spec *spec, char *buf, size_t cap)
 
 void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out)
 {
-    const xf_order_info *info = xf_order_lookup(spec->order);
+    const xf_order_info *info = spec->info;
+    const char *summary = spec->extra->summary;
+    size_t i, nparams = xf_order_params_len(info->order);
     char usage[512];
-    size_t i;
     usage_text(spec, usage, sizeof(usage));
     fprintf(out, "usage: xfgcu %s [--protocol 1|2] %s%s%s\n\n", context, spec->name, usage[0] != '\0' ? " " : "",
             usage);
-    fprintf(out, "%c%s.\norder 0x%02X %s, protocol %u%s", toupper((unsigned char)spec->summary[0]), spec->summary + 1,
-            spec->order, xf_order_name(info->order), (unsigned)info->since,
+    if (summary != NULL) {
+        fprintf(out, "%c%s.\n", toupper((unsigned char)summary[0]), summary + 1);
+    }
+    fprintf(out, "order 0x%02X %s, protocol %u%s", info->order, xf_order_name(info->order), (unsigned)info->since,
             info->since > 1u ? " (V0.2) and later" : " and later");
-    fprintf(out, "; %zu parameter byte%s.\n", xf_order_params_len(spec->order),
-            xf_order_params_len(spec->order) == 1u ? "" : "s");
-    if (spec->nopts > 0u || takes_cameras(spec)) {
+    fprintf(out, "; %zu parameter byte%s.\n", nparams, nparams == 1u ? "" : "s");
+    if (spec->extra->nopts > 0u || takes_cameras(spec)) {
         fprintf(out, "\noptions:\n");
     }
-    for (i = 0; i < spec->nopts; i++) {
+    for (i = 0; i < spec->extra->nopts; i++) {
         char left[64] = "";
-        append_opt(left, sizeof(left), &spec->opts[i]);
-        fprintf(out, "  %-22s %s\n", left, spec->opts[i].help);
+        append_opt(left, sizeof(left), &spec->extra->opts[i]);
+        fprintf(out, "  %-22s %s\n", left, spec->extra->opts[i].help);
     }
     if (takes_cameras(spec)) {
         fprintf(out, "  %-22s camera mask: a number (1, 0x03), a list (1,2 = cameras 1 and 2) or all; default 0x%02X\n",
@@ -418,13 +582,13 @@ void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out)
 
 void cmdargs_list(FILE *out)
 {
+    const cmd_spec *spec;
     size_t i;
-    for (i = 0; i < N_COMMANDS; i++) {
+    for (i = 0; (spec = spec_at(i)) != NULL; i++) {
         char usage[512];
-        const xf_order_info *info = xf_order_lookup(commands[i].order);
-        usage_text(&commands[i], usage, sizeof(usage));
-        fprintf(out, "  %-17s %s%s\n", commands[i].name, usage[0] != '\0' ? usage : "(no arguments)",
-                info != NULL && info->since > 1u ? "  [V0.2]" : "");
+        usage_text(spec, usage, sizeof(usage));
+        fprintf(out, "  %-17s %s%s\n", spec->name, usage[0] != '\0' ? usage : "(no arguments)",
+                spec->info->since > 1u ? "  [V0.2]" : "");
     }
 }
 
@@ -432,24 +596,11 @@ void cmdargs_list(FILE *out)
 
 typedef struct parse_state {
     const cmd_spec *spec;
-    const char *context;
+    char where[64];              /* "encode zoom-to": the messages' prefix */
     const char *given[MAX_OPTS]; /* per option: its value text (a switch: its name), NULL if absent */
     const char *cameras;         /* --cameras text, NULL if absent */
     xf_command cmd;
 } parse_state;
-
-static int fail_cmd(const parse_state *st, const char *fmt, ...) CLI_PRINTF(2, 3);
-
-/* "xfgcu: encode track: <message>" */
-static int fail_cmd(const parse_state *st, const char *fmt, ...)
-{
-    char msg[512];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof(msg), fmt, ap);
-    va_end(ap);
-    return cli_fail("%s %s: %s", st->context, st->spec->name, msg);
-}
 
 /* Split "a,b,c" into exactly @p n integers. */
 static int parse_int_list(const char *text, long long *vals, size_t n)
@@ -491,7 +642,7 @@ static int parse_cameras(const parse_state *st, const char *text, uint8_t *mask)
             char *end = NULL;
             long cam = (*p >= '0' && *p <= '9') ? strtol(p, &end, 10) : 0; /* no sign, no space */
             if (cam < 1 || cam > 8 || (*end != ',' && *end != '\0')) {
-                return fail_cmd(st, "--cameras %s: a list holds camera numbers 1..8, like 1,2", text);
+                return cli_fail_in(st->where, "--cameras %s: a list holds camera numbers 1..8, like 1,2", text);
             }
             m |= 1u << (cam - 1);
             p = (*end == ',') ? end + 1 : end;
@@ -500,8 +651,8 @@ static int parse_cameras(const parse_state *st, const char *text, uint8_t *mask)
         return XFGCU_EXIT_OK;
     }
     if (cli_parse_int(text, &v) != 0 || v < 1 || v > 255) {
-        return fail_cmd(st, "--cameras %s: expected a mask 1..255 (1, 0x03), a list of cameras 1..8 (1,2) or all",
-                        text);
+        return cli_fail_in(st->where,
+                           "--cameras %s: expected a mask 1..255 (1, 0x03), a list of cameras 1..8 (1,2) or all", text);
     }
     *mask = (uint8_t)v;
     return XFGCU_EXIT_OK;
@@ -509,7 +660,7 @@ static int parse_cameras(const parse_state *st, const char *text, uint8_t *mask)
 
 static int out_of_range(const parse_state *st, const opt_spec *o, const char *text)
 {
-    return fail_cmd(st, "%s %s is out of range: %s", o->name, text, o->help);
+    return cli_fail_in(st->where, "%s %s is out of range: %s", o->name, text, o->help);
 }
 
 static int set_ints(parse_state *st, const opt_spec *o, const char *text, size_t n)
@@ -517,7 +668,7 @@ static int set_ints(parse_state *st, const opt_spec *o, const char *text, size_t
     long long v[4];
     size_t k;
     if (parse_int_list(text, v, n) != 0) {
-        return fail_cmd(st, "%s %s: expected %s (integers)", o->name, text, o->meta);
+        return cli_fail_in(st->where, "%s %s: expected %s (integers)", o->name, text, o->meta);
     }
     for (k = 0; k < n; k++) {
         if ((double)v[k] < o->lo || (double)v[k] > o->hi) {
@@ -545,7 +696,7 @@ static int set_word(parse_state *st, const opt_spec *o, const char *text)
         w = (bar != NULL) ? bar + 1 : NULL;
         index++;
     }
-    return fail_cmd(st, "%s %s: expected one of %s", o->name, text, o->meta);
+    return cli_fail_in(st->where, "%s %s: expected one of %s", o->name, text, o->meta);
 }
 
 /* Real-valued options: the physical value, checked, then converted to the raw member. */
@@ -554,7 +705,7 @@ static int set_real(parse_state *st, const opt_spec *o, const char *text)
     double v;
     int32_t raw;
     if (cli_parse_real(text, &v) != 0) {
-        return fail_cmd(st, "%s %s: expected a number", o->name, text);
+        return cli_fail_in(st->where, "%s %s: expected a number", o->name, text);
     }
     if (v < o->lo || v > o->hi) {
         return out_of_range(st, o, text);
@@ -582,65 +733,44 @@ static int set_value(parse_state *st, const opt_spec *o, const char *text)
     }
 }
 
-static const opt_spec *find_opt(const parse_state *st, const char *arg, size_t *index)
+static int take_cameras(parse_state *st, const char *text)
 {
-    size_t i;
-    for (i = 0; i < st->spec->nopts; i++) {
-        const char *name = st->spec->opts[i].name;
-        size_t n = strlen(name);
-        if (strncmp(arg, name, n) == 0 && (arg[n] == '\0' || arg[n] == '=')) {
-            *index = i;
-            return &st->spec->opts[i];
-        }
-    }
-    return NULL;
-}
-
-static int take_cameras(parse_state *st, int argc, char **argv, int *i)
-{
-    const char *text = NULL;
-    if (!takes_cameras(st->spec) || !cli_take_option(argc, argv, i, "--cameras", &text)) {
-        return -1; /* not --cameras for this command */
-    }
     if (text == NULL) {
-        return fail_cmd(st, "--cameras needs a value: a mask (1, 0x03), a list (1,2) or all");
+        return cli_fail_in(st->where, "--cameras needs a value: a mask (1, 0x03), a list (1,2) or all");
     }
     if (st->cameras != NULL) {
-        return fail_cmd(st, "--cameras given twice");
+        return cli_fail_in(st->where, "--cameras given twice");
     }
     st->cameras = text;
     return parse_cameras(st, text, &st->cmd.cameras);
 }
 
-static int take_arg(parse_state *st, int argc, char **argv, int *i)
+/* The ids of the options cli_next() returns: the command's own are ID_OPT + their index in its row. */
+#define ID_OPT      256
+#define ID_CAMERAS  'c'
+#define ID_PROTOCOL 'p'
+#define ID_HELP     'h'
+#define ID_JSON     'j'
+
+static int take_option(parse_state *st, const cli_args *a, int id)
 {
-    const char *arg = argv[*i];
-    const char *text = NULL;
-    size_t index = 0;
     const opt_spec *o;
-    int rc = take_cameras(st, argc, argv, i);
-    if (rc >= 0) {
-        return rc;
+    size_t index = (size_t)(id - ID_OPT);
+    if (id == ID_CAMERAS) {
+        return take_cameras(st, a->value);
     }
-    o = find_opt(st, arg, &index);
-    if (o == NULL) {
-        return (arg[0] == '-')
-                   ? fail_cmd(st, "unknown option '%s' (see 'xfgcu %s %s --help')", arg, st->context, st->spec->name)
-                   : fail_cmd(st, "unexpected argument '%s'", arg);
+    if (id < ID_OPT) {
+        return XFGCU_EXIT_OK; /* --protocol and --help: the first pass took them */
     }
-    if (o->kind == K_SWITCH) {
-        if (strchr(arg, '=') != NULL) {
-            return fail_cmd(st, "%s takes no value", o->name);
-        }
-        text = o->name;
-    } else if (!cli_take_option(argc, argv, i, o->name, &text) || text == NULL) {
-        return fail_cmd(st, "%s needs a value: %s", o->name, o->meta);
+    o = &st->spec->extra->opts[index];
+    if (o->kind != K_SWITCH && a->value == NULL) {
+        return cli_fail_in(st->where, "%s needs a value: %s", o->name, o->meta);
     }
     if (st->given[index] != NULL) {
-        return fail_cmd(st, "%s given twice", o->name);
+        return cli_fail_in(st->where, "%s given twice", o->name);
     }
-    st->given[index] = text;
-    return set_value(st, o, text);
+    st->given[index] = (o->kind == K_SWITCH) ? o->name : a->value;
+    return set_value(st, o, st->given[index]);
 }
 
 /* Which choice was made; -1 for none. Refuses two. */
@@ -648,11 +778,11 @@ static int chosen_option(const parse_state *st, int *chosen)
 {
     size_t i;
     *chosen = -1;
-    for (i = 0; i < st->spec->nopts; i++) {
-        if ((st->spec->opts[i].flags & OPT_CHOICE) != 0u && st->given[i] != NULL) {
+    for (i = 0; i < st->spec->extra->nopts; i++) {
+        if ((st->spec->extra->opts[i].flags & OPT_CHOICE) != 0u && st->given[i] != NULL) {
             if (*chosen >= 0) {
-                return fail_cmd(st, "%s and %s exclude each other", st->spec->opts[*chosen].name,
-                                st->spec->opts[i].name);
+                return cli_fail_in(st->where, "%s and %s exclude each other", st->spec->extra->opts[*chosen].name,
+                                   st->spec->extra->opts[i].name);
             }
             *chosen = (int)i;
         }
@@ -663,6 +793,7 @@ static int chosen_option(const parse_state *st, int *chosen)
 static int check_combination(const parse_state *st)
 {
     const cmd_spec *s = st->spec;
+    const opt_spec *opts = s->extra->opts;
     size_t i, k;
     int chosen;
     char choices[256];
@@ -672,21 +803,21 @@ static int check_combination(const parse_state *st)
     }
     choices_text(s, " or ", choices, sizeof(choices));
     if (chosen < 0 && choices[0] != '\0') {
-        return fail_cmd(st, "give %s", choices);
+        return cli_fail_in(st->where, "give %s", choices);
     }
-    for (i = 0; i < s->nopts; i++) {
-        const opt_spec *o = &s->opts[i];
-        int needed = chosen >= 0 && (s->opts[chosen].needs & NEED(i)) != 0u;
+    for (i = 0; i < s->extra->nopts; i++) {
+        const opt_spec *o = &opts[i];
+        int needed = chosen >= 0 && (opts[chosen].needs & NEED(i)) != 0u;
         if ((o->flags & OPT_REQUIRED) != 0u && st->given[i] == NULL) {
-            return fail_cmd(st, "missing %s %s: %s", o->name, o->meta, o->help);
+            return cli_fail_in(st->where, "missing %s %s: %s", o->name, o->meta, o->help);
         }
         if (needed && st->given[i] == NULL) {
-            return fail_cmd(st, "%s needs %s %s", s->opts[chosen].name, o->name, o->meta);
+            return cli_fail_in(st->where, "%s needs %s %s", opts[chosen].name, o->name, o->meta);
         }
         if (!needed && (o->flags & (OPT_REQUIRED | OPT_CHOICE)) == 0u && st->given[i] != NULL) {
-            for (k = 0; k < s->nopts; k++) {
-                if ((s->opts[k].needs & NEED(i)) != 0u) {
-                    return fail_cmd(st, "%s goes only with %s", o->name, s->opts[k].name);
+            for (k = 0; k < s->extra->nopts; k++) {
+                if ((opts[k].needs & NEED(i)) != 0u) {
+                    return cli_fail_in(st->where, "%s goes only with %s", o->name, opts[k].name);
                 }
             }
         }
@@ -714,74 +845,163 @@ static int check_with_codec(const parse_state *st, uint8_t version)
     if (err == XF_OK) {
         return XFGCU_EXIT_OK;
     }
-    for (i = 0; bad != NULL && i < st->spec->nopts; i++) {
-        const opt_spec *o = &st->spec->opts[i];
+    for (i = 0; bad != NULL && i < st->spec->extra->nopts; i++) {
+        const opt_spec *o = &st->spec->extra->opts[i];
         if (st->given[i] != NULL && o->kind != K_SWITCH && option_covers(o, bad)) {
             if ((o->flags & OPT_BY_VERSION) != 0u) {
-                return fail_cmd(st, "%s %s is out of range for protocol %u: %s", o->name, st->given[i],
-                                (unsigned)version, o->help);
+                return cli_fail_in(st->where, "%s %s is out of range for protocol %u: %s", o->name, st->given[i],
+                                   (unsigned)version, o->help);
             }
             return out_of_range(st, o, st->given[i]);
         }
     }
-    return fail_cmd(st, "%s%s%s", xf_strerror(err), bad != NULL ? ": " : "", bad != NULL ? bad : "");
+    return cli_fail_in(st->where, "%s%s%s", xf_strerror(err), bad != NULL ? ": " : "", bad != NULL ? bad : "");
 }
 
-int cmdargs_parse(const cmd_spec *spec, const char *context, int argc, char **argv, uint8_t version, xf_command *cmd)
+/* The command's options for getopt_long(), with --cameras where the order takes a mask, and
+ * --protocol and --help when @p line (encode and send take them after COMMAND too). */
+static void command_options(const cmd_spec *spec, int line, struct option *opts)
 {
+    static const struct option extra[] = {{"cameras", required_argument, NULL, ID_CAMERAS},
+                                          {"protocol", required_argument, NULL, ID_PROTOCOL},
+                                          {"help", no_argument, NULL, ID_HELP},
+                                          {NULL, 0, NULL, 0}};
+    size_t i, n = 0;
+    for (i = 0; i < spec->extra->nopts; i++) {
+        const opt_spec *o = &spec->extra->opts[i];
+        opts[n].name = o->name + 2; /* after "--" */
+        opts[n].has_arg = (o->kind == K_SWITCH) ? no_argument : required_argument;
+        opts[n].flag = NULL;
+        opts[n++].val = ID_OPT + (int)i;
+    }
+    if (takes_cameras(spec)) {
+        opts[n++] = extra[0];
+    }
+    for (i = 1; line && i < 3u; i++) {
+        opts[n++] = extra[i];
+    }
+    opts[n] = extra[3];
+}
+
+/* The first pass over the arguments of encode and send: --protocol (the last one wins) and
+ * --help, wherever they are; nothing else is checked when --help is there. */
+static int take_line_options(const parse_state *st, int argc, char **argv, const struct option *opts, uint8_t *version,
+                             int *help)
+{
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, opts, st->where);
+    a.quiet = 1;
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        if (id == ID_PROTOCOL) {
+            rc = cli_value_protocol(&a, version);
+        } else if (id == ID_HELP) {
+            *help = 1;
+        }
+    }
+    return rc;
+}
+
+int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help,
+                  xf_command *cmd)
+{
+    struct option opts[MAX_OPTS + 4];
     parse_state st;
-    int i, rc;
-    const xf_order_info *info = xf_order_lookup(spec->order);
+    cli_args a;
+    char hint[64];
+    int id, rc = XFGCU_EXIT_OK;
     memset(&st, 0, sizeof(st));
     st.spec = spec;
-    st.context = context;
-    xf_command_init(&st.cmd, spec->order); /* the spec's default camera mask */
-    for (i = 1; i < argc; i++) {
-        rc = take_arg(&st, argc, argv, &i);
-        if (rc != XFGCU_EXIT_OK) {
+    snprintf(st.where, sizeof(st.where), "%s %s", who, spec->name);
+    snprintf(hint, sizeof(hint), "send %s", spec->name);
+    command_options(spec, help != NULL, opts);
+    if (help != NULL) {
+        rc = take_line_options(&st, argc, argv, opts, version, help);
+        if (rc != XFGCU_EXIT_OK || *help) {
             return rc;
         }
     }
-    rc = check_combination(&st);
+    xf_command_init(&st.cmd, spec->info->order); /* the spec's default camera mask */
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, opts, st.where);
+    a.hint = (help != NULL) ? NULL : hint; /* record has no --help after COMMAND: send's tells */
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        rc = (id == CLI_BAD) ? XFGCU_EXIT_USAGE : (id == CLI_ARG) ? cli_unexpected(&a) : take_option(&st, &a, id);
+    }
     if (rc == XFGCU_EXIT_OK) {
-        rc = check_with_codec(&st, version);
+        rc = check_combination(&st);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = check_with_codec(&st, *version);
     }
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }
-    if (info != NULL && info->since > version) {
+    if (spec->info->since > *version) {
         /* Warn, never refuse: a V0.1 GCU may or may not know the order. */
         cli_note("%s is an order of protocol %u (V0.2); this packet says version %u (add --protocol 2)", spec->name,
-                 (unsigned)info->since, (unsigned)version);
+                 (unsigned)spec->info->since, (unsigned)*version);
     }
     *cmd = st.cmd;
     return XFGCU_EXIT_OK;
 }
 
-int cmd_line_take(cmd_line *c, int argc, char **argv, int *i, int *rc)
+/* ---- encode and send: [--protocol N] [--help] [--json OBJECT] COMMAND [ARGS] ---- */
+
+static int take_json(const cli_args *a, const char **json)
 {
-    const char *v = NULL;
-    *rc = XFGCU_EXIT_OK;
-    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
-        *rc = cli_parse_protocol(v, &c->version);
-    } else if (strcmp(argv[*i], "--help") == 0) {
-        c->help = 1;
-    } else if (c->spec != NULL) {
-        c->cargv[c->cargc++] = argv[*i];
-    } else {
-        return 0;
+    if (a->value == NULL) {
+        return cli_fail_in(a->context, "--json needs an OBJECT (or - for JSON Lines on stdin)");
     }
-    return 1;
+    if (*json != NULL) {
+        return cli_fail_in(a->context, "--json given twice");
+    }
+    *json = a->value;
+    return XFGCU_EXIT_OK;
 }
 
-int cmd_line_command(cmd_line *c, const char *who, char *arg)
+/* COMMAND [ARGS] of a line (argv[0] is COMMAND). */
+static int command_of_line(cmd_line *l, const char *who, int argc, char **argv)
 {
-    if (arg[0] == '-') {
-        return cli_fail("%s: unknown option '%s' (see 'xfgcu %s --help')", who, arg, who);
+    if (l->json != NULL) {
+        return cli_fail("%s: --json takes one OBJECT; unexpected '%s'", who, argv[0]);
     }
-    if ((c->spec = cmdargs_find(arg)) == NULL) {
-        return cli_fail("%s: unknown command '%s' (see 'xfgcu %s --help')", who, arg, who);
+    if ((l->spec = cmdargs_find(argv[0])) == NULL) {
+        return cli_fail("%s: unknown command '%s' (see 'xfgcu %s --help')", who, argv[0], who);
     }
-    c->cargv[c->cargc++] = arg;
-    return XFGCU_EXIT_OK;
+    return cmdargs_parse(l->spec, who, argc, argv, &l->version, &l->help, &l->cmd);
+}
+
+int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json, void (*help)(FILE *out), int argc,
+                   char **argv)
+{
+    static const struct option opts[] = {{"protocol", required_argument, NULL, ID_PROTOCOL},
+                                         {"help", no_argument, NULL, ID_HELP},
+                                         {"json", required_argument, NULL, ID_JSON},
+                                         {NULL, 0, NULL, 0}};
+    struct option without_json[3] = {opts[0], opts[1], opts[3]};
+    cli_args a;
+    int id, rest, rc = XFGCU_EXIT_OK;
+    memset(l, 0, sizeof(*l));
+    l->version = version;
+    cli_args_init(&a, argc, argv, CLI_STOP, with_json ? opts : without_json, who);
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        switch (id) {
+        case CLI_BAD: rc = XFGCU_EXIT_USAGE; break;
+        case ID_PROTOCOL: rc = cli_value_protocol(&a, &l->version); break;
+        case ID_HELP: l->help = 1; break;
+        default: rc = take_json(&a, &l->json); break;
+        }
+    }
+    rest = cli_rest(&a);
+    if (rc == XFGCU_EXIT_OK && rest < argc) {
+        rc = command_of_line(l, who, argc - rest, argv + rest);
+    }
+    if (rc == XFGCU_EXIT_OK && l->help) {
+        if (l->spec != NULL) {
+            cmdargs_help(l->spec, who, stdout);
+        } else {
+            help(stdout);
+        }
+    }
+    return rc;
 }

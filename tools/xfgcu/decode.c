@@ -388,30 +388,37 @@ static int decode_stdin(int json)
 
 /* ---- the command ------------------------------------------------------------- */
 
+enum { O_JSON = 256, O_HELP };
+
+static const struct option decode_options[] = {
+    {"json", no_argument, NULL, O_JSON},
+    {"help", no_argument, NULL, O_HELP},
+    {NULL, 0, NULL, 0},
+};
+
 int cmd_decode(const cli_link *link, int argc, char **argv)
 {
-    int i, json = 0, nhex = 0, rc;
+    int id, json = 0, help = 0, nhex = 0, rc = XFGCU_EXIT_OK;
     char **hex = calloc((size_t)argc, sizeof(*hex));
+    cli_args a;
     (void)link; /* offline */
     if (hex == NULL) {
         return cli_fail("decode: out of memory");
     }
-    for (i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0) {
-            free(hex);
-            help_decode(stdout);
-            return XFGCU_EXIT_OK;
-        }
-        if (strcmp(argv[i], "--json") == 0) {
-            json = 1;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            free(hex);
-            return cli_fail("decode: unknown option '%s' (see 'xfgcu decode --help')", argv[i]);
-        } else {
-            hex[nhex++] = argv[i];
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, decode_options, "decode");
+    while (rc == XFGCU_EXIT_OK && !help && (id = cli_next(&a)) != CLI_END) {
+        switch (id) {
+        case O_JSON: json = 1; break;
+        case O_HELP: help = 1; break;
+        case CLI_ARG: hex[nhex++] = a.argv[a.index]; break;
+        default: rc = XFGCU_EXIT_USAGE; break; /* CLI_BAD: said */
         }
     }
-    rc = (nhex > 0) ? decode_arguments(nhex, hex, json) : decode_stdin(json);
+    if (rc == XFGCU_EXIT_OK && help) {
+        help_decode(stdout);
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = (nhex > 0) ? decode_arguments(nhex, hex, json) : decode_stdin(json);
+    }
     free(hex);
     return rc;
 }

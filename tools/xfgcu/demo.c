@@ -223,27 +223,11 @@ void demo_step(demo *d, const char *fmt, ...)
     demo_mark(d);
 }
 
-void demo_sent(const char *fmt, ...)
+void demo_line(const char *prefix, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    line("     > ", fmt, ap);
-    va_end(ap);
-}
-
-void demo_got(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    line("     < ", fmt, ap);
-    va_end(ap);
-}
-
-void demo_say(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    line("       ", fmt, ap);
+    line(prefix, fmt, ap);
     va_end(ap);
 }
 

@@ -10,7 +10,9 @@
 
 #include "cli.h"
 #include "xfgcu/xf_client.h"
-#include "xfgcu/xf_posix.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_poll.h"
+#include "xfgcu/posix/xf_simlink.h"
 #include "xfgcu/xf_sim.h"
 
 #define DEMO_LOG_MAX 24 /* runs of orders sent, for showing a step's packets */
@@ -67,12 +69,14 @@ void demo_mark(demo *d);
 /* ---- printing and checking -------------------------------------------------------- */
 
 void demo_step(demo *d, const char *fmt, ...) CLI_PRINTF(2, 3);
+/** One line: @p prefix, then the message. */
+void demo_line(const char *prefix, const char *fmt, ...) CLI_PRINTF(2, 3);
 /** "     > ..." what the library sends */
-void demo_sent(const char *fmt, ...) CLI_PRINTF(1, 2);
+#define demo_sent(...) demo_line("     > ", __VA_ARGS__)
 /** "     < ..." what the gimbal reports */
-void demo_got(const char *fmt, ...) CLI_PRINTF(1, 2);
+#define demo_got(...) demo_line("     < ", __VA_ARGS__)
 /** "       ..." an explanation */
-void demo_say(const char *fmt, ...) CLI_PRINTF(1, 2);
+#define demo_say(...) demo_line("       ", __VA_ARGS__)
 /** When @p ok is 0: print "     !! ..." and keep the first such reason. @return ok. */
 int demo_check(demo *d, int ok, const char *fmt, ...) CLI_PRINTF(3, 4);
 

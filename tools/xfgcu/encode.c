@@ -83,98 +83,40 @@ static int encode_lines(uint8_t version)
     return rc;
 }
 
-/* ---- arguments ------------------------------------------------------------------ */
+/* ---- COMMAND ------------------------------------------------------------------ */
 
-typedef struct encode_args {
-    cmd_line line;    /* [--protocol N] [--help] COMMAND ARGS */
-    const char *json; /* --json OBJECT */
-} encode_args;
-
-/* Before COMMAND: --protocol, --json, --help. After it, everything but --protocol and --help is the command's. */
-static int take_arg(encode_args *a, int argc, char **argv, int *i)
+static int encode_named(const cmd_line *l)
 {
-    const char *v = NULL;
-    int rc;
-    if (cmd_line_take(&a->line, argc, argv, i, &rc)) {
-        return rc;
-    }
-    if (cli_take_option(argc, argv, i, "--json", &v)) {
-        if (v == NULL) {
-            return cli_fail("encode: --json needs an OBJECT (or - for JSON Lines on stdin)");
-        }
-        if (a->json != NULL) {
-            return cli_fail("encode: --json given twice");
-        }
-        a->json = v;
-        return XFGCU_EXIT_OK;
-    }
-    if (argv[*i][0] != '-' && a->json != NULL) {
-        return cli_fail("encode: --json takes one OBJECT; unexpected '%s'", argv[*i]);
-    }
-    return cmd_line_command(&a->line, "encode", argv[*i]);
-}
-
-static int encode_named(const encode_args *a)
-{
-    xf_command cmd;
     xf_host_packet pkt;
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = 0;
     const char *bad = NULL;
     xf_err err;
-    int rc = cmdargs_parse(a->line.spec, "encode", a->line.cargc, a->line.cargv, a->line.version, &cmd);
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
-    }
-    xf_host_packet_init(&pkt, a->line.version); /* no carrier data; sub_request = 0x01 */
-    err = xf_host_set_command(&pkt, &cmd, &bad);
+    xf_host_packet_init(&pkt, l->version); /* no carrier data; sub_request = 0x01 */
+    err = xf_host_set_command(&pkt, &l->cmd, &bad);
     if (err == XF_OK) {
         err = xf_host_pack(&pkt, buf, sizeof(buf), &len);
     }
     if (err != XF_OK) {
-        return cli_fail("encode %s: %s%s%s", cmdargs_name(a->line.spec), xf_strerror(err), bad != NULL ? ": " : "",
+        return cli_fail("encode %s: %s%s%s", cmdargs_name(l->spec), xf_strerror(err), bad != NULL ? ": " : "",
                         bad != NULL ? bad : "");
     }
     print_hex(buf, len);
     return XFGCU_EXIT_OK;
 }
 
-static int run(encode_args *a)
-{
-    if (a->line.help) {
-        if (a->line.spec != NULL) {
-            cmdargs_help(a->line.spec, "encode", stdout);
-        } else {
-            help_encode(stdout);
-        }
-        return XFGCU_EXIT_OK;
-    }
-    if (a->json != NULL) {
-        return (strcmp(a->json, "-") == 0) ? encode_lines(a->line.version)
-                                           : encode_object(a->json, a->line.version, "encode --json");
-    }
-    if (a->line.spec == NULL) {
-        return cli_fail("encode: give --json OBJECT or a COMMAND (see 'xfgcu encode --help')");
-    }
-    return encode_named(a);
-}
-
 int cmd_encode(const cli_link *link, int argc, char **argv)
 {
-    encode_args a;
-    int i, rc = XFGCU_EXIT_OK;
-    memset(&a, 0, sizeof(a));
-    a.line.version = link->protocol;
-    a.line.cargv = calloc((size_t)argc + 1u, sizeof(*a.line.cargv));
-    if (a.line.cargv == NULL) {
-        return cli_fail("encode: out of memory");
+    cmd_line l;
+    int rc = cmd_line_parse(&l, "encode", link->protocol, 1, help_encode, argc, argv);
+    if (rc != XFGCU_EXIT_OK || l.help) {
+        return rc;
     }
-    for (i = 1; i < argc && rc == XFGCU_EXIT_OK; i++) {
-        rc = take_arg(&a, argc, argv, &i);
+    if (l.json != NULL) {
+        return (strcmp(l.json, "-") == 0) ? encode_lines(l.version) : encode_object(l.json, l.version, "encode --json");
     }
-    if (rc == XFGCU_EXIT_OK) {
-        rc = run(&a);
+    if (l.spec == NULL) {
+        return cli_fail("encode: give --json OBJECT or a COMMAND (see 'xfgcu encode --help')");
     }
-    free(a.line.cargv);
-    return rc;
+    return encode_named(&l);
 }

@@ -1,11 +1,15 @@
 /*
  * fields.h - the named fields of the four frames, as data.
  *
- * One row per canonical field name (docs/protocol.md sections 3-6 and 10):
- * where the member lives in xf_host_packet / xf_gcu_packet, its wire type,
- * and how a person reads it. JSON output, JSON input and the readable table
- * all walk these rows, so a field cannot be printed under one name and
- * parsed under another.
+ * One row per canonical field name (docs/protocol.md sections 3-6 and 10)
+ * and per reserved block, in wire order. Where a row is and what it is
+ * called are the codec's: its offset is XF_OFF_HOST_<NAME> / XF_OFF_GCU_<NAME>
+ * (xf_protocol.h), its name that NAME in lower case, its size the distance
+ * to the next row. What the command line adds: whether the wire integer is
+ * signed, how a person reads it, and the version that brought it. JSON
+ * output, JSON input and the readable table all walk these rows over the
+ * packet's bytes, so a field cannot be printed under one name and parsed
+ * under another.
  */
 #ifndef XFGCU_FIELDS_H
 #define XFGCU_FIELDS_H
@@ -14,8 +18,6 @@
 #include <stdint.h>
 
 #include "xfgcu/xfgcu.h"
-
-typedef enum field_type { FT_U8, FT_S8, FT_U16, FT_S16, FT_U32, FT_S32 } field_type;
 
 /** How the readable table shows a raw value. */
 typedef enum field_unit {
@@ -39,48 +41,40 @@ typedef enum field_unit {
     FU_POD_STATUS,
     FU_ERROR_CODE,
     FU_THERMAL,
-    FU_CAMERA
+    FU_CAMERA,
+    FU_RESERVED /**< a reserved block, not a field: hex under "reserved_main" / "reserved_sub" */
 } field_unit;
 
 typedef struct field_desc {
-    const char *name; /**< canonical name: the JSON key */
-    size_t offset;    /**< of the member in xf_host_packet or xf_gcu_packet */
-    uint8_t type;     /**< field_type */
-    uint8_t unit;     /**< field_unit */
-    uint8_t frame;    /**< 0 main frame, 1 sub frame */
-    uint8_t since;    /**< first protocol version that defines the bytes (GCU 63-66: 2) */
+    char name[24];     /**< canonical name: the JSON key */
+    uint8_t offset;    /**< of its first byte in the packet */
+    uint8_t size;      /**< bytes: 1, 2 or 4 (a reserved block: its length) */
+    uint8_t is_signed; /**< the wire integer is signed */
+    uint8_t unit;      /**< field_unit */
+    uint8_t since;     /**< first protocol version that defines the bytes (GCU 63-66: 2) */
 } field_desc;
 
-/** The rows of direction @p dir, in wire order. */
+/** The rows of direction @p dir, in wire order: fields and reserved blocks. */
 const field_desc *fields_of(xf_direction dir, size_t *count);
-/** The row named @p name, or NULL. */
+/** The row named @p name (a field or a reserved block), or NULL. */
 const field_desc *field_find(xf_direction dir, const char *name);
 /** Does a packet of @p version carry @p f? (Version 0 counts as 1.) */
 int field_present(const field_desc *f, uint8_t version);
 
-/** Raw value of @p f in @p pkt (an xf_host_packet or xf_gcu_packet). */
-long long field_get(const void *pkt, const field_desc *f);
-/** Store @p v, which must be within field_range(). */
-void field_set(void *pkt, const field_desc *f, long long v);
+/** Raw value of field @p f in the packet's bytes @p pkt. */
+long long field_get(const uint8_t *pkt, const field_desc *f);
+/** Store @p v, which must be within field_range(), into the packet's bytes. */
+void field_set(uint8_t *pkt, const field_desc *f, long long v);
 /** The wire type's range. */
 void field_range(const field_desc *f, long long *lo, long long *hi);
 
-/* ---- reserved bytes -------------------------------------------------------
- * Reserved bytes are not fields, but decode -> encode must give back every
- * byte, so they travel as hex under "reserved_main" / "reserved_sub". The
- * sub frame's reserved block depends on the version: a GCU packet of V0.1
- * has bytes 63-68 reserved, V0.2 only 67-68. */
-#define RESERVED_MAIN 0
-#define RESERVED_SUB  1
-#define RESERVED_MAX  8
+/* Reserved bytes are not fields, but decode -> encode must give back every
+ * byte, so they travel as hex. A block also holds the bytes of the fields
+ * just before it that the packet's version does not have: a GCU packet of
+ * V0.1 has bytes 63-68 reserved, V0.2 only 67-68. */
+#define RESERVED_MAX 8
 
-/** Name of a reserved block: "reserved_main" or "reserved_sub". */
-const char *reserved_name(int block);
-/** Number of reserved bytes in @p block for @p dir and @p version. */
-size_t reserved_size(xf_direction dir, uint8_t version, int block);
-/** Copy the reserved bytes out of @p pkt (at most RESERVED_MAX); returns the count. */
-size_t reserved_get(const void *pkt, xf_direction dir, uint8_t version, int block, uint8_t *out);
-/** Store reserved_size() bytes into @p pkt. */
-void reserved_set(void *pkt, xf_direction dir, uint8_t version, int block, const uint8_t *in);
+/** Where reserved block @p f of direction @p dir is in a packet of @p version: its offset; *len its size. */
+size_t reserved_span(xf_direction dir, const field_desc *f, uint8_t version, size_t *len);
 
 #endif /* XFGCU_FIELDS_H */

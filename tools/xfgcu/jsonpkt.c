@@ -9,7 +9,6 @@
  */
 #include "jsonpkt.h"
 
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -103,33 +102,32 @@ static void put_feedback(builder *b, uint8_t order, const uint8_t *fb, size_t n)
     put(b, "feedback", o.obj);
 }
 
-static void put_reserved(builder *b, const void *pkt, xf_direction dir, uint8_t version, int block)
+/* A reserved block, as hex, when one of its bytes is not 0. */
+static void put_reserved(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version, const field_desc *f)
 {
-    uint8_t bytes[RESERVED_MAX];
-    size_t i, n = reserved_get(pkt, dir, version, block, bytes);
+    size_t i, n, at = reserved_span(dir, f, version, &n);
     for (i = 0; i < n; i++) {
-        if (bytes[i] != 0u) {
-            put_hex(b, reserved_name(block), bytes, n);
+        if (buf[at + i] != 0u) {
+            put_hex(b, f->name, buf + at, n);
             return;
         }
     }
 }
 
-static void put_fields(builder *b, const void *pkt, xf_direction dir, uint8_t version)
+static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version)
 {
     size_t i, n;
-    int main_done = 0;
     const field_desc *rows = fields_of(dir, &n);
     for (i = 0; i < n; i++) {
         const field_desc *f = &rows[i];
-        long long v = field_get(pkt, f);
+        long long v = field_get(buf, f);
         const char *name = NULL;
-        if (!field_present(f, version)) {
+        if (f->unit == FU_RESERVED) {
+            put_reserved(b, buf, dir, version, f);
             continue;
         }
-        if (f->frame == 1u && !main_done) {
-            put_reserved(b, pkt, dir, version, RESERVED_MAIN);
-            main_done = 1;
+        if (!field_present(f, version)) {
+            continue;
         }
         put(b, f->name, json_integer(v));
         if (f->unit == FU_MODE && (name = xf_mode_name((uint8_t)v)) != NULL) {
@@ -138,26 +136,20 @@ static void put_fields(builder *b, const void *pkt, xf_direction dir, uint8_t ve
             put(b, "gimbal_model", json_string(name));
         }
     }
-    put_reserved(b, pkt, dir, version, RESERVED_SUB);
 }
 
 json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir)
 {
-    xf_host_packet host;
-    xf_gcu_packet gcu;
-    const void *pkt = (dir == XF_DIR_HOST) ? (const void *)&host : (const void *)&gcu;
-    uint8_t version, order, plen;
-    const uint8_t *params;
+    uint8_t version, order;
+    const uint8_t *params = buf + XF_OFF_PARAMS;
+    size_t plen = len - XF_PACKET_MIN_LEN;
     const char *name;
     builder b;
-    xf_err err = (dir == XF_DIR_HOST) ? xf_host_unpack(buf, len, &host) : xf_gcu_unpack(buf, len, &gcu);
-    if (err != XF_OK) {
+    if (xf_packet_check(buf, len, dir) != XF_OK) {
         return NULL;
     }
-    version = (dir == XF_DIR_HOST) ? host.version : gcu.version;
-    order = (dir == XF_DIR_HOST) ? host.order : gcu.order;
-    params = (dir == XF_DIR_HOST) ? host.params : gcu.params;
-    plen = (dir == XF_DIR_HOST) ? host.params_len : gcu.params_len;
+    version = buf[XF_OFF_VERSION];
+    order = buf[XF_OFF_ORDER];
     b.obj = json_object();
     b.failed = 0;
     if (b.obj == NULL) {
@@ -176,7 +168,7 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir)
     } else {
         put_feedback(&b, order, params, plen);
     }
-    put_fields(&b, pkt, dir, version);
+    put_fields(&b, buf, dir, version);
     if (b.failed) {
         json_decref(b.obj);
         return NULL;
@@ -210,19 +202,6 @@ typedef struct reader {
     int has_params;
 } reader;
 
-static int fail_at(const reader *r, const char *fmt, ...) CLI_PRINTF(2, 3);
-
-/* "xfgcu: --json: <message>" */
-static int fail_at(const reader *r, const char *fmt, ...)
-{
-    char msg[512];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof(msg), fmt, ap);
-    va_end(ap);
-    return cli_fail("%s: %s", r->where, msg);
-}
-
 static const char *const common_keys[] = {"direction", "version", "length", "order", "order_name", "params", NULL};
 static const char *const host_extra_keys[] = {"command", "command_error", NULL};
 static const char *const gcu_extra_keys[] = {"feedback", "mode_name", "gimbal_model", NULL};
@@ -247,13 +226,13 @@ static int check_keys(const reader *r)
         const field_desc *f = field_find(r->dir, key);
         (void)value;
         if (f != NULL && !field_present(f, r->version)) {
-            return fail_at(r, "key '%s' needs version >= %u (in version %u these bytes are reserved: use reserved_sub)",
-                           key, (unsigned)f->since, (unsigned)r->version);
+            return cli_fail_in(
+                r->where, "key '%s' needs version >= %u (in version %u these bytes are reserved: use reserved_sub)",
+                key, (unsigned)f->since, (unsigned)r->version);
         }
         if (f == NULL && !in_list(common_keys, key) &&
-            !in_list(r->dir == XF_DIR_HOST ? host_extra_keys : gcu_extra_keys, key) &&
-            strcmp(key, reserved_name(RESERVED_MAIN)) != 0 && strcmp(key, reserved_name(RESERVED_SUB)) != 0) {
-            return fail_at(r, "unknown key '%s' for a %s packet", key, side);
+            !in_list(r->dir == XF_DIR_HOST ? host_extra_keys : gcu_extra_keys, key)) {
+            return cli_fail_in(r->where, "unknown key '%s' for a %s packet", key, side);
         }
     }
     return XFGCU_EXIT_OK;
@@ -269,11 +248,11 @@ static int get_int(const reader *r, const json_t *obj, const char *prefix, const
         return XFGCU_EXIT_OK;
     }
     if (!json_is_integer(v)) {
-        return fail_at(r, "%s%s must be an integer in %lld..%lld", prefix, key, lo, hi);
+        return cli_fail_in(r->where, "%s%s must be an integer in %lld..%lld", prefix, key, lo, hi);
     }
     *out = (long long)json_integer_value(v);
     if (*out < lo || *out > hi) {
-        return fail_at(r, "%s%s %lld is out of range %lld..%lld", prefix, key, *out, lo, hi);
+        return cli_fail_in(r->where, "%s%s %lld is out of range %lld..%lld", prefix, key, *out, lo, hi);
     }
     return XFGCU_EXIT_OK;
 }
@@ -290,14 +269,14 @@ static int get_hex(const reader *r, const char *key, uint8_t *out, size_t cap, s
         return XFGCU_EXIT_OK;
     }
     if (!json_is_string(v)) {
-        return fail_at(r, "%s must be a string of hex bytes", key);
+        return cli_fail_in(r->where, "%s must be a string of hex bytes", key);
     }
     if (hex_parse_string(json_string_value(v), out, cap, n, &fault) != 0) {
         hex_fault_text(&fault, why, sizeof(why));
-        return fail_at(r, "%s, position %zu: %s", key, fault.offset + 1u, why);
+        return cli_fail_in(r->where, "%s, position %zu: %s", key, fault.offset + 1u, why);
     }
     if (*n > cap) {
-        return fail_at(r, "%s holds %zu bytes, at most %zu fit in a packet", key, *n, cap);
+        return cli_fail_in(r->where, "%s holds %zu bytes, at most %zu fit in a packet", key, *n, cap);
     }
     return XFGCU_EXIT_OK;
 }
@@ -313,7 +292,7 @@ static int read_direction(reader *r)
     } else if (s != NULL && strcmp(s, "gcu") == 0) {
         r->dir = XF_DIR_GCU;
     } else {
-        return fail_at(r, "direction must be \"host\" or \"gcu\"");
+        return cli_fail_in(r->where, "direction must be \"host\" or \"gcu\"");
     }
     return XFGCU_EXIT_OK;
 }
@@ -336,39 +315,18 @@ static int read_order(reader *r)
     if (json_is_string(v) && xf_order_from_name(json_string_value(v), &r->order) == XF_OK) {
         return XFGCU_EXIT_OK;
     }
-    return fail_at(r, "order must be an integer 0..255 or the name of an order, like \"zoom_to\"");
+    return cli_fail_in(r->where, "order must be an integer 0..255 or the name of an order, like \"zoom_to\"");
 }
 
+/* The range of a member: what xf_command_set() saturates to, its type's. */
 static void member_range(xf_field f, long long *lo, long long *hi)
 {
-    switch (f) {
-    case XF_F_CAMERAS:
-    case XF_F_VALUE:
-        *lo = 0;
-        *hi = UINT8_MAX;
-        break;
-    case XF_F_HOURS:
-        *lo = INT8_MIN;
-        *hi = INT8_MAX;
-        break;
-    case XF_F_X0:
-    case XF_F_Y0:
-    case XF_F_X1:
-    case XF_F_Y1:
-        *lo = 0;
-        *hi = UINT16_MAX;
-        break;
-    case XF_F_LONGITUDE:
-    case XF_F_LATITUDE:
-    case XF_F_ALTITUDE:
-        *lo = INT32_MIN;
-        *hi = INT32_MAX;
-        break;
-    default:
-        *lo = INT16_MIN;
-        *hi = INT16_MAX;
-        break;
-    }
+    xf_command c;
+    memset(&c, 0, sizeof(c));
+    xf_command_set(&c, f, INT32_MIN);
+    *lo = xf_command_get(&c, f);
+    xf_command_set(&c, f, INT32_MAX);
+    *hi = xf_command_get(&c, f);
 }
 
 static int command_member(const reader *r, const xf_order_info *info, const char *key, xf_field *f)
@@ -383,8 +341,8 @@ static int command_member(const reader *r, const xf_order_info *info, const char
         strncat(names, i > 0u ? ", " : "", sizeof(names) - strlen(names) - 1u);
         strncat(names, xf_field_name((xf_field)info->fields[i]), sizeof(names) - strlen(names) - 1u);
     }
-    return fail_at(r, "command.%s is not a parameter of %s (%s)", key, xf_order_name(info->order),
-                   info->nfields > 0u ? names : "it takes none");
+    return cli_fail_in(r->where, "command.%s is not a parameter of %s (%s)", key, xf_order_name(info->order),
+                       info->nfields > 0u ? names : "it takes none");
 }
 
 /* Parameters from a "command" object: missing members take xf_command_init's defaults. */
@@ -396,10 +354,10 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
     xf_command cmd;
     xf_err err;
     if (info == NULL) {
-        return fail_at(r, "command needs a known order; 0x%02X is not one (give params instead)", r->order);
+        return cli_fail_in(r->where, "command needs a known order; 0x%02X is not one (give params instead)", r->order);
     }
     if (!json_is_object(c)) {
-        return fail_at(r, "command must be an object of %s's parameters", xf_order_name(info->order));
+        return cli_fail_in(r->where, "command must be an object of %s's parameters", xf_order_name(info->order));
     }
     xf_command_init(&cmd, r->order);
     json_object_foreach((json_t *)c, key, value)
@@ -419,8 +377,8 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
     }
     err = xf_command_encode(&cmd, r->version, out, XF_PARAMS_MAX, n, &bad);
     if (err != XF_OK) {
-        return fail_at(r, "command.%s is out of range for %s (protocol %u)", bad != NULL ? bad : "?",
-                       xf_order_name(info->order), (unsigned)r->version);
+        return cli_fail_in(r->where, "command.%s is out of range for %s (protocol %u)", bad != NULL ? bad : "?",
+                           xf_order_name(info->order), (unsigned)r->version);
     }
     return XFGCU_EXIT_OK;
 }
@@ -444,7 +402,7 @@ static int read_command(reader *r)
         r->params_len = n;
         r->has_params = 1;
     } else if (n != r->params_len || memcmp(bytes, r->params, n) != 0) {
-        return fail_at(r, "command and params disagree; give only one of them");
+        return cli_fail_in(r->where, "command and params disagree; give only one of them");
     }
     return XFGCU_EXIT_OK;
 }
@@ -468,7 +426,7 @@ static int read_feedback(reader *r)
     } else if (strcmp(s, "operating") == 0) {
         result = XF_RESULT_OPERATING;
     } else {
-        return fail_at(r, "feedback.result must be \"ok\", \"failed\" or \"operating\"");
+        return cli_fail_in(r->where, "feedback.result must be \"ok\", \"failed\" or \"operating\"");
     }
     rc = get_int(r, f, "feedback.", "failed_cameras", 0, 255, &cams, &present);
     if (rc == XFGCU_EXIT_OK) {
@@ -490,47 +448,40 @@ static int read_params(reader *r)
         rc = get_int(r, r->obj, "", "length", XF_PACKET_MIN_LEN, XF_PACKET_MAX_LEN, &length, &present);
     }
     if (rc == XFGCU_EXIT_OK && present && (size_t)length != XF_PACKET_MIN_LEN + r->params_len) {
-        return fail_at(r, "length %lld disagrees with %zu params bytes (the packet is %zu bytes)", length,
-                       r->params_len, (size_t)XF_PACKET_MIN_LEN + r->params_len);
+        return cli_fail_in(r->where, "length %lld disagrees with %zu params bytes (the packet is %zu bytes)", length,
+                           r->params_len, (size_t)XF_PACKET_MIN_LEN + r->params_len);
     }
     return rc;
 }
 
-static int read_fields(const reader *r, void *pkt)
+/* The fields and reserved blocks into the packet's bytes @p out. */
+static int read_fields(const reader *r, uint8_t *out)
 {
-    size_t i, n;
+    size_t i, n, len, at;
     const field_desc *rows = fields_of(r->dir, &n);
     for (i = 0; i < n; i++) {
+        const field_desc *f = &rows[i];
+        uint8_t bytes[RESERVED_MAX];
         long long v = 0, lo, hi;
+        size_t got = 0;
         int present, rc;
-        if (!field_present(&rows[i], r->version)) {
+        if (f->unit == FU_RESERVED) {
+            at = reserved_span(r->dir, f, r->version, &len);
+            rc = get_hex(r, f->name, bytes, sizeof(bytes), &got, &present);
+            if (rc == XFGCU_EXIT_OK && present && got != len) {
+                rc = cli_fail_in(r->where, "%s must hold %zu bytes for this packet, not %zu", f->name, len, got);
+            } else if (rc == XFGCU_EXIT_OK && present) {
+                memcpy(out + at, bytes, len);
+            }
+        } else if (field_present(f, r->version)) {
+            field_range(f, &lo, &hi);
+            rc = get_int(r, r->obj, "", f->name, lo, hi, &v, &present);
+            field_set(out, f, v);
+        } else {
             continue;
         }
-        field_range(&rows[i], &lo, &hi);
-        rc = get_int(r, r->obj, "", rows[i].name, lo, hi, &v, &present);
         if (rc != XFGCU_EXIT_OK) {
             return rc;
-        }
-        field_set(pkt, &rows[i], v);
-    }
-    return XFGCU_EXIT_OK;
-}
-
-static int read_reserved(const reader *r, void *pkt)
-{
-    int block;
-    for (block = RESERVED_MAIN; block <= RESERVED_SUB; block++) {
-        uint8_t bytes[RESERVED_MAX];
-        size_t want = reserved_size(r->dir, r->version, block), n = 0;
-        int present, rc = get_hex(r, reserved_name(block), bytes, sizeof(bytes), &n, &present);
-        if (rc != XFGCU_EXIT_OK) {
-            return rc;
-        }
-        if (present && n != want) {
-            return fail_at(r, "%s must hold %zu bytes for this packet, not %zu", reserved_name(block), want, n);
-        }
-        if (present) {
-            reserved_set(pkt, r->dir, r->version, block, bytes);
         }
     }
     return XFGCU_EXIT_OK;
@@ -554,40 +505,54 @@ static int read_header(reader *r, uint8_t default_version)
     return (rc == XFGCU_EXIT_OK) ? read_params(r) : rc;
 }
 
+/* The packet of a host or GCU packet struct: only the codec writes the header, length and CRC. */
+static xf_err pack(xf_direction dir, const xf_host_packet *host, const xf_gcu_packet *gcu, uint8_t *out, size_t cap,
+                   size_t *len)
+{
+    return (dir == XF_DIR_HOST) ? xf_host_pack(host, out, cap, len) : xf_gcu_pack(gcu, out, cap, len);
+}
+
 int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *where, uint8_t *out, size_t cap,
                     size_t *len)
 {
     reader r;
     xf_host_packet host;
     xf_gcu_packet gcu;
-    void *pkt;
+    xf_frame frame;
     int rc;
     xf_err err;
     memset(&r, 0, sizeof(r));
     r.obj = obj;
     r.where = where;
     if (!json_is_object(obj)) {
-        return fail_at(&r, "expected a JSON object");
+        return cli_fail_in(r.where, "expected a JSON object");
     }
     rc = read_header(&r, default_version);
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }
-    memset(&host, 0, sizeof(host)); /* missing fields are 0 */
+    /* The codec packs the header, order, params and CRC around frames of zeros (missing fields
+     * are 0); the fields go into the frames; the codec reads the frames back (xf_frame_* skip the
+     * CRC, stale now) and packs them again. */
+    memset(&host, 0, sizeof(host));
     memset(&gcu, 0, sizeof(gcu));
-    pkt = (r.dir == XF_DIR_HOST) ? (void *)&host : (void *)&gcu;
-    rc = read_fields(&r, pkt);
-    if (rc == XFGCU_EXIT_OK) {
-        rc = read_reserved(&r, pkt);
-    }
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
-    }
     host.version = gcu.version = r.version;
     host.order = gcu.order = r.order;
     host.params_len = gcu.params_len = (uint8_t)r.params_len;
     memcpy(host.params, r.params, r.params_len);
     memcpy(gcu.params, r.params, r.params_len);
-    err = (r.dir == XF_DIR_HOST) ? xf_host_pack(&host, out, cap, len) : xf_gcu_pack(&gcu, out, cap, len);
-    return (err == XF_OK) ? XFGCU_EXIT_OK : fail_at(&r, "cannot build the packet: %s", xf_strerror(err));
+    err = pack(r.dir, &host, &gcu, out, cap, len);
+    if (err == XF_OK) {
+        rc = read_fields(&r, out);
+        if (rc != XFGCU_EXIT_OK) {
+            return rc;
+        }
+        frame.data = out;
+        frame.len = *len;
+        err = (r.dir == XF_DIR_HOST) ? xf_frame_host(&frame, &host) : xf_frame_gcu(&frame, &gcu);
+    }
+    if (err == XF_OK) {
+        err = pack(r.dir, &host, &gcu, out, cap, len);
+    }
+    return (err == XF_OK) ? XFGCU_EXIT_OK : cli_fail_in(r.where, "cannot build the packet: %s", xf_strerror(err));
 }

@@ -15,43 +15,21 @@
 
 #include "cli.h"
 #include "cmdargs.h"
+#include "online.h"
 
-static void vfail(const char *fmt, va_list ap) CLI_PRINTF(1, 0);
-
-static void vfail(const char *fmt, va_list ap)
+int cli_report(int code, const char *where, const char *fmt, ...)
 {
+    va_list ap;
     fflush(stdout); /* what was printed before the failure comes first */
     fputs("xfgcu: ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-}
-
-int cli_fail(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vfail(fmt, ap);
-    va_end(ap);
-    return XFGCU_EXIT_USAGE;
-}
-
-int cli_fail_link(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vfail(fmt, ap);
-    va_end(ap);
-    return XFGCU_EXIT_LINK;
-}
-
-void cli_note(const char *fmt, ...)
-{
-    va_list ap;
-    fputs("xfgcu: note: ", stderr);
+    if (where != NULL) {
+        fprintf(stderr, "%s: ", where);
+    }
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
+    return code;
 }
 
 /* ---- commands ------------------------------------------------------------ */
@@ -131,85 +109,68 @@ void help_link_options(FILE *out)
 
 /* ---- link options -------------------------------------------------------- */
 
-static int parse_long_in(const char *opt, const char *text, long lo, long hi, const char *what, long *out)
-{
-    long long v;
-    if (text == NULL) {
-        return cli_fail("%s needs a value: %s", opt, what);
-    }
-    if (cli_parse_int(text, &v) != 0 || v < lo || v > hi) {
-        return cli_fail("%s %s: must be %s", opt, text, what);
-    }
-    *out = (long)v;
-    return XFGCU_EXIT_OK;
-}
+enum {
+    O_HELP = 'h',
+    O_VERSION = 256,
+    O_SERIAL,
+    O_BAUD,
+    O_UDP,
+    O_TCP,
+    O_GCU_PORT,
+    O_LOCAL_PORT,
+    O_PROTOCOL,
+    O_RATE,
+    O_TIMEOUT
+};
 
-static int parse_baud(const char *text, long *baud)
+static const struct option link_options[] = {
+    {"help", no_argument, NULL, O_HELP},
+    {"version", no_argument, NULL, O_VERSION},
+    {"serial", required_argument, NULL, O_SERIAL},
+    {"baud", required_argument, NULL, O_BAUD},
+    {"udp", required_argument, NULL, O_UDP},
+    {"tcp", required_argument, NULL, O_TCP},
+    {"gcu-port", required_argument, NULL, O_GCU_PORT},
+    {"local-port", required_argument, NULL, O_LOCAL_PORT},
+    {"protocol", required_argument, NULL, O_PROTOCOL},
+    {"rate", required_argument, NULL, O_RATE},
+    {"timeout", required_argument, NULL, O_TIMEOUT},
+    {NULL, 0, NULL, 0},
+};
+
+/* --udp HOST, --tcp HOST[:PORT] */
+static int take_host(const cli_args *a, int port_allowed, const char **host)
 {
-    long v = 0;
-    int rc = parse_long_in("--baud", text, 1, 100000000L, "115200, 250000, 500000 or 1000000", &v);
+    const char *text = a->value, *colon;
+    int rc = cli_value_text(a, port_allowed ? "HOST[:PORT]" : "HOST", host);
     if (rc != XFGCU_EXIT_OK) {
         return rc;
-    }
-    if (v != 115200L && v != 250000L && v != 500000L && v != 1000000L) {
-        return cli_fail("--baud %s: must be 115200, 250000, 500000 or 1000000", text);
-    }
-    *baud = v;
-    return XFGCU_EXIT_OK;
-}
-
-static int parse_host(const char *opt, const char *text, int port_allowed)
-{
-    const char *colon;
-    if (text == NULL || text[0] == '\0') {
-        return cli_fail("%s needs a value: %s", opt, port_allowed ? "HOST[:PORT]" : "HOST");
     }
     colon = strrchr(text, ':');
     /* HOST:PORT, or [IPv6]:PORT; a bare IPv6 address has several colons and no port */
     if (port_allowed && colon != NULL && (strchr(text, ':') == colon || colon[-1] == ']')) {
         long long v;
         if (cli_parse_int(colon + 1, &v) != 0 || v < 1 || v > 65535) {
-            return cli_fail("%s %s: PORT must be 1..65535", opt, text);
+            return cli_fail("--%s %s: PORT must be 1..65535", a->opt->name, text);
         }
     }
     return XFGCU_EXIT_OK;
 }
 
-/* One link option at argv[*i]; returns -1 when argv[*i] is none. */
-static int take_link_option(cli_link *l, int argc, char **argv, int *i)
+/* One link option, as cli_next() returned it. */
+static int take_link_option(cli_link *l, const cli_args *a, int id)
 {
-    const char *v = NULL;
-    if (cli_take_option(argc, argv, i, "--serial", &v)) {
-        l->serial = v;
-        return (v == NULL || v[0] == '\0') ? cli_fail("--serial needs a value: a device path") : XFGCU_EXIT_OK;
+    switch (id) {
+    case O_SERIAL: return cli_value_text(a, "a device path", &l->serial);
+    case O_BAUD: return cli_value_baud(a, &l->baud, NULL);
+    case O_UDP: return take_host(a, 0, &l->udp);
+    case O_TCP: return take_host(a, 1, &l->tcp);
+    case O_GCU_PORT: return cli_value_long(a, 1, 65535, "a port 1..65535", &l->gcu_port, NULL);
+    case O_LOCAL_PORT: return cli_value_long(a, 0, 65535, "a port 0..65535 (0: any free port)", &l->local_port, NULL);
+    case O_PROTOCOL: return cli_value_protocol(a, &l->protocol);
+    case O_RATE: return cli_value_long(a, 1, 200, "packets per second, 1..200", &l->rate_hz, NULL);
+    default: return cli_value_long(a, 1, 3600000L, "milliseconds, 1..3600000", &l->timeout_ms, NULL);
     }
-    if (cli_take_option(argc, argv, i, "--baud", &v)) {
-        return parse_baud(v, &l->baud);
-    }
-    if (cli_take_option(argc, argv, i, "--udp", &v)) {
-        l->udp = v;
-        return parse_host("--udp", v, 0);
-    }
-    if (cli_take_option(argc, argv, i, "--tcp", &v)) {
-        l->tcp = v;
-        return parse_host("--tcp", v, 1);
-    }
-    if (cli_take_option(argc, argv, i, "--gcu-port", &v)) {
-        return parse_long_in("--gcu-port", v, 1, 65535, "a port 1..65535", &l->gcu_port);
-    }
-    if (cli_take_option(argc, argv, i, "--local-port", &v)) {
-        return parse_long_in("--local-port", v, 0, 65535, "a port 0..65535 (0: any free port)", &l->local_port);
-    }
-    if (cli_take_option(argc, argv, i, "--protocol", &v)) {
-        return cli_parse_protocol(v, &l->protocol);
-    }
-    if (cli_take_option(argc, argv, i, "--rate", &v)) {
-        return parse_long_in("--rate", v, 1, 200, "packets per second, 1..200", &l->rate_hz);
-    }
-    if (cli_take_option(argc, argv, i, "--timeout", &v)) {
-        return parse_long_in("--timeout", v, 1, 3600000L, "milliseconds, 1..3600000", &l->timeout_ms);
-    }
-    return -1;
 }
 
 static void link_defaults(cli_link *l)
@@ -258,31 +219,32 @@ static int dispatch(const cli_link *link, int argc, char **argv)
 int main(int argc, char **argv)
 {
     cli_link link;
-    int i, rc;
+    cli_args a;
+    int id, rc = XFGCU_EXIT_OK;
     link_defaults(&link);
-    for (i = 1; i < argc && argv[i][0] == '-'; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+    cli_args_init(&a, argc, argv, CLI_STOP "h", link_options, NULL);
+    while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
+        if (id == CLI_BAD) {
+            return XFGCU_EXIT_USAGE;
+        }
+        if (id == O_HELP) {
             print_help(stdout);
             return XFGCU_EXIT_OK;
         }
-        if (strcmp(argv[i], "--version") == 0) {
+        if (id == O_VERSION) {
             printf("xfgcu %s\n", XF_VERSION_STRING);
             return XFGCU_EXIT_OK;
         }
-        rc = take_link_option(&link, argc, argv, &i);
-        if (rc >= 0 && rc != XFGCU_EXIT_OK) {
-            return rc;
-        }
-        if (rc < 0) {
-            return unknown_command(argv[i]);
-        }
+        rc = take_link_option(&link, &a, id);
     }
-    if (i == argc) {
-        return cli_fail("no command given (try 'xfgcu --help')");
+    if (rc == XFGCU_EXIT_OK && cli_rest(&a) == argc) {
+        rc = cli_fail("no command given (try 'xfgcu --help')");
     }
-    rc = check_one_link(&link);
     if (rc == XFGCU_EXIT_OK) {
-        rc = dispatch(&link, argc - i, argv + i);
+        rc = check_one_link(&link);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = dispatch(&link, argc - cli_rest(&a), argv + cli_rest(&a));
     }
     /* output that did not reach its file is a failure, not a success */
     if (fflush(stdout) != 0 || ferror(stdout)) {

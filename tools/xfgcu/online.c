@@ -6,8 +6,6 @@
 
 #include "online.h"
 
-#include "cmdargs.h"
-
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,65 +37,14 @@ int cli_stop_requested(void) { return stop_flag != 0; }
 
 /* ---- helpers ------------------------------------------------------------------ */
 
-int cli_real_in(const char *context, const char *opt, const char *text, double lo, double hi, const char *what,
-                double *out)
+int cli_value_baud(const cli_args *a, long *baud, int *given)
 {
-    if (text == NULL) {
-        return cli_fail("%s: %s needs a value: %s", context, opt, what);
+    static const char what[] = "115200, 250000, 500000 or 1000000";
+    int rc = cli_value_long(a, 1, 100000000L, what, baud, given);
+    if (rc == XFGCU_EXIT_OK && !xf_serial_baud_ok((uint32_t)*baud)) {
+        rc = cli_fail_in(a->context, "--baud %s: must be %s", a->value, what);
     }
-    if (cli_parse_real(text, out) != 0 || *out < lo || *out > hi) {
-        return cli_fail("%s: %s %s: must be %s", context, opt, text, what);
-    }
-    return XFGCU_EXIT_OK;
-}
-
-int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what, long *out)
-{
-    long long v;
-    if (text == NULL) {
-        return cli_fail("%s: %s needs a value: %s", context, opt, what);
-    }
-    if (cli_parse_int(text, &v) != 0 || v < lo || v > hi) {
-        return cli_fail("%s: %s %s: must be %s", context, opt, text, what);
-    }
-    *out = (long)v;
-    return XFGCU_EXIT_OK;
-}
-
-int cli_opt_real(const char *context, int argc, char **argv, int *i, const char *name, double lo, double hi,
-                 const char *what, double *out, int *given)
-{
-    const char *v = NULL;
-    if (!cli_take_option(argc, argv, i, name, &v)) {
-        return -1;
-    }
-    if (*given) {
-        return cli_fail("%s: %s given twice", context, name);
-    }
-    *given = 1;
-    return cli_real_in(context, name, v, lo, hi, what, out);
-}
-
-int cli_opt_long(const char *context, int argc, char **argv, int *i, const char *name, long lo, long hi,
-                 const char *what, long *out, int *given)
-{
-    const char *v = NULL;
-    if (!cli_take_option(argc, argv, i, name, &v)) {
-        return -1;
-    }
-    if (*given) {
-        return cli_fail("%s: %s given twice", context, name);
-    }
-    *given = 1;
-    return cli_long_in(context, name, v, lo, hi, what, out);
-}
-
-int cli_unexpected(const char *context, const char *arg)
-{
-    if (arg[0] == '-') {
-        return cli_fail("%s: unknown option '%s' (see 'xfgcu %s --help')", context, arg, context);
-    }
-    return cli_fail("%s: unexpected argument '%s' (see 'xfgcu %s --help')", context, arg, context);
+    return rc;
 }
 
 double cli_seconds(uint32_t ms) { return (double)ms / 1000.0; }
@@ -231,6 +178,13 @@ static int open_link(online *o)
     return (o->opt->udp != NULL) ? open_udp(o) : open_tcp(o);
 }
 
+/* The tap's clock: the one the commands step the client with. */
+static uint32_t tap_clock(void *user)
+{
+    (void)user;
+    return xf_posix_now_ms();
+}
+
 static int start_client(online *o, const online_hooks *hooks)
 {
     xf_client_config cc;
@@ -246,7 +200,7 @@ static int start_client(online *o, const online_hooks *hooks)
     }
     o->hal = o->raw;
     if (hooks != NULL && hooks->tap != NULL) {
-        xf_tap_init(&o->tap, &o->raw, hooks->tap, hooks->user, &o->hal);
+        xf_tap_init(&o->tap, &o->raw, hooks->tap, tap_clock, hooks->user, &o->hal);
     }
     err = xf_client_init(&o->client, &o->hal, &cc);
     if (err == XF_WARN_RATE) {
@@ -300,6 +254,32 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
     if (rc == XFGCU_EXIT_OK) {
         rc = wait_first_reply(o);
     }
+    return rc;
+}
+
+int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, online_mode_fn then,
+                       const void *args)
+{
+    online *o = online_new();
+    xf_command cmd;
+    xf_cmd_result r;
+    int rc = (o != NULL) ? XFGCU_EXIT_OK : XFGCU_EXIT_USAGE;
+    cli_signals_init();
+    if (rc == XFGCU_EXIT_OK) {
+        rc = online_open(o, opt, context, NULL);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        xf_client_clear_control(&o->client); /* nothing the mode before would read its own way */
+        xf_command_init(&cmd, order);
+        rc = online_run(o, &cmd, &r, NULL, NULL);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = online_result_exit(o, what, &r);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = then(o, args);
+    }
+    online_free(o);
     return rc;
 }
 

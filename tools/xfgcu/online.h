@@ -16,8 +16,10 @@
 
 #include "cli.h"
 #include "xfgcu/xf_client.h"
-#include "xfgcu/xf_posix.h"
-#include "xfgcu/xf_tap.h"
+#include "xfgcu/posix/xf_posix.h"
+#include "xfgcu/posix/xf_poll.h"
+#include "xfgcu/posix/xf_simlink.h"
+#include "tap.h"
 
 /* ---- signals ----------------------------------------------------------------- */
 
@@ -28,23 +30,8 @@ int cli_stop_requested(void);
 
 /* ---- small shared helpers ------------------------------------------------------ */
 
-/** Parse "--name VALUE" as a real in [lo, hi]; @p what says what it is. Prints errors. @return an exit code. */
-int cli_real_in(const char *context, const char *opt, const char *text, double lo, double hi, const char *what,
-                double *out);
-/** Same for an integer. */
-int cli_long_in(const char *context, const char *opt, const char *text, long lo, long hi, const char *what, long *out);
-/**
- * Is argv[*i] option @p name ("--name V" or "--name=V")? If not, -1. If so,
- * its value parsed as a real in [lo, hi] into *out, *given set (a second
- * time is an error), and an exit code.
- */
-int cli_opt_real(const char *context, int argc, char **argv, int *i, const char *name, double lo, double hi,
-                 const char *what, double *out, int *given);
-/** Same for an integer. */
-int cli_opt_long(const char *context, int argc, char **argv, int *i, const char *name, long lo, long hi,
-                 const char *what, long *out, int *given);
-/** The usual error for an argument nobody takes. */
-int cli_unexpected(const char *context, const char *arg);
+/** --baud: 115200, 250000, 500000 or 1000000 (xf_serial_baud_ok()); see cli_value_long(). */
+int cli_value_baud(const cli_args *a, long *baud, int *given);
 /** Milliseconds to seconds for humans: "1.25 s". */
 double cli_seconds(uint32_t ms);
 /** Wrap degrees into [-180, 180). */
@@ -93,6 +80,18 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
 online *online_new(void);
 /** Close the link and free @p o (may be NULL). */
 void online_free(online *o);
+
+/** What point and rate do once the gimbal is in their mode. @return an exit code. */
+typedef int (*online_mode_fn)(online *o, const void *args);
+
+/**
+ * Open the link (online_open()), switch the gimbal's mode with @p order, run
+ * as send runs it, with no control quantities until the mode reads them,
+ * then @p then(o, @p args); close the link. Catches SIGINT and SIGTERM.
+ * @p what names the order in the messages. @return an exit code.
+ */
+int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, online_mode_fn then,
+                       const void *args);
 
 /** One round of the loop: wait at most @p max_wait_ms for the link or the next packet, then step the client. */
 void online_poll(online *o, int max_wait_ms);

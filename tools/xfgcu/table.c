@@ -76,18 +76,18 @@ static void bits_text(unsigned v, unsigned ignore, const bit_name *names, char *
     }
 }
 
-static void gnss_text(const void *pkt, long long week, char *buf, size_t cap)
+static void gnss_text(const uint8_t *pkt, long long week, char *buf, size_t cap)
 {
-    const xf_host_packet *h = (const xf_host_packet *)pkt;
+    uint32_t gnss_ms = xf_get_u32le(pkt + XF_OFF_HOST_GNSS_MS);
     int64_t unix_ms;
     time_t t;
     struct tm tm;
     char when[32];
-    if (week == 0 && h->sub.gnss_ms == 0u) {
+    if (week == 0 && gnss_ms == 0u) {
         snprintf(buf, cap, "not set");
         return;
     }
-    if (xf_gnss_to_unix_ms((int16_t)week, h->sub.gnss_ms, XF_LEAP_SECONDS_2017, &unix_ms) != XF_OK) {
+    if (xf_gnss_to_unix_ms((int16_t)week, gnss_ms, XF_LEAP_SECONDS_2017, &unix_ms) != XF_OK) {
         snprintf(buf, cap, "not a valid GNSS time");
         return;
     }
@@ -105,7 +105,7 @@ static void named(const char *name, const char *unknown, char *buf, size_t cap)
     snprintf(buf, cap, "%s", name != NULL ? name : unknown);
 }
 
-static void physical(const field_desc *f, long long raw, const void *pkt, uint8_t version, char *buf, size_t cap)
+static void physical(const field_desc *f, long long raw, const uint8_t *pkt, uint8_t version, char *buf, size_t cap)
 {
     double r = (double)raw;
     buf[0] = '\0';
@@ -158,7 +158,7 @@ static void raw_text(const field_desc *f, long long raw, char *buf, size_t cap)
     int hex = f->unit == FU_BYTE_HEX || f->unit == FU_HOST_STATUS || f->unit == FU_POD_STATUS ||
               f->unit == FU_ERROR_CODE || f->unit == FU_THERMAL || f->unit == FU_CAMERA || f->unit == FU_MODE;
     if (hex) {
-        snprintf(buf, cap, (f->type == FT_U16) ? "0x%04llX" : "0x%02llX", raw);
+        snprintf(buf, cap, (f->size == 2u) ? "0x%04llX" : "0x%02llX", raw);
     } else {
         snprintf(buf, cap, "%lld", raw);
     }
@@ -253,16 +253,15 @@ static void print_head(const uint8_t *buf, size_t len, xf_direction dir, const c
     row(out, "params", n > 0u ? hex : "(none)", text);
 }
 
-static void print_reserved(const void *pkt, xf_direction dir, uint8_t version, int block, FILE *out)
+static void print_reserved(const uint8_t *pkt, xf_direction dir, uint8_t version, const field_desc *f, FILE *out)
 {
-    uint8_t bytes[RESERVED_MAX];
     char hex[3 * RESERVED_MAX + 1], count[32];
-    size_t i, n = reserved_get(pkt, dir, version, block, bytes);
+    size_t i, n, at = reserved_span(dir, f, version, &n);
     for (i = 0; i < n; i++) {
-        if (bytes[i] != 0u) {
-            hex_format(bytes, n, ' ', hex);
+        if (pkt[at + i] != 0u) {
+            hex_format(pkt + at, n, ' ', hex);
             snprintf(count, sizeof(count), "%zu bytes", n);
-            row(out, reserved_name(block), count, hex);
+            row(out, f->name, count, hex);
             return;
         }
     }
@@ -270,30 +269,19 @@ static void print_reserved(const void *pkt, xf_direction dir, uint8_t version, i
 
 void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *where, FILE *out)
 {
-    xf_host_packet host;
-    xf_gcu_packet gcu;
-    const void *pkt = (dir == XF_DIR_HOST) ? (const void *)&host : (const void *)&gcu;
     uint8_t version = buf[XF_OFF_VERSION];
     size_t i, n;
     const field_desc *rows = fields_of(dir, &n);
-    int main_done = 0;
-    if ((dir == XF_DIR_HOST ? xf_host_unpack(buf, len, &host) : xf_gcu_unpack(buf, len, &gcu)) != XF_OK) {
-        return; /* callers pass checked packets only */
-    }
     print_head(buf, len, dir, where, out);
     for (i = 0; i < n; i++) {
         char raw[24], value[160];
-        long long v = field_get(pkt, &rows[i]);
-        if (!field_present(&rows[i], version)) {
-            continue;
+        long long v = field_get(buf, &rows[i]);
+        if (rows[i].unit == FU_RESERVED) {
+            print_reserved(buf, dir, version, &rows[i], out);
+        } else if (field_present(&rows[i], version)) {
+            raw_text(&rows[i], v, raw, sizeof(raw));
+            physical(&rows[i], v, buf, version, value, sizeof(value));
+            row(out, rows[i].name, raw, value);
         }
-        if (rows[i].frame == 1u && !main_done) {
-            print_reserved(pkt, dir, version, RESERVED_MAIN, out);
-            main_done = 1;
-        }
-        raw_text(&rows[i], v, raw, sizeof(raw));
-        physical(&rows[i], v, pkt, version, value, sizeof(value));
-        row(out, rows[i].name, raw, value);
     }
-    print_reserved(pkt, dir, version, RESERVED_SUB, out);
 }

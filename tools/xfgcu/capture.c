@@ -1,11 +1,11 @@
-/* xf_capture.c - the text capture format of docs/capture-format.md. */
+/* capture.c - the text capture format of docs/capture-format.md (the program's record and replay). */
 #define _POSIX_C_SOURCE 200809L
 #include <ctype.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "xfgcu/xf_capture.h"
+#include "capture.h"
 #include "xfgcu/xf_hal.h"
 
 #define XF_CAPTURE_MAGIC "# xfgcu capture 1"

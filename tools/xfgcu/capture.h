@@ -1,7 +1,7 @@
 /**
  * @file
  * @brief Captures of a link's traffic, written and read back (POSIX stdio;
- * part of xfgcu::posix).
+ * a helper of the xfgcu program, not part of the library).
  *
  * The format is text, one chunk per line, documented in
  * docs/capture-format.md:
@@ -27,8 +27,8 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
-#include "xf_error.h"
-#include "xf_protocol.h"
+#include "xfgcu/xf_error.h"
+#include "xfgcu/xf_protocol.h"
 
 XF_BEGIN_DECLS
 

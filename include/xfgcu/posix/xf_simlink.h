@@ -1,0 +1,113 @@
+/**
+ * @file
+ * @brief The GCU side of a link, for the simulator: a pseudo-terminal, a
+ * UDP port or a TCP server that a simulated GCU answers on, behind the
+ * xf_hal interface (CMake target xfgcu::posix, above the links).
+ */
+#ifndef XF_SIMLINK_H
+#define XF_SIMLINK_H
+
+#include "xf_posix.h"
+
+XF_BEGIN_DECLS
+
+/* ---- the GCU side: links for the simulator ----------------------------------- */
+
+/** Which kind of link an xf_simlink is. */
+typedef enum xf_simlink_kind { XF_SIMLINK_PTY = 0, XF_SIMLINK_UDP = 1, XF_SIMLINK_TCP = 2 } xf_simlink_kind;
+/** @var XF_SIMLINK_PTY
+ *  a pseudo-terminal; the host opens its slave as a serial port */
+/** @var XF_SIMLINK_UDP
+ *  a UDP socket on the GCU's port */
+/** @var XF_SIMLINK_TCP
+ *  a TCP server serving one client at a time */
+
+/**
+ * A simulated GCU's end of a link: a pseudo-terminal's master (the host
+ * opens the slave path), a UDP socket on the GCU's port answering whoever
+ * sent the last packet, or a TCP server accepting one client at a time (a
+ * second client is refused, like the real GCU).
+ */
+typedef struct xf_simlink {
+    xf_simlink_kind kind;         /**< which kind of link */
+    int fd;                       /**< pty master, UDP socket or TCP listener; -1 when closed */
+    int slave_fd;                 /**< pty: a slave descriptor held open so the master never reads EIO */
+    int client_fd;                /**< TCP: the connected host, -1 if none */
+    char pty_path[64];            /**< pty: the slave's path */
+    char link_path[256];          /**< pty: a stable symlink to the slave ("" if none) */
+    char bind_host[64];           /**< UDP / TCP: the address bound */
+    uint16_t port;                /**< UDP / TCP: the port bound */
+    struct sockaddr_storage peer; /**< UDP: who sent the last packet (replies go there) */
+    socklen_t peer_len;           /**< UDP: 0 until a packet arrived */
+    uint8_t down;                 /**< disconnected by xf_simlink_disconnect */
+    uint32_t up_at;               /**< after xf_simlink_disconnect(): when the link comes back */
+    xf_link_stats stats;          /**< counters */
+    xf_os_error error;            /**< why the last operation failed */
+} xf_simlink;
+
+/**
+ * A new pty; its slave path is in l->pty_path, and @p symlink_path (may be NULL) points to it.
+ * The symlink is replaced atomically if it exists. When it cannot be made,
+ * the error is returned but the pty stays open: call xf_simlink_close()
+ * after any failure. Never waits.
+ * @param l             the link's storage
+ * @param symlink_path  a stable path for the host to open (shorter than 256 bytes), or NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l, or @p symlink_path too long), or
+ *   a code mapped from the OS's errno (l->error says why)
+ */
+xf_err xf_simlink_open_pty(xf_simlink *l, const char *symlink_path);
+/**
+ * Listen for UDP on @p host (NULL: 127.0.0.1) : @p port (0: any free, then l->port).
+ * Replies go to whoever sent the last packet. May block while a host name
+ * resolves (DNS).
+ * @param l     the link's storage
+ * @param host  address to bind, or NULL for 127.0.0.1
+ * @param port  port to bind, 0 for any free one
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l), ::XF_ERR_NOT_FOUND (does not
+ *   resolve), or a code mapped from the OS's errno (::XF_ERR_BUSY: port in
+ *   use; l->error says why)
+ */
+xf_err xf_simlink_open_udp(xf_simlink *l, const char *host, uint16_t port);
+/**
+ * TCP server on @p host (NULL: 127.0.0.1) : @p port (0: any free).
+ * Serves one host at a time and refuses others, like the real GCU. May
+ * block while a host name resolves (DNS).
+ * @param l     the link's storage
+ * @param host  address to bind, or NULL for 127.0.0.1
+ * @param port  port to bind, 0 for any free one (then l->port)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l), ::XF_ERR_NOT_FOUND (does not
+ *   resolve), or a code mapped from the OS's errno (::XF_ERR_BUSY: port in
+ *   use; l->error says why)
+ */
+xf_err xf_simlink_open_tcp(xf_simlink *l, const char *host, uint16_t port);
+/**
+ * Fill @p hal with the GCU's end of this link, for xf_sim_attach(). The link
+ * must stay where it is while @p hal is in use. Read never waits (a TCP
+ * server accepts a waiting host there) and returns ::XF_ERR_CLOSED while no
+ * host is connected or the link is disconnected; write waits at most
+ * 100 ms for a full buffer (pty, TCP). Does nothing for a NULL @p hal.
+ * @param l    the link
+ * @param hal  receives the link's functions
+ */
+void xf_simlink_hal(xf_simlink *l, xf_hal *hal);
+/**
+ * Fault injection: drop the host now and come back after @p ms: the pty
+ * hangs up (its symlink removed meanwhile, then a new pty behind it), the
+ * TCP connection is closed and new ones refused meanwhile, UDP goes silent.
+ * What the host sends meanwhile is lost, as with a GCU that is gone: it is
+ * never answered (or executed) when the link comes back.
+ * Does nothing for a NULL @p l. Never waits.
+ * @param l   the link
+ * @param ms  how long the link stays down
+ */
+void xf_simlink_disconnect(xf_simlink *l, uint32_t ms);
+/**
+ * Close the link and remove its symlink. Safe on a closed link; does
+ * nothing for a NULL @p l.
+ * @param l  the link
+ */
+void xf_simlink_close(xf_simlink *l);
+
+XF_END_DECLS
+
+#endif /* XF_SIMLINK_H */
