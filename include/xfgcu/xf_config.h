@@ -145,7 +145,8 @@
     X(CLIENT_QUEUE, XF_CLIENT_QUEUE)                                                                                   \
     X(CLIENT_RESULTS, XF_CLIENT_RESULTS)
 #define XF__OPTION_DECLARE(name, value) extern const unsigned char XF__OPTION_SYM(name, value);
-#define XF__OPTION_READ(name, value)    +XF__OPTION_SYM(name, value)
+/* a term of the sum in XF_OPTIONS_CHECK, so it cannot be parenthesised */
+#define XF__OPTION_READ(name, value) +XF__OPTION_SYM(name, value) /* NOLINT(bugprone-macro-parentheses) */
 
 /**
  * The option word passed by the init macros: XF_OPTIONS_WORD, plus the
