@@ -22,7 +22,7 @@ static int host_packet_with_zoom(uint8_t *out, size_t cap, size_t *len)
 {
     xf_host_packet pkt;
     xf_command cmd;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     int err;
 
     xf_host_packet_init(&pkt, XF_PROTOCOL_V1);
@@ -38,7 +38,7 @@ static int host_packet_with_zoom(uint8_t *out, size_t cap, size_t *len)
     cmd.zoom = xf_zoom_to_rate_raw(5.5f); /* 5.5x on camera 1 */
     err = xf_host_set_command(&pkt, &cmd, &bad);
     if (err != XF_OK) {
-        printf("zoom_to: %s (%s)\n", xf_strerror(err), bad ? bad : "-");
+        printf("zoom_to: %s (%s)\n", xf_strerror(err), bad != XF_F_NONE ? xf_field_name(bad) : "-");
         return err;
     }
     return xf_host_pack(&pkt, out, cap, len);

@@ -2,59 +2,48 @@
  * linux_serial.c - a gimbal on a UART (TTL, 8N1): calibrate, then feed it
  * the carrier's attitude while printing what it reports.
  *
- *   linux_serial [DEVICE [BAUD]]   e.g. /dev/ttyUSB0 115200
- *   (no DEVICE: a built-in simulator on a pseudo-terminal)
+ *   linux_serial [SPEC]   e.g. serial:/dev/ttyUSB0 or serial:/dev/ttyUSB0,baud=115200
+ *   (no SPEC: a built-in simulator on a pseudo-terminal)
  */
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "xfgcu/xf_client.h"
+#include "xfgcu/posix/xf_link.h"
 #include "xfgcu/posix/xf_posix.h"
 #include "xfgcu/posix/xf_simlink.h"
 #include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/xf_sim.h"
+#include "example_links.h"
 
 static void on_result(void *user, const xf_cmd_result *r)
 {
     (void)user;
-    printf("  %s: %s after %u ms\n", xf_order_name(r->order), xf_cmd_status_name((xf_cmd_status)r->status),
-           (unsigned)r->elapsed_ms);
+    printf("  %s: %s after %u ms\n", xf_order_name(r->order), xf_cmd_status_name(r->status), (unsigned)r->elapsed_ms);
 }
 
 int main(int argc, char **argv)
 {
-    static xf_simlink gcu_link;
+    static xf_simlink gcu_link; /* only used without a SPEC */
     static xf_sim sim;
-    static xf_serial serial;
+    static xf_link link; /* a serial port here; any link the spec names */
     static xf_client client;
     xf_client *clients[1] = {&client};
     xf_sim *sims[1] = {&sim};
-    size_t n_sims = 0;
-    const char *device = (argc > 1) ? argv[1] : NULL;
-    uint32_t baud = (argc > 2) ? (uint32_t)strtoul(argv[2], NULL, 10) : 115200u;
+    size_t n_sims = (argc > 1) ? 0u : 1u; /* a SPEC, or a simulated GCU to step */
+    char where[300];
+    const char *spec = example_spec("linux_serial", argc > 1 ? argv[1] : NULL, XF_SIMLINK_PTY, &gcu_link, &sim);
     xf_client_config cc;
     xf_hal hal;
     xf_command cmd;
     uint32_t id = 0, start;
 
-    if (device == NULL) {
-        xf_hal sim_hal;
-        if (xf_simlink_open_pty(&gcu_link, NULL) != XF_OK) {
-            fprintf(stderr, "linux_serial: %s\n", gcu_link.error.text);
-            return 3;
-        }
-        xf_simlink_hal(&gcu_link, &sim_hal);
-        xf_sim_init(&sim, NULL);
-        xf_sim_attach(&sim, &sim_hal);
-        n_sims = 1;
-        device = gcu_link.pty_path;
-        printf("simulated GCU on %s\n", device);
-    }
-    if (xf_serial_open(&serial, device, baud) != XF_OK) {
-        fprintf(stderr, "linux_serial: %s\n", serial.error.text);
+    if (example_link_open("linux_serial", &link, spec, &hal) != 0) {
         return 3;
     }
-    xf_serial_hal(&serial, &hal);
+    if (n_sims > 0u) {
+        printf("simulated GCU on %s\n", gcu_link.pty_path);
+    }
+    (void)xf_link_describe(&link, where, sizeof(where)); /* "serial /dev/ttyUSB0 at 115200 baud" */
     xf_client_config_init(&cc);
     cc.on_result = on_result;
     xf_client_init(&client, &hal, &cc);
@@ -72,10 +61,9 @@ int main(int argc, char **argv)
     {
         const xf_telemetry *t = xf_client_telemetry(&client);
         const char *model = xf_gimbal_model(t->gimbal_code);
-        printf("%s (hw %u, fw %u) via %s: yaw %.2f deg, relative yaw %.2f deg\n", model ? model : "unknown model",
-               t->hw_version, t->fw_version, xf_serial_backend(&serial), (double)xf_cdeg(t->cam_yaw),
-               (double)xf_cdeg(t->rel_angle_z));
+        printf("%s (hw %u, fw %u) on %s: yaw %.2f deg, relative yaw %.2f deg\n", model ? model : "unknown model",
+               t->hw_version, t->fw_version, where, (double)xf_cdeg(t->cam_yaw), (double)xf_cdeg(t->rel_angle_z));
     }
-    xf_serial_close(&serial);
+    xf_link_close(&link);
     return xf_client_command_status(&client, id, NULL) == XF_CMD_OK ? 0 : 1;
 }

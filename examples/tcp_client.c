@@ -2,61 +2,45 @@
  * tcp_client.c - drive a gimbal over Ethernet (TCP, the recommended link):
  * head-lock mode, a slow pan, a photo, and the telemetry as it comes.
  *
- *   tcp_client [HOST [PORT]]     default: a built-in simulator on 127.0.0.1
- *   tcp_client 192.168.144.108   a real GCU (port 2332)
+ *   tcp_client [SPEC]                    default: a built-in simulator on 127.0.0.1
+ *   tcp_client tcp:192.168.144.108       a real GCU (port 2332)
+ *   tcp_client tcp:127.0.0.1:2332        e.g. `xfgcu sim --tcp`
+ *   (any spec works: udp:HOST, serial:/dev/ttyUSB0; see xfgcu/posix/xf_link.h)
  */
 #include <stdio.h>
-#include <stdlib.h>
 
 #include "xfgcu/xf_client.h"
+#include "xfgcu/posix/xf_link.h"
 #include "xfgcu/posix/xf_posix.h"
 #include "xfgcu/posix/xf_simlink.h"
 #include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/xf_sim.h"
+#include "example_links.h"
 
 static void on_result(void *user, const xf_cmd_result *r)
 {
     (void)user;
-    printf("  %s: %s\n", xf_order_name(r->order), xf_cmd_status_name((xf_cmd_status)r->status));
+    printf("  %s: %s\n", xf_order_name(r->order), xf_cmd_status_name(r->status));
 }
 
 int main(int argc, char **argv)
 {
-    static xf_simlink gcu_link; /* only used without a HOST */
+    static xf_simlink gcu_link; /* only used without a SPEC */
     static xf_sim sim;
-    static xf_tcp tcp;
+    static xf_link link; /* a TCP link here; any link the spec names */
     static xf_client client;
     xf_client *clients[1] = {&client};
     xf_sim *sims[1] = {&sim};
-    size_t n_sims = 0;
-    xf_tcp_config tc;
+    size_t n_sims = (argc > 1) ? 0u : 1u; /* a SPEC, or a simulated GCU to step */
+    const char *spec = example_spec("tcp_client", argc > 1 ? argv[1] : NULL, XF_SIMLINK_TCP, &gcu_link, &sim);
     xf_client_config cc;
     xf_hal hal;
     xf_command cmd;
     uint32_t start, last_print = 0;
 
-    xf_tcp_config_init(&tc);
-    if (argc > 1) {
-        tc.host = argv[1];
-        tc.port = (uint16_t)((argc > 2) ? strtoul(argv[2], NULL, 10) : XF_GCU_TCP_PORT);
-    } else { /* no gimbal at hand: start a simulated one */
-        xf_hal sim_hal;
-        if (xf_simlink_open_tcp(&gcu_link, "127.0.0.1", 0) != XF_OK) {
-            fprintf(stderr, "tcp_client: %s\n", gcu_link.error.text);
-            return 3;
-        }
-        xf_simlink_hal(&gcu_link, &sim_hal);
-        xf_sim_init(&sim, NULL);
-        xf_sim_attach(&sim, &sim_hal);
-        n_sims = 1;
-        tc.host = "127.0.0.1";
-        tc.port = gcu_link.port;
-    }
-    if (xf_tcp_open(&tcp, &tc) != XF_OK) {
-        fprintf(stderr, "tcp_client: %s\n", tcp.error.text);
+    if (example_link_open("tcp_client", &link, spec, &hal) != 0) { /* then it connects, and reconnects, by itself */
         return 3;
     }
-    xf_tcp_hal(&tcp, &hal);
     xf_client_config_init(&cc);
     cc.on_result = on_result;
     xf_client_init(&client, &hal, &cc);
@@ -81,6 +65,6 @@ int main(int argc, char **argv)
                    (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1);
         }
     }
-    xf_tcp_close(&tcp);
+    xf_link_close(&link);
     return xf_client_link(&client) == XF_LINK_UP ? 0 : 3;
 }

@@ -234,19 +234,22 @@ static inline void fz_check_order(uint8_t order, const uint8_t *params, size_t p
     const xf_order_info *info = xf_order_lookup(order);
     xf_command cmd;
     xf_feedback fb;
-    const char *bad = NULL;
+    xf_field bad = XF_F_ALTITUDE;
     xf_err e;
 
     e = xf_command_decode(order, params, plen, version, &cmd, &bad);
     if (info == NULL) {
-        FZ_CHECK(e == XF_ERR_UNSUPPORTED);
+        FZ_CHECK(e == XF_ERR_NOT_FOUND);
+        FZ_CHECK(bad == XF_F_NONE);
         FZ_CHECK(xf_order_name(order) == NULL);
     } else if (plen != xf_order_params_len(order)) {
         FZ_CHECK(e == XF_ERR_PARAMS);
+        FZ_CHECK(bad == XF_F_NONE);
     } else if (e == XF_OK) {
         uint8_t out[XF_PARAMS_MAX + 1u];
         size_t olen = 9999;
-        const char *bad2 = NULL;
+        xf_field bad2 = XF_F_ALTITUDE;
+        FZ_CHECK(bad == XF_F_NONE);
         FZ_CHECK(cmd.order == order);
         FZ_CHECK(xf_command_check(&cmd, version, &bad2) == XF_OK);
         FZ_CHECK(xf_command_encode(&cmd, version, out, sizeof(out), &olen, &bad2) == XF_OK);
@@ -258,7 +261,7 @@ static inline void fz_check_order(uint8_t order, const uint8_t *params, size_t p
         }
     } else {
         FZ_CHECK(e == XF_ERR_RANGE);
-        FZ_CHECK(bad != NULL);
+        FZ_CHECK(bad != XF_F_NONE && xf_field_size(bad) != 0u);
     }
 
     e = xf_feedback_decode(order, params, plen, &fb);
@@ -271,9 +274,9 @@ static inline void fz_check_order(uint8_t order, const uint8_t *params, size_t p
         uint8_t st;
         FZ_CHECK(fb.has_state == 1u);
         FZ_CHECK(fb.state == params[0]);
-        FZ_CHECK(fb.result <= (uint8_t)XF_RESULT_OPERATING);
-        st = xf_feedback_state(order, (xf_result)fb.result, fb.failed_cameras);
-        if (fb.result == (uint8_t)XF_RESULT_FAILED && (flags & XF_ORDER_MASK_FAILURE) == 0u) {
+        FZ_CHECK(fb.result == XF_RESULT_OK || fb.result == XF_RESULT_FAILED || fb.result == XF_RESULT_OPERATING);
+        st = xf_feedback_state(order, fb.result, fb.failed_cameras);
+        if (fb.result == XF_RESULT_FAILED && (flags & XF_ORDER_MASK_FAILURE) == 0u) {
             /* a plain failure is re-encoded as the canonical 0x01 */
             FZ_CHECK(st == XF_STATE_FAILURE);
             FZ_CHECK(fb.failed_cameras == 0u);
@@ -504,7 +507,7 @@ static inline size_t fz_feed_checked(const uint8_t *s, size_t n, xf_direction di
         for (;;) {
             size_t used = (size_t)-1;
             xf_frame f;
-            int r;
+            xf_parse_status r;
             f.data = NULL;
             f.len = 0;
             r = xf_parser_feed(&R.p, d, left, &used, &f);
@@ -541,7 +544,7 @@ static inline size_t fz_feed_checked(const uint8_t *s, size_t n, xf_direction di
         size_t calls = 0;
         for (;;) {
             xf_frame f;
-            int r;
+            xf_parse_status r;
             f.data = NULL;
             f.len = 0;
             r = xf_parser_flush(&R.p, &f);

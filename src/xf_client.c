@@ -72,7 +72,14 @@ static uint32_t xf__queued_id(const xf_client *c, size_t i)
 static void xf__publish(xf_client *c, const xf_cmd_result *r)
 {
     if (r->status != XF_CMD_OPERATING) {
-        c->results[c->r_next] = *r;
+        xf_cmd_record *k = &c->results[c->r_next]; /* kept in 16 bytes (xf_cmd_record) */
+        k->id = r->id;
+        k->order = r->order;
+        k->status = (uint8_t)r->status;
+        k->state = r->state;
+        k->failed_cameras = r->failed_cameras;
+        k->packets = r->packets;
+        k->elapsed_ms = r->elapsed_ms;
         c->r_next = (uint8_t)((c->r_next + 1u) % XF_CLIENT_RESULTS);
     }
     if (c->cfg.on_result != NULL) {
@@ -86,7 +93,7 @@ static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r
     XF_MEMSET(r, 0, sizeof(*r));
     r->id = xf__queued_id(c, 0);
     r->order = c->queue[c->q_head].order;
-    r->status = (uint8_t)st;
+    r->status = st;
     if (c->active) {
         r->packets = c->packets;
         r->elapsed_ms = xf_ms_since(c->now_ms, c->started_ms);
@@ -150,10 +157,10 @@ static xf_link_state xf__link_now(const xf_client *c)
 static void xf__update_link(xf_client *c)
 {
     xf_link_state s = xf__link_now(c);
-    if ((uint8_t)s == c->health.link) {
+    if (s == c->health.link) {
         return;
     }
-    c->health.link = (uint8_t)s;
+    c->health.link = s;
     if (s == XF_LINK_DOWN) {
         xf__fail_all(c, XF_CMD_LINK_LOST); /* fail fast: never run a stale command later */
     }
@@ -329,7 +336,7 @@ static xf_err xf__receive(xf_client *c)
         for (;;) {
             size_t used = 0;
             xf_frame f;
-            int r = xf_parser_feed(&c->parser, buf + off, n - off, &used, &f);
+            xf_parse_status r = xf_parser_feed(&c->parser, buf + off, n - off, &used, &f);
             off += used;
             if (r != XF_PARSE_FRAME) {
                 break;
@@ -607,7 +614,7 @@ void xf_client_clear_control(xf_client *c)
 /* ---- commands ------------------------------------------------------------------ */
 
 /* Check @p cmd and encode it into @p slot once: every packet then copies the bytes. */
-static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t version, const char **bad_field)
+static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t version, xf_field *bad_field)
 {
     size_t n = 0;
     xf_err err = xf_command_encode(cmd, version, slot->params, sizeof(slot->params), &n, bad_field);
@@ -619,11 +626,14 @@ static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t 
     return XF_OK;
 }
 
-xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const char **bad_field)
+xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_field *bad_field)
 {
     xf_cmd_slot encoded, *slot;
     xf_err err;
-    if (c == NULL || cmd == NULL) {
+    if (c == NULL) {
+        if (bad_field != NULL) {
+            *bad_field = XF_F_NONE;
+        }
         return XF_ERR_ARG;
     }
     err = xf__slot_encode(&encoded, cmd, c->cfg.protocol_version, bad_field);
@@ -661,11 +671,19 @@ xf_cmd_status xf_client_command_status(const xf_client *c, uint32_t id, xf_cmd_r
         }
     }
     for (i = 0; i < XF_CLIENT_RESULTS; i++) {
-        if (c->results[i].id == id) {
+        const xf_cmd_record *k = &c->results[i];
+        if (k->id == id) {
+            xf_cmd_status st = (xf_cmd_status)k->status; /* stored in a byte */
             if (result != NULL) {
-                *result = c->results[i];
+                result->id = k->id;
+                result->order = k->order;
+                result->status = st;
+                result->state = k->state;
+                result->failed_cameras = k->failed_cameras;
+                result->packets = k->packets;
+                result->elapsed_ms = k->elapsed_ms;
             }
-            return (xf_cmd_status)c->results[i].status;
+            return st;
         }
     }
     return XF_CMD_UNKNOWN;
@@ -745,10 +763,10 @@ xf_err xf_telemetry_convert(const xf_telemetry *t, xf_telemetry_units *u)
     u->zoom_cam1 = xf_zoom_x(t->zoom_cam1);
     u->zoom_cam2 = xf_zoom_x(t->zoom_cam2);
     u->target_distance_m = 0.0f;
-    u->distance_valid = (uint8_t)xf_distance_m(t->target_distance, &u->target_distance_m);
+    u->distance_valid = xf_distance_m(t->target_distance, &u->target_distance_m);
     return XF_OK;
 }
-xf_link_state xf_client_link(const xf_client *c) { return (c == NULL) ? XF_LINK_DOWN : (xf_link_state)c->health.link; }
+xf_link_state xf_client_link(const xf_client *c) { return (c == NULL) ? XF_LINK_DOWN : c->health.link; }
 
 const char *xf_link_state_name(xf_link_state s)
 {

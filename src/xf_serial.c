@@ -27,7 +27,7 @@
 #define XF_SERIAL_RETRY_MIN_MS     50u
 #define XF_SERIAL_RETRY_MAX_MS     1000u
 
-int xf_serial_baud_ok(uint32_t baud)
+bool xf_serial_baud_ok(uint32_t baud)
 {
     return baud == 115200u || baud == 250000u || baud == 500000u || baud == 1000000u;
 }

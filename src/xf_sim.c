@@ -498,7 +498,7 @@ void xf_sim_snapshot(const xf_sim *s, xf_gcu_packet *pkt)
     xf__carrier(s, &cr, &cp, &cy);
     memset(pkt, 0, sizeof(*pkt));
     pkt->version = v;
-    pkt->main.gimbal_mode = s->mode;
+    pkt->main.gimbal_mode = (uint8_t)s->mode;
     pkt->main.pod_status = s->pod_status;
     pkt->main.target_offset_x = (s->mode == XF_MODE_TRACK) ? s->track_x : 0;
     pkt->main.target_offset_y = (s->mode == XF_MODE_TRACK) ? s->track_y : 0;
@@ -673,7 +673,7 @@ static void xf__feed(xf_sim *s, const uint8_t *data, size_t n)
         size_t used = 0;
         xf_frame f;
         xf_host_packet p;
-        int r = xf_parser_feed(&s->parser, data + off, n - off, &used, &f);
+        xf_parse_status r = xf_parser_feed(&s->parser, data + off, n - off, &used, &f);
         off += used;
         if (r != XF_PARSE_FRAME) {
             break;

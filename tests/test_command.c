@@ -236,10 +236,11 @@ static void test_order_names(void **state)
         assert_int_equal(o, order_specs[i].order);
     }
     o = 0xEE;
-    assert_err(xf_order_from_name("zoom", &o), XF_ERR_RANGE);     /* prefix of zoom_in */
-    assert_err(xf_order_from_name("zoom_inx", &o), XF_ERR_RANGE); /* longer */
-    assert_err(xf_order_from_name("", &o), XF_ERR_RANGE);
-    assert_err(xf_order_from_name("ZOOM_IN", &o), XF_ERR_RANGE);
+    /* an unknown name is "not found", as an unknown order byte is (test_command_errors) */
+    assert_err(xf_order_from_name("zoom", &o), XF_ERR_NOT_FOUND);     /* prefix of zoom_in */
+    assert_err(xf_order_from_name("zoom_inx", &o), XF_ERR_NOT_FOUND); /* longer */
+    assert_err(xf_order_from_name("", &o), XF_ERR_NOT_FOUND);
+    assert_err(xf_order_from_name("ZOOM_IN", &o), XF_ERR_NOT_FOUND);
     assert_int_equal(o, 0xEE);
     assert_err(xf_order_from_name(NULL, &o), XF_ERR_ARG);
     assert_err(xf_order_from_name("null", NULL), XF_ERR_ARG);
@@ -296,7 +297,7 @@ static void check_golden(const golden *g)
     xf_host_packet pkt;
     uint8_t out[32], ref[32], pbuf[100], want[100];
     size_t n = 999;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     memset(&d, 0, sizeof(d)); /* a failed decode below leaves d as it was */
     assert_non_null(s);
     golden_cmd(g, &c);
@@ -552,7 +553,7 @@ static void test_range_rules(void **state)
         xf_command c, d;
         uint8_t out[32], bytes[32];
         size_t n = 0, len;
-        const char *bad = "untouched";
+        xf_field bad = XF_F_ALTITUDE; /* overwritten: the member at fault, or XF_F_NONE */
         xf_err want = (rc->bad == NULL) ? XF_OK : XF_ERR_RANGE;
         memset(&d, 0, sizeof(d));
         golden_cmd(golden_for(rc->order), &c);
@@ -566,22 +567,18 @@ static void test_range_rules(void **state)
             print_error("case %zu (order 0x%02X, V%u)\n", i, rc->order, rc->version);
         }
         assert_err(xf_command_check(&c, rc->version, &bad), want);
-        if (rc->bad != NULL) {
-            assert_string_equal(bad, rc->bad);
-        }
+        assert_string_equal(xf_field_name(bad), (rc->bad != NULL) ? rc->bad : "none");
         /* encode checks first */
-        bad = "untouched";
+        bad = XF_F_ALTITUDE;
         assert_err(xf_command_encode(&c, rc->version, out, sizeof(out), &n, &bad), want);
-        if (rc->bad != NULL) {
-            assert_string_equal(bad, rc->bad);
-        }
+        assert_string_equal(xf_field_name(bad), (rc->bad != NULL) ? rc->bad : "none");
         /* decode of the same bytes checks too */
         len = ref_encode(&c, s, bytes);
-        bad = "untouched";
+        bad = XF_F_ALTITUDE;
         assert_err(xf_command_decode(rc->order, bytes, len, rc->version, &d, &bad), want);
-        if (rc->bad != NULL) {
-            assert_string_equal(bad, rc->bad);
-        } else {
+        assert_string_equal(xf_field_name(bad), (rc->bad != NULL) ? rc->bad : "none");
+        if (rc->bad == NULL) {
+            assert_int_equal(bad, XF_F_NONE);
             assert_cmd_equal(&d, &c);
         }
         /* a NULL bad_field is allowed */
@@ -596,26 +593,28 @@ static void test_version_aware_decode(void **state)
     static const uint8_t pip3[1] = {0x03};
     xf_command c;
     xf_host_packet pkt;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     (void)state;
     assert_err(xf_command_decode(XF_ORDER_PALETTE, palette50, 2, 1, &c, &bad), XF_OK);
     assert_int_equal(c.value, 50);
     assert_err(xf_command_decode(XF_ORDER_PALETTE, palette50, 2, 2, &c, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "value");
+    assert_int_equal(bad, XF_F_VALUE);
     assert_err(xf_command_decode(XF_ORDER_PIP, pip3, 1, 2, &c, &bad), XF_OK);
     assert_int_equal(c.value, 3);
-    bad = NULL;
+    bad = XF_F_NONE;
     assert_err(xf_command_decode(XF_ORDER_PIP, pip3, 1, 1, &c, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "value");
+    assert_int_equal(bad, XF_F_VALUE);
     /* xf_host_set_command uses the packet's version */
     xf_command_init(&c, XF_ORDER_PIP);
     c.value = 3;
     xf_host_packet_init(&pkt, 1);
     assert_err(xf_host_set_command(&pkt, &c, &bad), XF_ERR_RANGE);
+    assert_int_equal(bad, XF_F_VALUE);
     assert_int_equal(pkt.order, XF_ORDER_NULL); /* untouched */
     assert_int_equal(pkt.params_len, 0);
     xf_host_packet_init(&pkt, 2);
     assert_err(xf_host_set_command(&pkt, &c, &bad), XF_OK);
+    assert_int_equal(bad, XF_F_NONE);
     assert_int_equal(pkt.order, XF_ORDER_PIP);
     assert_int_equal(pkt.params_len, 1);
     assert_int_equal(pkt.params[0], 3);
@@ -630,19 +629,25 @@ static void test_command_errors(void **state)
     xf_host_packet pkt;
     uint8_t out[32];
     size_t i, n = 0;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     (void)state;
 
-    /* NULL */
+    /* NULL; every result but XF_ERR_RANGE leaves XF_F_NONE in bad_field */
+#define EXPECT_NO_FIELD(call, want)                                                                                    \
+    do {                                                                                                               \
+        bad = XF_F_ALTITUDE;                                                                                           \
+        assert_err(call, want);                                                                                        \
+        assert_int_equal(bad, XF_F_NONE);                                                                              \
+    } while (0)
     xf_command_init(&c, XF_ORDER_CLICK_TO_AIM);
-    assert_err(xf_command_check(NULL, 1, &bad), XF_ERR_ARG);
-    assert_err(xf_command_encode(NULL, 1, out, sizeof(out), &n, &bad), XF_ERR_ARG);
-    assert_err(xf_command_encode(&c, 1, NULL, sizeof(out), &n, &bad), XF_ERR_ARG);
-    assert_err(xf_command_decode(XF_ORDER_CLICK_TO_AIM, out, 5, 1, NULL, &bad), XF_ERR_ARG);
-    assert_err(xf_command_decode(XF_ORDER_CLICK_TO_AIM, NULL, 5, 1, &c, &bad), XF_ERR_ARG);
-    assert_err(xf_host_set_command(NULL, &c, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_command_check(NULL, 1, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_command_encode(NULL, 1, out, sizeof(out), &n, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_command_encode(&c, 1, NULL, sizeof(out), &n, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_command_decode(XF_ORDER_CLICK_TO_AIM, out, 5, 1, NULL, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_command_decode(XF_ORDER_CLICK_TO_AIM, NULL, 5, 1, &c, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_host_set_command(NULL, &c, &bad), XF_ERR_ARG);
     xf_host_packet_init(&pkt, 1);
-    assert_err(xf_host_set_command(&pkt, NULL, &bad), XF_ERR_ARG);
+    EXPECT_NO_FIELD(xf_host_set_command(&pkt, NULL, &bad), XF_ERR_ARG);
     /* no parameters: a NULL buffer is fine */
     xf_command_init(&c, XF_ORDER_NEUTRAL);
     assert_err(xf_command_encode(&c, 1, NULL, 0, &n, &bad), XF_OK);
@@ -655,13 +660,13 @@ static void test_command_errors(void **state)
         const golden *g = golden_for(order_specs[i].order);
         golden_cmd(g, &c);
         if (len > 0) {
-            assert_err(xf_command_encode(&c, g->version, out, len - 1u, &n, &bad), XF_ERR_NO_SPACE);
+            EXPECT_NO_FIELD(xf_command_encode(&c, g->version, out, len - 1u, &n, &bad), XF_ERR_NO_SPACE);
             assert_err(xf_command_encode(&c, g->version, out, 0, &n, &bad), XF_ERR_NO_SPACE);
         }
         /* wrong parameter length for the order, both ways */
         memset(out, 0, sizeof(out));
         memcpy(out, g->bytes, len);
-        assert_err(xf_command_decode(g->order, out, len + 1u, g->version, &c, &bad), XF_ERR_PARAMS);
+        EXPECT_NO_FIELD(xf_command_decode(g->order, out, len + 1u, g->version, &c, &bad), XF_ERR_PARAMS);
         assert_err(xf_command_decode(g->order, out, 30, g->version, &c, &bad), XF_ERR_PARAMS);
         if (len > 0) {
             assert_err(xf_command_decode(g->order, out, len - 1u, g->version, &c, &bad), XF_ERR_PARAMS);
@@ -674,12 +679,13 @@ static void test_command_errors(void **state)
         memset(&c, 0, sizeof(c));
         c.order = unknown_orders[i];
         c.cameras = 1;
-        assert_err(xf_command_check(&c, 1, &bad), XF_ERR_UNSUPPORTED);
-        assert_err(xf_command_encode(&c, 1, out, sizeof(out), &n, &bad), XF_ERR_UNSUPPORTED);
-        assert_err(xf_command_decode(unknown_orders[i], out, 0, 1, &c, &bad), XF_ERR_UNSUPPORTED);
-        assert_err(xf_command_decode(unknown_orders[i], out, 3, 2, &c, &bad), XF_ERR_UNSUPPORTED);
-        assert_err(xf_host_set_command(&pkt, &c, &bad), XF_ERR_UNSUPPORTED);
+        EXPECT_NO_FIELD(xf_command_check(&c, 1, &bad), XF_ERR_NOT_FOUND);
+        EXPECT_NO_FIELD(xf_command_encode(&c, 1, out, sizeof(out), &n, &bad), XF_ERR_NOT_FOUND);
+        EXPECT_NO_FIELD(xf_command_decode(unknown_orders[i], out, 0, 1, &c, &bad), XF_ERR_NOT_FOUND);
+        EXPECT_NO_FIELD(xf_command_decode(unknown_orders[i], out, 3, 2, &c, &bad), XF_ERR_NOT_FOUND);
+        EXPECT_NO_FIELD(xf_host_set_command(&pkt, &c, &bad), XF_ERR_NOT_FOUND);
     }
+#undef EXPECT_NO_FIELD
 }
 
 /* xf_command_get / xf_command_set, xf_field_name, xf_field_size. */
@@ -694,6 +700,13 @@ static void test_field_accessors(void **state)
     }
     assert_string_equal(xf_field_name((xf_field)(XF_F_ALTITUDE + 1)), "?"); /* past the packed names */
     assert_string_equal(xf_field_name((xf_field)200), "?");
+    /* no member: what bad_field holds when none is at fault */
+    assert_string_equal(xf_field_name(XF_F_NONE), "none");
+    assert_int_equal(xf_field_size(XF_F_NONE), 0);
+    memset(&c, 0x5A, sizeof(c));
+    xf_command_set(&c, XF_F_NONE, 1); /* does nothing */
+    assert_int_equal(c.value, 0x5A);
+    assert_sint_equal(xf_command_get(&c, XF_F_NONE), 0);
     memset(&c, 0, sizeof(c));
     /* in range: stored as is */
     xf_command_set(&c, XF_F_HOURS, -5);

@@ -621,30 +621,64 @@ static void test_unpack_errors(void **state)
 
 /* ---- names: xf_strerror, gimbal models, modes ----------------------------- */
 
+/* Every xf_err, with the name of its constant (xf_err_name() must give it back). */
+#define ERR_CODE(e)                                                                                                    \
+    {                                                                                                                  \
+        e, #e                                                                                                          \
+    }
+static const struct {
+    xf_err code;
+    const char *name;
+} all_codes[] = {
+    ERR_CODE(XF_OK),           ERR_CODE(XF_WARN_RATE),     ERR_CODE(XF_ERR_ARG),
+    ERR_CODE(XF_ERR_NO_SPACE), ERR_CODE(XF_ERR_RANGE),     ERR_CODE(XF_ERR_UNSUPPORTED),
+    ERR_CODE(XF_ERR_CONFIG),   ERR_CODE(XF_ERR_HEADER),    ERR_CODE(XF_ERR_LENGTH),
+    ERR_CODE(XF_ERR_CRC),      ERR_CODE(XF_ERR_TRUNCATED), ERR_CODE(XF_ERR_PARAMS),
+    ERR_CODE(XF_ERR_FORMAT),   ERR_CODE(XF_ERR_IO),        ERR_CODE(XF_ERR_TIMEOUT),
+    ERR_CODE(XF_ERR_CLOSED),   ERR_CODE(XF_ERR_NOT_FOUND), ERR_CODE(XF_ERR_PERMISSION),
+    ERR_CODE(XF_ERR_BUSY),     ERR_CODE(XF_ERR_AGAIN),     ERR_CODE(XF_ERR_EOF),
+};
+#undef ERR_CODE
+
+/* xf_strerror() and xf_err_name() give every xf_err its own string, and nothing else one: iterating
+ * over every int near the codes finds exactly the values listed above. */
 static void test_strerror_distinct(void **state)
 {
-    static const int codes[] = {
-        XF_OK,          XF_WARN_RATE,  XF_ERR_ARG,       XF_ERR_NO_SPACE,   XF_ERR_RANGE,  XF_ERR_UNSUPPORTED,
-        XF_ERR_HEADER,  XF_ERR_LENGTH, XF_ERR_CRC,       XF_ERR_TRUNCATED,  XF_ERR_PARAMS, XF_ERR_IO,
-        XF_ERR_TIMEOUT, XF_ERR_CLOSED, XF_ERR_NOT_FOUND, XF_ERR_PERMISSION, XF_ERR_BUSY,   XF_ERR_AGAIN,
-    };
     const char *unknown = xf_strerror(-999);
     size_t i, k;
+    int v;
     (void)state;
     assert_non_null(unknown);
-    assert_non_null(xf_strerror(1));
-    assert_non_null(xf_strerror(-1));
-    for (i = 0; i < ARRAY_LEN(codes); i++) {
-        const char *s = xf_strerror(codes[i]);
+    assert_string_equal(xf_err_name((xf_err)-999), "unknown");
+    for (i = 0; i < ARRAY_LEN(all_codes); i++) {
+        const char *s = xf_strerror(all_codes[i].code);
         assert_non_null(s);
         assert_true(s[0] != '\0');
         assert_string_not_equal(s, unknown);
+        assert_string_equal(xf_err_name(all_codes[i].code), all_codes[i].name);
         for (k = 0; k < i; k++) {
-            assert_string_not_equal(s, xf_strerror(codes[k]));
+            assert_true(all_codes[i].code != all_codes[k].code);
+            assert_string_not_equal(s, xf_strerror(all_codes[k].code));
+            assert_string_not_equal(xf_err_name(all_codes[i].code), xf_err_name(all_codes[k].code));
         }
     }
-    /* -1 is deliberately not one of ours */
+    for (v = -300; v <= 300; v++) {
+        int listed = 0;
+        for (i = 0; i < ARRAY_LEN(all_codes); i++) {
+            listed |= (int)all_codes[i].code == v;
+        }
+        if (listed != (strcmp(xf_err_name((xf_err)v), "unknown") != 0) ||
+            listed != (strcmp(xf_strerror(v), unknown) != 0)) {
+            print_error("value %d: listed %d, name %s, text %s\n", v, listed, xf_err_name((xf_err)v), xf_strerror(v));
+            fail();
+        }
+    }
+    /* -1 and 1 are deliberately not ours; 1 is XF_PARSE_FRAME, no xf_err */
     assert_string_equal(xf_strerror(-1), unknown);
+    assert_string_equal(xf_strerror(1), unknown);
+    assert_string_equal(xf_strerror(XF_PARSE_FRAME), unknown);
+    /* zero is success, errors negative, warnings positive */
+    assert_true(XF_OK == 0 && XF_WARN_RATE > 0 && XF_ERR_ARG < 0 && XF_ERR_EOF < 0 && XF_ERR_FORMAT < 0);
 }
 
 static void test_gimbal_model_names(void **state)

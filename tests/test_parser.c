@@ -83,11 +83,11 @@ static size_t harness_feed(harness *h, const uint8_t *data, size_t len)
     for (;;) {
         xf_frame f;
         size_t used = (size_t)-1;
-        int rc;
+        xf_parse_status rc;
         memset(&f, 0, sizeof(f));
         rc = xf_parser_feed(&h->p, data, len, &used, &f);
         if (rc != XF_PARSE_FRAME && rc != XF_PARSE_MORE) {
-            print_error("xf_parser_feed returned %d\n", rc);
+            print_error("xf_parser_feed returned %d\n", (int)rc);
             fail();
         }
         assert_true(used <= len);
@@ -469,7 +469,7 @@ static void test_appendix_one_byte_at_a_time(void **state)
     (void)state;
     assert_err(xf_parser_init(&p, XF_DIR_HOST), XF_OK);
     for (i = 0; i < 72; i++) {
-        int rc = xf_parser_feed(&p, appendix1_packet + i, 1, &used, &f);
+        xf_parse_status rc = xf_parser_feed(&p, appendix1_packet + i, 1, &used, &f);
         assert_int_equal(used, 1);
         if (i < 71) {
             assert_int_equal(rc, XF_PARSE_MORE);
@@ -892,9 +892,15 @@ static void test_parser_args(void **state)
     assert_err(xf_parser_init(NULL, XF_DIR_GCU), XF_ERR_ARG);
     assert_err(xf_parser_init(&p, (xf_direction)2), XF_ERR_ARG);
     assert_err(xf_parser_init(&p, XF_DIR_GCU), XF_OK);
-    assert_err(xf_parser_feed(NULL, b, 4, &used, &f), XF_ERR_ARG);
-    assert_err(xf_parser_feed(&p, b, 4, &used, NULL), XF_ERR_ARG);
-    assert_err(xf_parser_feed(&p, NULL, 4, &used, &f), XF_ERR_ARG);
+    assert_int_equal(xf_parser_feed(NULL, b, 4, &used, &f), XF_PARSE_ERR_ARG);
+    assert_int_equal(xf_parser_feed(&p, b, 4, &used, NULL), XF_PARSE_ERR_ARG);
+    assert_int_equal(xf_parser_feed(&p, NULL, 4, &used, &f), XF_PARSE_ERR_ARG);
+    assert_int_equal(xf_parser_flush(NULL, &f), XF_PARSE_ERR_ARG);
+    assert_int_equal(xf_parser_flush(&p, NULL), XF_PARSE_ERR_ARG);
+    /* the parser's error is the xf_err of the same value, and no xf_err is a frame */
+    assert_int_equal((int)XF_PARSE_ERR_ARG, (int)XF_ERR_ARG);
+    assert_string_equal(xf_err_name((xf_err)XF_PARSE_ERR_ARG), "XF_ERR_ARG");
+    assert_string_equal(xf_err_name((xf_err)XF_PARSE_FRAME), "unknown");
     assert_int_equal(p.stats.bytes_in, 0);
     /* allowed: no data, no consumed pointer */
     assert_int_equal(xf_parser_feed(&p, NULL, 0, &used, &f), XF_PARSE_MORE);

@@ -207,17 +207,17 @@ static void test_gcu_units(void **state)
     assert_int_equal(xf_zoom_raw(NAN), 0);
 
     /* target_distance: 0.1 m; -1 m (raw -10) and 0 mean no measurement */
-    assert_int_equal(xf_distance_m(-10, &m), 0);
+    assert_false(xf_distance_m(-10, &m));
     assert_near(m, 123.0, EPS); /* untouched */
-    assert_int_equal(xf_distance_m(0, &m), 0);
-    assert_int_equal(xf_distance_m(-1, &m), 0);
+    assert_false(xf_distance_m(0, &m));
+    assert_false(xf_distance_m(-1, &m));
     assert_near(m, 123.0, EPS);
-    assert_int_equal(xf_distance_m(1234, &m), 1);
+    assert_true(xf_distance_m(1234, &m));
     assert_near(m, 123.4, EPS);
-    assert_int_equal(xf_distance_m(1, &m), 1);
+    assert_true(xf_distance_m(1, &m));
     assert_near(m, 0.1, EPS);
-    assert_int_equal(xf_distance_m(1234, NULL), 1);
-    assert_int_equal(xf_distance_m(-10, NULL), 0);
+    assert_true(xf_distance_m(1234, NULL));
+    assert_false(xf_distance_m(-10, NULL));
 }
 
 static void test_zoom_to_rate(void **state)

@@ -47,6 +47,7 @@
 #ifndef XF_CLIENT_H
 #define XF_CLIENT_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "xf_command.h"
@@ -80,11 +81,15 @@ typedef enum xf_cmd_status {
     XF_CMD_CANCELLED = 8  /**< removed by xf_client_cancel_all */
 } xf_cmd_status;
 
-/** A command's outcome (or progress, for XF_CMD_OPERATING). */
+/**
+ * A command's outcome (or progress, for XF_CMD_OPERATING). The client keeps
+ * the last ones in a smaller form (xf_cmd_record) and gives them back as
+ * this.
+ */
 typedef struct xf_cmd_result {
     uint32_t id;            /**< the id xf_client_submit() gave it */
     uint8_t order;          /**< its order (::xf_order) */
-    uint8_t status;         /**< xf_cmd_status */
+    xf_cmd_status status;   /**< where it is, or how it ended */
     uint8_t state;          /**< the GCU's state byte, when it sent one */
     uint8_t failed_cameras; /**< for orders that report a mask */
     uint16_t packets;       /**< packets that carried the command */
@@ -155,13 +160,13 @@ typedef struct xf_telemetry_units {
     /** @var xf_telemetry_units::zoom_cam1
      *  camera 1's zoom, x */
     float zoom_cam1, zoom_cam2; /**< camera 2's zoom, x */
-    float target_distance_m;    /**< 0 when distance_valid is 0 */
-    uint8_t distance_valid;     /**< 1 when target_distance_m holds a valid measurement, else 0 */
+    float target_distance_m;    /**< 0 when distance_valid is false */
+    bool distance_valid;        /**< target_distance_m holds a valid measurement (xf_distance_m()) */
 } xf_telemetry_units;
 
 /** Link health figures. The receive parser's counters: xf_client_parser_stats(). */
 typedef struct xf_health {
-    uint8_t link;             /**< xf_link_state */
+    xf_link_state link;       /**< up, stale or down */
     uint8_t watchdog_active;  /**< zero rates are being sent because rates went stale */
     uint8_t transport_closed; /**< the transport said the link is closed (a backend may be restoring it) */
     uint16_t reply_rate_hz;   /**< replies in the last full second (window of at least 1 s) */
@@ -331,6 +336,23 @@ typedef struct xf_cmd_slot {
     uint8_t params[XF_PARAMS_KNOWN_MAX]; /**< the encoded parameters */
 } xf_cmd_slot;
 
+/**
+ * Internal (a member of xf_client): a finished command's result as the
+ * client keeps it for xf_client_command_status(): xf_cmd_result with the
+ * status in one byte, so that each of the ::XF_CLIENT_RESULTS kept takes 16
+ * bytes on a 32-bit target whatever the size of its enums (xf_cmd_result is
+ * 20 where an enum takes 4 bytes, as on RISC-V; arm-none-eabi's take 1).
+ */
+typedef struct xf_cmd_record {
+    uint32_t id;            /**< as xf_cmd_result.id */
+    uint8_t order;          /**< as xf_cmd_result.order */
+    uint8_t status;         /**< xf_cmd_result.status (an ::xf_cmd_status) */
+    uint8_t state;          /**< as xf_cmd_result.state */
+    uint8_t failed_cameras; /**< as xf_cmd_result.failed_cameras */
+    uint16_t packets;       /**< as xf_cmd_result.packets */
+    uint32_t elapsed_ms;    /**< as xf_cmd_result.elapsed_ms */
+} xf_cmd_record;
+
 /* Carrier state as it goes on the wire, in the wire's order (host bytes
  * 12-29: roll, pitch, yaw, accelerations north, east, up, velocities
  * north, east, up; xf_host_main's units), converted once by
@@ -375,7 +397,7 @@ typedef struct xf_client {
      *  private: when the running command was first sent */
     uint32_t started_ms, operating_ms;        /**< private: when the GCU said "operating" */
     uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
-    xf_cmd_result results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
+    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
     /* timing */
     uint32_t now_ms;          /**< private: the time of the current step */
     uint32_t next_send_ms;    /**< private: when the next packet is due */
@@ -553,12 +575,14 @@ void xf_client_clear_control(xf_client *c);
  * @param c          the client
  * @param cmd        the command (copied)
  * @param id         receives the command's id, never 0 (may be NULL)
- * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p c or @p cmd), ::XF_ERR_RANGE /
- *   ::XF_ERR_UNSUPPORTED (from xf_command_check(); *bad_field names the
- *   member), ::XF_ERR_BUSY (queue full: ::XF_CLIENT_QUEUE commands)
+ * @param bad_field  receives the member at fault on ::XF_ERR_RANGE,
+ *   ::XF_F_NONE on any other result (xf_command_check()); may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p c or @p cmd), ::XF_ERR_RANGE
+ *   (*bad_field names the member) or ::XF_ERR_NOT_FOUND (an order the
+ *   protocol does not define), from xf_command_check(); ::XF_ERR_BUSY (queue
+ *   full: ::XF_CLIENT_QUEUE commands)
  */
-xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, const char **bad_field);
+xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_field *bad_field);
 
 /**
  * Status of command @p id; *result (may be NULL) gets its result once finished.

@@ -70,8 +70,13 @@ typedef struct xf_command {
     int32_t altitude;  /**< gaze_geo, mm */
 } xf_command;
 
-/** The members of xf_command, as items of an order's wire layout (xf_order_info.fields). */
+/**
+ * The members of xf_command, as items of an order's wire layout
+ * (xf_order_info.fields), and as the member at fault that the checks report
+ * (`bad_field`: ::XF_F_NONE when none is).
+ */
 typedef enum xf_field {
+    XF_F_NONE = -1, /**< no member: what `bad_field` receives when no member is at fault */
     XF_F_CAMERAS,   /**< xf_command.cameras, U8 */
     XF_F_VALUE,     /**< xf_command.value, U8 */
     XF_F_HOURS,     /**< xf_command.hours, S8 */
@@ -134,8 +139,8 @@ XF_API const char *xf_order_name(uint8_t order);
  * ("zoom-to" finds zoom_to), letters must be lower case.
  * @param name   the name
  * @param order  receives the order byte; left alone on error
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p name or @p order), ::XF_ERR_RANGE
- *   (no order has that name)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p name or @p order), ::XF_ERR_NOT_FOUND
+ *   (no order has that name: as an unknown order byte is for xf_command_check())
  */
 XF_API xf_err xf_order_from_name(const char *name, uint8_t *order);
 /**
@@ -145,16 +150,17 @@ XF_API xf_err xf_order_from_name(const char *name, uint8_t *order);
  */
 XF_API const char *xf_mode_name(uint8_t mode);
 /**
- * Name of a member of xf_command, as used in error reports (the strings
- * `bad_field` receives).
+ * Name of a member of xf_command, as used in error reports (the text of
+ * what `bad_field` receives).
  * @param f  the member
- * @return a static string such as "x0"; "?" for a value outside ::xf_field
+ * @return a static string such as "x0"; "none" for ::XF_F_NONE; "?" for a
+ *   value outside ::xf_field
  */
 XF_API const char *xf_field_name(xf_field f);
 /**
  * Wire size of a member.
  * @param f  the member
- * @return 1, 2 or 4 bytes (2 for a value outside ::xf_field)
+ * @return 1, 2 or 4 bytes; 0 for ::XF_F_NONE (2 for a value outside ::xf_field)
  */
 XF_API size_t xf_field_size(xf_field f);
 /**
@@ -178,14 +184,15 @@ XF_API void xf_command_init(xf_command *cmd, uint8_t order);
  * Read a member as a 32-bit integer (for generic code: the CLI, JSON).
  * @param cmd  the command
  * @param f    the member
- * @return the member's value; 0 for a NULL @p cmd or a value outside ::xf_field
+ * @return the member's value; 0 for a NULL @p cmd, ::XF_F_NONE or a value
+ *   outside ::xf_field
  */
 XF_API int32_t xf_command_get(const xf_command *cmd, xf_field f);
 /**
  * Set a member from a 32-bit integer, saturating to the member's type
  * (300 into a uint8_t member gives 255). No range check of the order: that
- * is xf_command_check()'s. Does nothing for a NULL @p cmd or a value outside
- * ::xf_field.
+ * is xf_command_check()'s. Does nothing for a NULL @p cmd, ::XF_F_NONE or a
+ * value outside ::xf_field.
  * @param cmd  the command
  * @param f    the member
  * @param v    the value
@@ -204,12 +211,13 @@ XF_API void xf_command_set(xf_command *cmd, xf_field f, int32_t v);
  * @p version (xf_order_info.since) is not refused.
  * @param cmd        the command
  * @param version    protocol version the command is for (::XF_PROTOCOL_V1, ::XF_PROTOCOL_V2)
- * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name (a
- *   static string, as xf_field_name() gives); untouched otherwise; may be NULL
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd), ::XF_ERR_UNSUPPORTED (an order
- *   the protocol does not define), ::XF_ERR_RANGE
+ * @param bad_field  receives the member at fault on ::XF_ERR_RANGE
+ *   (xf_field_name() gives its name), ::XF_F_NONE on any other result; may
+ *   be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd), ::XF_ERR_NOT_FOUND (an order
+ *   the protocol does not define: send it raw), ::XF_ERR_RANGE
  */
-XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const char **bad_field);
+XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, xf_field *bad_field);
 
 /**
  * Encode @p cmd's parameters, checked first as by xf_command_check(), into
@@ -220,13 +228,14 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const cha
  *   without parameters
  * @param cap        capacity of @p params, in bytes
  * @param out_len    receives the number of bytes written (may be NULL)
- * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
+ * @param bad_field  receives the member at fault on ::XF_ERR_RANGE,
+ *   ::XF_F_NONE on any other result; may be NULL
  * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd, or NULL @p params for an order
- *   with parameters), ::XF_ERR_UNSUPPORTED, ::XF_ERR_RANGE,
+ *   with parameters), ::XF_ERR_NOT_FOUND (unknown order), ::XF_ERR_RANGE,
  *   ::XF_ERR_NO_SPACE (@p cap < xf_order_params_len())
  */
 XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap, size_t *out_len,
-                                const char **bad_field);
+                                xf_field *bad_field);
 
 /**
  * Decode the @p len parameter bytes of @p order into @p cmd and check them
@@ -236,25 +245,27 @@ XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t 
  * @param len        number of parameter bytes
  * @param version    protocol version of the packet, for the ranges
  * @param cmd        receives the command
- * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
+ * @param bad_field  receives the member at fault on ::XF_ERR_RANGE,
+ *   ::XF_F_NONE on any other result; may be NULL
  * @return ::XF_OK, ::XF_ERR_ARG (NULL @p cmd, or NULL @p params with
- *   @p len > 0), ::XF_ERR_UNSUPPORTED (unknown order: use the raw bytes),
+ *   @p len > 0), ::XF_ERR_NOT_FOUND (unknown order: use the raw bytes),
  *   ::XF_ERR_PARAMS (@p len is not the order's parameter length),
  *   ::XF_ERR_RANGE
  */
 XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version, xf_command *cmd,
-                                const char **bad_field);
+                                xf_field *bad_field);
 
 /**
  * Put @p cmd into a host packet (order, params and params_len), checked and
  * encoded for the packet's version. The packet is left alone on error.
  * @param pkt        the packet (its version must be set)
  * @param cmd        the command
- * @param bad_field  on ::XF_ERR_RANGE receives the failing member's name; may be NULL
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p pkt or @p cmd), ::XF_ERR_UNSUPPORTED,
- *   ::XF_ERR_RANGE
+ * @param bad_field  receives the member at fault on ::XF_ERR_RANGE,
+ *   ::XF_F_NONE on any other result; may be NULL
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p pkt or @p cmd), ::XF_ERR_NOT_FOUND
+ *   (unknown order: set order and params yourself), ::XF_ERR_RANGE
  */
-XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, const char **bad_field);
+XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, xf_field *bad_field);
 
 /* ---- feedback ------------------------------------------------------------ */
 
@@ -270,8 +281,8 @@ typedef struct xf_feedback {
     uint8_t order;          /**< the order answered (byte 69) */
     uint8_t has_state;      /**< 1 if byte 70 carries an execution state */
     uint8_t state;          /**< byte 70 as received */
-    uint8_t result;         /**< xf_result, meaningful when has_state */
     uint8_t failed_cameras; /**< NN for orders that report a failed-camera mask, else 0 */
+    xf_result result;       /**< what the state says, meaningful when has_state (::XF_RESULT_OK without one) */
 } xf_feedback;
 
 /**
@@ -425,7 +436,7 @@ XF_API xf_err xf_order_from_name(const char *name, uint8_t *order)
             return XF_OK;
         }
     }
-    return XF_ERR_RANGE;
+    return XF_ERR_NOT_FOUND;
 }
 
 XF_API const char *xf_mode_name(uint8_t mode)
@@ -446,17 +457,21 @@ XF_API const char *xf_mode_name(uint8_t mode)
 /* An array, not a literal per member: the bad-field reports of
  * xf_command_check are all a firmware keeps of the codec's names. */
 static const char xf__field_name_list[] = "cameras\0value\0hours\0x0\0y0\0x1\0y1\0dx\0dy\0zoom\0temp_high\0"
-                                          "temp_low\0longitude\0latitude\0altitude\0?";
+                                          "temp_low\0longitude\0latitude\0altitude\0?\0none";
 
 XF_API const char *xf_field_name(xf_field f)
 {
-    return xf__nth_name(xf__field_name_list,
-                        ((unsigned)f <= (unsigned)XF_F_ALTITUDE) ? (size_t)f : (size_t)XF_F_ALTITUDE + 1u);
+    size_t i = (size_t)XF_F_ALTITUDE + ((f == XF_F_NONE) ? 2u : 1u); /* "none", or "?" */
+    if ((unsigned)f <= (unsigned)XF_F_ALTITUDE) {
+        i = (size_t)f;
+    }
+    return xf__nth_name(xf__field_name_list, i);
 }
 
 XF_API size_t xf_field_size(xf_field f)
 {
     switch (f) {
+    case XF_F_NONE: return 0u;
     case XF_F_CAMERAS:
     case XF_F_VALUE:
     case XF_F_HOURS: return 1u;
@@ -570,17 +585,26 @@ static inline int xf__field_ok(const xf_command *c, xf_field f, uint8_t vmax)
     }
 }
 
-XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const char **bad_field)
+/* No member at fault (yet): what every result but XF_ERR_RANGE leaves in *bad_field. */
+static inline void xf__no_bad_field(xf_field *bad_field)
+{
+    if (bad_field != NULL) {
+        *bad_field = XF_F_NONE;
+    }
+}
+
+XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, xf_field *bad_field)
 {
     const xf_order_info *info;
     uint8_t vmax;
     size_t pass, i;
+    xf__no_bad_field(bad_field);
     if (cmd == NULL) {
         return XF_ERR_ARG;
     }
     info = xf_order_lookup(cmd->order);
     if (info == NULL) {
-        return XF_ERR_UNSUPPORTED;
+        return XF_ERR_NOT_FOUND;
     }
     vmax = xf__value_max()[info - xf__order_table()][version >= XF_PROTOCOL_V2];
     for (pass = 0; pass < 2u; pass++) {
@@ -588,7 +612,7 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const cha
             xf_field f = (xf_field)info->fields[i];
             if ((xf_field_size(f) == 1u) == (pass == 0u) && !xf__field_ok(cmd, f, vmax)) {
                 if (bad_field != NULL) {
-                    *bad_field = xf_field_name(f);
+                    *bad_field = f;
                 }
                 return XF_ERR_RANGE;
             }
@@ -598,15 +622,11 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, const cha
 }
 
 XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t *params, size_t cap, size_t *out_len,
-                                const char **bad_field)
+                                xf_field *bad_field)
 {
     const xf_order_info *info;
     size_t i, n, off = 0;
-    xf_err err;
-    if (cmd == NULL) {
-        return XF_ERR_ARG;
-    }
-    err = xf_command_check(cmd, version, bad_field);
+    xf_err err = xf_command_check(cmd, version, bad_field); /* XF_ERR_ARG for a NULL cmd */
     if (err != XF_OK) {
         return err;
     }
@@ -642,16 +662,17 @@ XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t 
 }
 
 XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len, uint8_t version, xf_command *cmd,
-                                const char **bad_field)
+                                xf_field *bad_field)
 {
     const xf_order_info *info = xf_order_lookup(order);
     xf_command tmp;
     size_t i, off = 0;
+    xf__no_bad_field(bad_field);
     if (cmd == NULL || (params == NULL && len > 0u)) {
         return XF_ERR_ARG;
     }
     if (info == NULL) {
-        return XF_ERR_UNSUPPORTED;
+        return XF_ERR_NOT_FOUND;
     }
     if (len != xf_order_params_len(order)) {
         return XF_ERR_PARAMS;
@@ -685,11 +706,12 @@ XF_API xf_err xf_command_decode(uint8_t order, const uint8_t *params, size_t len
     return XF_OK;
 }
 
-XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, const char **bad_field)
+XF_API xf_err xf_host_set_command(xf_host_packet *pkt, const xf_command *cmd, xf_field *bad_field)
 {
     size_t n = 0;
     xf_err err;
     if (pkt == NULL || cmd == NULL) {
+        xf__no_bad_field(bad_field);
         return XF_ERR_ARG;
     }
     err = xf_command_encode(cmd, pkt->version, pkt->params, sizeof(pkt->params), &n, bad_field);

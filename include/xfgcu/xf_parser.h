@@ -153,15 +153,26 @@ XF_API void xf_parser_reset(xf_parser *p);
  */
 XF_API size_t xf_parser_pending(const xf_parser *p);
 
-#define XF_PARSE_FRAME 1 /**< xf_parser_feed: *frame holds a frame */
-#define XF_PARSE_MORE  0 /**< xf_parser_feed: all input taken, no frame */
+/**
+ * What xf_parser_feed() and xf_parser_flush() return: a frame, no frame, or
+ * an error. Its own type, not an ::xf_err: the results are not errors, and
+ * no ::xf_err value equals ::XF_PARSE_FRAME. Its negative values are exactly
+ * the ::xf_err codes the two functions can return, with the same values
+ * (today only ::XF_ERR_ARG), so `r < 0` is an error and `xf_strerror(r)`
+ * describes it.
+ */
+typedef enum xf_parse_status {
+    XF_PARSE_ERR_ARG = XF_ERR_ARG, /**< ::XF_ERR_ARG: a NULL parser or frame, or NULL data with a length */
+    XF_PARSE_MORE = 0,             /**< no frame: every byte given was taken (feed), or nothing is held (flush) */
+    XF_PARSE_FRAME = 1             /**< *frame holds a frame */
+} xf_parse_status;
 
 /**
  * Feed @p len bytes. Stops at the first complete frame: returns
- * XF_PARSE_FRAME with *frame set and *consumed = the bytes of @p data taken
+ * ::XF_PARSE_FRAME with *frame set and *consumed = the bytes of @p data taken
  * so far; call again with the rest (even when the rest is empty: frames
- * can be found in bytes already held). Returns XF_PARSE_MORE when every
- * byte was taken and no frame is complete, or XF_ERR_ARG.
+ * can be found in bytes already held). Returns ::XF_PARSE_MORE when every
+ * byte was taken and no frame is complete, or ::XF_PARSE_ERR_ARG.
  *
  * @code
  * size_t n; xf_frame f;
@@ -179,10 +190,10 @@ XF_API size_t xf_parser_pending(const xf_parser *p);
  * @param len       number of bytes at @p data
  * @param consumed  receives how many bytes of @p data were taken (may be NULL)
  * @param frame     receives the frame when ::XF_PARSE_FRAME is returned
- * @return ::XF_PARSE_FRAME, ::XF_PARSE_MORE, or ::XF_ERR_ARG (NULL @p p or
- *   @p frame, or NULL @p data with @p len > 0)
+ * @return ::XF_PARSE_FRAME, ::XF_PARSE_MORE, or ::XF_PARSE_ERR_ARG (NULL @p p
+ *   or @p frame, or NULL @p data with @p len > 0; nothing is done)
  */
-XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
+XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
 
 /**
  * Decode a GCU frame the parser returned, without computing its CRC again
@@ -210,15 +221,15 @@ XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt);
 /**
  * The input has ended (end of file, link closed): give up the candidates
  * that can no longer complete and return the intact frames behind them.
- * Call until it returns XF_PARSE_MORE; then nothing is pending. The bytes
+ * Call until it returns ::XF_PARSE_MORE; then nothing is pending. The bytes
  * given up count as skipped. The frame stays valid until the next call on
  * the parser.
  * @param p      the parser
  * @param frame  receives the frame when ::XF_PARSE_FRAME is returned
  * @return ::XF_PARSE_FRAME, ::XF_PARSE_MORE (nothing held any more), or
- *   ::XF_ERR_ARG (NULL @p p or @p frame)
+ *   ::XF_PARSE_ERR_ARG (NULL @p p or @p frame)
  */
-XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame);
+XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 
 #if XF_EMIT_DEFINITIONS
 
@@ -686,10 +697,10 @@ XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt)
     return err;
 }
 
-XF_API int xf_parser_flush(xf_parser *p, xf_frame *frame)
+XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame)
 {
     if (p == NULL || frame == NULL) {
-        return XF_ERR_ARG;
+        return XF_PARSE_ERR_ARG;
     }
     for (;;) {
         size_t need = 0;
@@ -752,12 +763,12 @@ static inline void xf__give_back(xf_parser *p, size_t *used, size_t appended)
     *used -= back; /* the memo already holds N(end), the value before the first byte given back */
 }
 
-XF_API int xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
+XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     size_t used = 0, appended = 0;
     int found = 0;
     if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
-        return XF_ERR_ARG;
+        return XF_PARSE_ERR_ARG;
     }
     for (;;) {
         size_t need;

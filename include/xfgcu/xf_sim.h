@@ -115,7 +115,7 @@ typedef struct xf_sim {
     uint32_t calibration_end_ms;                             /**< when calibration ends */
     uint8_t fail_state[256]; /**< configured failure state per order; 0 = succeed (xf_sim_set_failure()) */
     /* gimbal state */
-    uint8_t mode;        /**< gimbal mode (::xf_mode) */
+    xf_mode mode;        /**< gimbal mode */
     uint16_t pod_status; /**< `XF_POD_*` bits */
     /** @var xf_sim::roll
      *  camera's absolute roll, deg */

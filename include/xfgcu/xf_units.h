@@ -12,6 +12,7 @@
 #ifndef XF_UNITS_H
 #define XF_UNITS_H
 
+#include <stdbool.h>
 #include <stdint.h>
 #include "xf_config.h"
 #include "xf_error.h"
@@ -167,9 +168,9 @@ XF_API double xf_deg7(int32_t raw);
  * @param raw  0.1 m; <= 0 (-10, 0) means no valid measurement
  * @param m    receives the distance in metres when valid (may be NULL);
  *   left alone otherwise
- * @return 1 when the measurement is valid, 0 when not
+ * @return true when the measurement is valid, false when not
  */
-XF_API int xf_distance_m(int32_t raw, float *m);
+XF_API bool xf_distance_m(int32_t raw, float *m);
 /**
  * zoom_to's ZZ (xf_command.zoom) for a desired zoom rate: -(rate x 10).
  * @param rate  zoom rate, x (clamped to [1.0, 3276.8])
@@ -335,15 +336,15 @@ XF_API float xf_zoom_x(uint16_t raw) { return (float)raw / 10.0f; }
 XF_API uint16_t xf_zoom_raw(float x) { return (uint16_t)xf_units_roundf(x * 10.0f, 0, 65535); }
 XF_API double xf_deg7(int32_t raw) { return (double)raw / 1e7; }
 
-XF_API int xf_distance_m(int32_t raw, float *m)
+XF_API bool xf_distance_m(int32_t raw, float *m)
 {
     if (raw <= 0) {
-        return 0;
+        return false;
     }
     if (m != NULL) {
         *m = (float)raw / 10.0f;
     }
-    return 1;
+    return true;
 }
 
 XF_API int16_t xf_zoom_to_rate_raw(float rate) { return (int16_t)xf_units_roundf(-rate * 10.0f, -32768, -10); }

@@ -443,7 +443,7 @@ static inline size_t ct_drain_host(ct_rig *r, xf_host_packet *last)
     while (off < len) {
         size_t used = 0;
         xf_frame f;
-        int rc = xf_parser_feed(&p, buf + off, len - off, &used, &f);
+        xf_parse_status rc = xf_parser_feed(&p, buf + off, len - off, &used, &f);
         off += used;
         if (rc != XF_PARSE_FRAME) {
             break;

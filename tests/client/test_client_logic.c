@@ -599,21 +599,21 @@ static void test_submit_range_errors(void **state)
 {
     ct_rig *r = rig_up(NULL, NULL);
     xf_command cmd;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     uint32_t id = 0;
     (void)state;
     xf_command_init(&cmd, XF_ORDER_ZOOM_TO);
     cmd.zoom = 0;
     assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "zoom");
+    assert_int_equal(bad, XF_F_ZOOM);
     cmd.zoom = 10001;
     assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "zoom");
+    assert_int_equal(bad, XF_F_ZOOM);
     xf_command_init(&cmd, XF_ORDER_SHUTTER);
     cmd.cameras = 0;
-    bad = NULL;
+    bad = XF_F_NONE;
     assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "cameras");
+    assert_int_equal(bad, XF_F_CAMERAS);
     xf_command_init(&cmd, XF_ORDER_TRACK);
     cmd.value = 1;
     cmd.x0 = 5000;
@@ -621,21 +621,26 @@ static void test_submit_range_errors(void **state)
     cmd.x1 = 4000;
     cmd.y1 = 200;
     assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "x1");
+    assert_int_equal(bad, XF_F_X1);
     xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
     cmd.value = 2;
     cmd.dx = 2000;
     assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "dx");
+    assert_int_equal(bad, XF_F_DX);
     xf_command_init(&cmd, XF_ORDER_RANGING);
     cmd.value = 1;
     assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_RANGE);
-    assert_string_equal(bad, "value");
+    assert_int_equal(bad, XF_F_VALUE);
     assert_xf(xf_client_submit(&r->c, &cmd, &id, NULL), XF_ERR_RANGE); /* bad_field may be NULL */
     xf_command_init(&cmd, 0x99);
-    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_UNSUPPORTED);
+    assert_xf(xf_client_submit(&r->c, &cmd, &id, &bad), XF_ERR_NOT_FOUND);
+    assert_int_equal(bad, XF_F_NONE); /* no member at fault */
+    bad = XF_F_ZOOM;
     assert_xf(xf_client_submit(&r->c, NULL, &id, &bad), XF_ERR_ARG);
+    assert_int_equal(bad, XF_F_NONE);
+    bad = XF_F_ZOOM;
     assert_xf(xf_client_submit(NULL, &cmd, &id, &bad), XF_ERR_ARG);
+    assert_int_equal(bad, XF_F_NONE);
     assert_xf(xf_client_external_track(&r->c, XF_CAM1, 0, -1100), XF_ERR_RANGE);
     assert_xf(xf_client_external_track(&r->c, 0, 0, 0), XF_ERR_RANGE);
     assert_int_equal(id, 0);
@@ -1068,7 +1073,7 @@ static void test_telemetry_convert(void **state)
     assert_near(u.rate_z_dps, 20.0, 1e-4);
     assert_near(u.zoom_cam1, 5.5, 1e-6);
     assert_near(u.zoom_cam2, 30.0, 1e-5);
-    assert_int_equal(u.distance_valid, 1);
+    assert_true(u.distance_valid);
     assert_near(u.target_distance_m, 123.4, 1e-3);
     /* V0.2: rates in 0.1 deg/s */
     t.version = 2;
@@ -1078,12 +1083,12 @@ static void test_telemetry_convert(void **state)
     /* no valid distance (0 and the -1 m sentinel): 0 m, flagged */
     t.target_distance = XF_DISTANCE_INVALID_RAW;
     assert_xf(xf_telemetry_convert(&t, &u), XF_OK);
-    assert_int_equal(u.distance_valid, 0);
+    assert_false(u.distance_valid);
     assert_near(u.target_distance_m, 0.0, 0.0);
     t.target_distance = 0;
-    u.distance_valid = 1;
+    u.distance_valid = true;
     assert_xf(xf_telemetry_convert(&t, &u), XF_OK);
-    assert_int_equal(u.distance_valid, 0);
+    assert_false(u.distance_valid);
     assert_xf(xf_telemetry_convert(NULL, &u), XF_ERR_ARG);
     assert_xf(xf_telemetry_convert(&t, NULL), XF_ERR_ARG);
 }
@@ -1640,7 +1645,7 @@ static void probe_read_common(cb_probe *p)
     probe_bad(p, xf_client_health(c) == &c->health, "health");
     probe_bad(p, xf_client_parser_stats(c) != NULL, "parser stats");
     probe_bad(p, xf_client_pending(c) <= XF_CLIENT_QUEUE, "pending");
-    probe_bad(p, xf_client_link(c) == (xf_link_state)xf_client_health(c)->link, "link");
+    probe_bad(p, xf_client_link(c) == xf_client_health(c)->link, "link");
     probe_bad(p, xf_telemetry_convert(xf_client_telemetry(c), &u) == XF_OK, "convert");
     (void)xf_client_next_deadline(c);
 }
@@ -1655,7 +1660,7 @@ static void probe_on_result(void *user, const xf_cmd_result *res)
         xf_cmd_result got;
         xf_cmd_status st = xf_client_command_status(c, res->id, &got);
         probe_read_common(p);
-        probe_bad(p, st == (xf_cmd_status)res->status, "command status in on_result");
+        probe_bad(p, st == res->status, "command status in on_result");
         probe_bad(p, res->status == XF_CMD_OPERATING || got.id == res->id, "kept result in on_result");
         probe_bad(p, res->status != XF_CMD_LINK_LOST || xf_client_link(c) == XF_LINK_DOWN,
                   "link in a link-lost result");
@@ -1716,7 +1721,7 @@ static void probe_on_link(void *user, xf_link_state s)
     p->calls[CB_LINK]++;
     if (p->read_state) {
         probe_read_common(p);
-        probe_bad(p, xf_client_link(c) == s && xf_client_health(c)->link == (uint8_t)s, "link in on_link");
+        probe_bad(p, xf_client_link(c) == s && xf_client_health(c)->link == s, "link in on_link");
     }
     if (s == XF_LINK_DOWN) {
         p->pending_at_down = xf_client_pending(c);

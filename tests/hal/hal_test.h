@@ -220,7 +220,7 @@ static inline void ht_sink_feed(ht_sink *s, const uint8_t *data, size_t len)
     size_t used = 0;
     xf_frame f;
     for (;;) {
-        int r = xf_parser_feed(&s->parser, data, len, &used, &f);
+        xf_parse_status r = xf_parser_feed(&s->parser, data, len, &used, &f);
         if (r != XF_PARSE_FRAME) {
             break;
         }

@@ -3,6 +3,7 @@
 #include "xfgcu/xf_client.h"
 #include "xfgcu/xf_hal.h"
 #include "xfgcu/xf_mem.h"
+#include "xfgcu/posix/xf_link.h"
 #include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/posix/xf_posix.h"
 #include "xfgcu/posix/xf_simlink.h"

@@ -72,23 +72,28 @@ static const uint8_t vendor_packet[72] = {
 
 static void test_strerror(void)
 {
-    static const int codes[] = {
-        XF_OK,         XF_WARN_RATE,   XF_ERR_ARG,    XF_ERR_NO_SPACE,  XF_ERR_RANGE,      XF_ERR_UNSUPPORTED,
-        XF_ERR_CONFIG, XF_ERR_HEADER,  XF_ERR_LENGTH, XF_ERR_CRC,       XF_ERR_TRUNCATED,  XF_ERR_PARAMS,
-        XF_ERR_IO,     XF_ERR_TIMEOUT, XF_ERR_CLOSED, XF_ERR_NOT_FOUND, XF_ERR_PERMISSION, XF_ERR_BUSY,
-        XF_ERR_AGAIN};
+    static const xf_err codes[] = {
+        XF_OK,         XF_WARN_RATE,  XF_ERR_ARG,     XF_ERR_NO_SPACE, XF_ERR_RANGE,     XF_ERR_UNSUPPORTED,
+        XF_ERR_CONFIG, XF_ERR_HEADER, XF_ERR_LENGTH,  XF_ERR_CRC,      XF_ERR_TRUNCATED, XF_ERR_PARAMS,
+        XF_ERR_FORMAT, XF_ERR_IO,     XF_ERR_TIMEOUT, XF_ERR_CLOSED,   XF_ERR_NOT_FOUND, XF_ERR_PERMISSION,
+        XF_ERR_BUSY,   XF_ERR_AGAIN,  XF_ERR_EOF};
     size_t i, j;
     for (i = 0; i < sizeof(codes) / sizeof(codes[0]); i++) {
         const char *s = xf_strerror(codes[i]);
+        const char *name = xf_err_name(codes[i]);
         CHECK(s != NULL && s[0] != '\0' && !same_str(s, "unknown error"));
+        CHECK(name != NULL && name[0] == 'X' && !same_str(name, "unknown"));
         for (j = 0; j < i; j++) {
             CHECK(!same_str(s, xf_strerror(codes[j])));
+            CHECK(!same_str(name, xf_err_name(codes[j])));
         }
     }
     CHECK(same_str(xf_strerror(XF_OK), "ok"));
     CHECK(same_str(xf_strerror(-1), "unknown error"));
     CHECK(same_str(xf_strerror(12345), "unknown error"));
     CHECK(same_str(xf_strerror(XF_ERR_NO_SPACE), "output buffer too small"));
+    CHECK(same_str(xf_err_name(XF_ERR_CRC), "XF_ERR_CRC") && same_str(xf_err_name(XF_OK), "XF_OK"));
+    CHECK(same_str(xf_err_name((xf_err)-1), "unknown") && same_str(xf_err_name((xf_err)1), "unknown"));
 }
 
 /* ---- xf_bytes.h, xf_mem.h -------------------------------------------------- */
@@ -454,7 +459,7 @@ static void test_order_table(void)
         const char *name;
         uint8_t order = 0xFF;
         xf_command c, d;
-        const char *bad = NULL;
+        xf_field bad = XF_F_NONE;
         size_t n = 99, plen;
         CHECK(info != NULL);
         if (info == NULL) {
@@ -475,7 +480,7 @@ static void test_order_table(void)
         CHECK(c.order == info->order && c.cameras == info->default_cameras);
         if (info->order == XF_ORDER_ZOOM_TO) {
             /* zoom 0 is neither a rate nor a fraction */
-            CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_ERR_RANGE && same_str(bad, "zoom"));
+            CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_ERR_RANGE && bad == XF_F_ZOOM);
             c.zoom = 5000;
         }
         CHECK(xf_command_check(&c, XF_PROTOCOL_V1, NULL) == XF_OK);
@@ -496,10 +501,10 @@ static void test_order_table(void)
         CHECK(xf_order_from_name("zoom-to", &order) == XF_OK && order == XF_ORDER_ZOOM_TO);
         CHECK(xf_order_from_name("external_track", &order) == XF_OK && order == XF_ORDER_EXTERNAL_TRACK);
         order = 0x42;
-        CHECK(xf_order_from_name("zoom", &order) == XF_ERR_RANGE && order == 0x42u);
-        CHECK(xf_order_from_name("zoom_to_", &order) == XF_ERR_RANGE);
-        CHECK(xf_order_from_name("", &order) == XF_ERR_RANGE);
-        CHECK(xf_order_from_name("Zoom_to", &order) == XF_ERR_RANGE);
+        CHECK(xf_order_from_name("zoom", &order) == XF_ERR_NOT_FOUND && order == 0x42u);
+        CHECK(xf_order_from_name("zoom_to_", &order) == XF_ERR_NOT_FOUND);
+        CHECK(xf_order_from_name("", &order) == XF_ERR_NOT_FOUND);
+        CHECK(xf_order_from_name("Zoom_to", &order) == XF_ERR_NOT_FOUND);
         CHECK(xf_order_from_name(NULL, &order) == XF_ERR_ARG);
         CHECK(xf_order_from_name("null", NULL) == XF_ERR_ARG);
     }
@@ -565,47 +570,47 @@ static void test_command_get_set(void)
 static void test_command_check(void)
 {
     xf_command c;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
 
     CHECK(xf_command_check(NULL, XF_PROTOCOL_V1, &bad) == XF_ERR_ARG);
     xf_command_init(&c, 0x02); /* not an order */
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_UNSUPPORTED);
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_NOT_FOUND);
 
     xf_command_init(&c, XF_ORDER_TRACK);
     c.value = 1;
     c.x0 = 500;
     c.x1 = 400; /* right edge left of the left one */
     c.y1 = 10;
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && same_str(bad, "x1"));
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && bad == XF_F_X1);
     c.x1 = 600;
-    bad = NULL;
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_OK && bad == NULL);
+    bad = XF_F_NONE;
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_OK && bad == XF_F_NONE);
     c.cameras = 0;
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && same_str(bad, "cameras"));
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && bad == XF_F_CAMERAS);
     CHECK(xf_command_check(&c, XF_PROTOCOL_V1, NULL) == XF_ERR_RANGE);
 
     xf_command_init(&c, XF_ORDER_TIME_ZONE);
     c.hours = 15;
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_ERR_RANGE && same_str(bad, "hours"));
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_ERR_RANGE && bad == XF_F_HOURS);
     c.hours = -12;
     CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_OK);
 
     xf_command_init(&c, XF_ORDER_EXTERNAL_TRACK);
     c.dx = 1025;
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && same_str(bad, "dx"));
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && bad == XF_F_DX);
     c.dx = XF_EXT_TRACK_LOST;
     c.dy = XF_EXT_TRACK_LOST; /* the "lost" marker */
     CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_OK);
 
     xf_command_init(&c, XF_ORDER_RANGING);
     c.value = 1; /* 0 or 2 only */
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && same_str(bad, "value"));
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V1, &bad) == XF_ERR_RANGE && bad == XF_F_VALUE);
 
     xf_command_init(&c, XF_ORDER_TEMP_ALARM);
     c.value = 1;
     c.temp_high = 100;
     c.temp_low = 200;
-    CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_ERR_RANGE && same_str(bad, "temp_low"));
+    CHECK(xf_command_check(&c, XF_PROTOCOL_V2, &bad) == XF_ERR_RANGE && bad == XF_F_TEMP_LOW);
 }
 
 static void test_command_encode_small(void)
@@ -621,7 +626,7 @@ static void test_command_encode_small(void)
     uint8_t p4[4];
     uint8_t p16[16];
     size_t n = 77;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
 
     xf_command_init(&c, XF_ORDER_TRACK);
     c.value = 1;
@@ -651,7 +656,7 @@ static void test_command_encode_small(void)
     CHECK(d.order == 0x5Au);
     CHECK(xf_command_decode(XF_ORDER_TRACK, NULL, 10, XF_PROTOCOL_V1, &d, &bad) == XF_ERR_ARG);
     CHECK(xf_command_decode(XF_ORDER_TRACK, p16, 10, XF_PROTOCOL_V1, NULL, &bad) == XF_ERR_ARG);
-    CHECK(xf_command_decode(0xFF, p4, sizeof(p4), XF_PROTOCOL_V1, &d, &bad) == XF_ERR_UNSUPPORTED);
+    CHECK(xf_command_decode(0xFF, p4, sizeof(p4), XF_PROTOCOL_V1, &d, &bad) == XF_ERR_NOT_FOUND);
     CHECK(xf_command_decode(XF_ORDER_TRACK, p16, 10, XF_PROTOCOL_V1, &d, &bad) == XF_OK);
     CHECK(memcmp(&c, &d, sizeof(c)) == 0);
     CHECK(xf_command_decode(XF_ORDER_NULL, NULL, 0, XF_PROTOCOL_V1, &d, NULL) == XF_OK && d.order == XF_ORDER_NULL);
@@ -692,9 +697,8 @@ static void test_command_encode_small(void)
 
     /* a range error on decode names the member */
     p16[0] = 0; /* cameras */
-    bad = NULL;
-    CHECK(xf_command_decode(XF_ORDER_TRACK, p16, 10, XF_PROTOCOL_V1, &d, &bad) == XF_ERR_RANGE &&
-          same_str(bad, "cameras"));
+    bad = XF_F_NONE;
+    CHECK(xf_command_decode(XF_ORDER_TRACK, p16, 10, XF_PROTOCOL_V1, &d, &bad) == XF_ERR_RANGE && bad == XF_F_CAMERAS);
 }
 
 /* Every order encoded into and decoded from buffers of 1, 4 and 16 bytes:
@@ -749,7 +753,7 @@ static void test_host_set_command(void)
     uint8_t buf[XF_PACKET_MAX_LEN];
     uint8_t b16[16];
     size_t n = 0;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
 
     xf_host_packet_init(&p, XF_PROTOCOL_V2);
     xf_command_init(&c, XF_ORDER_AREA_TEMP);
@@ -769,10 +773,10 @@ static void test_host_set_command(void)
 
     /* a failed check leaves the packet alone */
     c.x1 = 10;
-    CHECK(xf_host_set_command(&p, &c, &bad) == XF_ERR_RANGE && same_str(bad, "x1"));
+    CHECK(xf_host_set_command(&p, &c, &bad) == XF_ERR_RANGE && bad == XF_F_X1);
     CHECK(p.order == XF_ORDER_AREA_TEMP && p.params_len == 10u);
     xf_command_init(&c, 0x99);
-    CHECK(xf_host_set_command(&p, &c, NULL) == XF_ERR_UNSUPPORTED);
+    CHECK(xf_host_set_command(&p, &c, NULL) == XF_ERR_NOT_FOUND);
 }
 
 static void test_feedback(void)
@@ -910,7 +914,7 @@ static void take_frame(const xf_frame *f, unsigned *got, size_t *bytes)
             for (;;) {                                                                                                 \
                 size_t used = 0;                                                                                       \
                 xf_frame f;                                                                                            \
-                int r = xf_parser_feed(p, d, left, &used, &f);                                                         \
+                xf_parse_status r = xf_parser_feed(p, d, left, &used, &f);                                             \
                 CHECK(r == XF_PARSE_FRAME || r == XF_PARSE_MORE);                                                      \
                 CHECK(used <= left);                                                                                   \
                 if (r != XF_PARSE_FRAME) {                                                                             \
@@ -1000,12 +1004,13 @@ static void test_parser_edges(void)
     CHECK(xf_parser_init(&p, (xf_direction)7) == XF_ERR_ARG);
 #endif
     CHECK(xf_parser_init(&p, XF_DIR_HOST) == XF_OK);
-    CHECK(xf_parser_feed(NULL, b1, 0, &used, &f) == XF_ERR_ARG);
-    CHECK(xf_parser_feed(&p, b1, 0, &used, NULL) == XF_ERR_ARG);
-    CHECK(xf_parser_feed(&p, NULL, 1, &used, &f) == XF_ERR_ARG);
+    CHECK(xf_parser_feed(NULL, b1, 0, &used, &f) == XF_PARSE_ERR_ARG);
+    CHECK(xf_parser_feed(&p, b1, 0, &used, NULL) == XF_PARSE_ERR_ARG);
+    CHECK(xf_parser_feed(&p, NULL, 1, &used, &f) == XF_PARSE_ERR_ARG);
     CHECK(xf_parser_feed(&p, NULL, 0, &used, &f) == XF_PARSE_MORE && used == 0u);
-    CHECK(xf_parser_flush(NULL, &f) == XF_ERR_ARG);
-    CHECK(xf_parser_flush(&p, NULL) == XF_ERR_ARG);
+    CHECK(xf_parser_flush(NULL, &f) == XF_PARSE_ERR_ARG);
+    CHECK(xf_parser_flush(&p, NULL) == XF_PARSE_ERR_ARG);
+    CHECK((int)XF_PARSE_ERR_ARG == (int)XF_ERR_ARG); /* its negative values are the xf_err codes */
     CHECK(xf_parser_pending(NULL) == 0u);
     xf_parser_reset(NULL); /* does nothing */
 
@@ -1128,10 +1133,10 @@ static void test_units(void)
     CHECK(near_f(xf_zoom_x(55), 5.5f, 1e-6f));
     CHECK(xf_zoom_raw(5.5f) == 55 && xf_zoom_raw(-1.0f) == 0 && xf_zoom_raw(1e9f) == 65535);
     CHECK(xf_zoom_to_rate_raw(5.5f) == -55 && xf_zoom_to_rate_raw(0.5f) == -10);
-    CHECK(xf_distance_m(XF_DISTANCE_INVALID_RAW, &m) == 0 && m == -1.0f);
-    CHECK(xf_distance_m(0, &m) == 0);
-    CHECK(xf_distance_m(1234, &m) == 1 && near_f(m, 123.4f, 1e-3f));
-    CHECK(xf_distance_m(1234, NULL) == 1);
+    CHECK(!xf_distance_m(XF_DISTANCE_INVALID_RAW, &m) && m == -1.0f);
+    CHECK(!xf_distance_m(0, &m));
+    CHECK(xf_distance_m(1234, &m) && near_f(m, 123.4f, 1e-3f));
+    CHECK(xf_distance_m(1234, NULL));
 
     CHECK(xf_gnss_to_unix_ms(2278, 352718000u, XF_LEAP_SECONDS_2017, &unix_ms) == XF_OK);
     CHECK(unix_ms == (XF_GPS_EPOCH_UNIX - XF_LEAP_SECONDS_2017) * 1000 + 2278LL * (int64_t)XF_WEEK_MS + 352718000LL);

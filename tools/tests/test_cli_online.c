@@ -379,9 +379,19 @@ static void test_replay_malformed(void **state)
     r = run_tool(NULL, "replay", file, NULL);
     assert_failure(&r, 2, "line 1", "not an xfgcu capture", NULL);
     tool_result_free(&r);
+    f = fopen(file, "w"); /* empty: not a capture either */
+    assert_non_null(f);
+    fclose(f);
+    r = run_tool(NULL, "replay", file, NULL);
+    assert_failure(&r, 2, "line 1", "not an xfgcu capture", NULL);
+    tool_result_free(&r);
     unlink(file);
     r = run_tool(NULL, "replay", file, NULL);
     assert_failure(&r, 2, "cannot open", NULL);
+    tool_result_free(&r);
+    /* a directory opens, but cannot be read: a read error, not the end of the capture */
+    r = run_tool(NULL, "replay", "/", NULL);
+    assert_failure(&r, 2, "cannot read", "line 1", NULL);
     tool_result_free(&r);
 }
 

@@ -70,9 +70,16 @@ xf_err xf_capture_open(xf_capture_reader *r, FILE *f)
     }
     memset(r, 0, sizeof(*r));
     r->f = f;
-    if (fgets(line, sizeof(line), f) == NULL || strncmp(line, XF_CAPTURE_MAGIC, strlen(XF_CAPTURE_MAGIC)) != 0) {
+    if (fgets(line, sizeof(line), f) == NULL) {
+        if (ferror(f)) {
+            snprintf(r->error, sizeof(r->error), "line 1: %s", strerror(errno));
+            return XF_ERR_IO;
+        }
+        line[0] = '\0'; /* an empty file */
+    }
+    if (strncmp(line, XF_CAPTURE_MAGIC, strlen(XF_CAPTURE_MAGIC)) != 0) {
         snprintf(r->error, sizeof(r->error), "line 1: not an xfgcu capture (expected \"%s\")", XF_CAPTURE_MAGIC);
-        return XF_ERR_PARAMS;
+        return XF_ERR_FORMAT;
     }
     r->line = 1;
     return XF_OK;
@@ -81,7 +88,7 @@ xf_err xf_capture_open(xf_capture_reader *r, FILE *f)
 static xf_err xf__capture_bad(xf_capture_reader *r, const char *why)
 {
     snprintf(r->error, sizeof(r->error), "line %lu: %s", r->line, why);
-    return XF_ERR_PARAMS;
+    return XF_ERR_FORMAT;
 }
 
 static int xf__hexval(int c) { return isdigit(c) ? c - '0' : (isxdigit(c) ? (tolower(c) - 'a' + 10) : -1); }
@@ -93,7 +100,7 @@ xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
     char *line = NULL;
     size_t cap = 0;
     ssize_t got;
-    xf_err result = XF_ERR_CLOSED;
+    xf_err result = XF_ERR_EOF;
     if (r == NULL || rec == NULL) {
         return XF_ERR_ARG;
     }
@@ -142,6 +149,10 @@ xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
             result = xf__capture_bad(r, "unexpected text after the bytes");
         }
         break;
+    }
+    if (got < 0 && ferror(r->f)) {
+        snprintf(r->error, sizeof(r->error), "line %lu: %s", r->line + 1u, strerror(errno));
+        result = XF_ERR_IO;
     }
     free(line);
     return result;

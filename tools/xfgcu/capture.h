@@ -84,25 +84,27 @@ typedef struct xf_capture_reader {
 } xf_capture_reader;
 
 /**
- * Start reading @p f; XF_ERR_PARAMS if it is not an xfgcu capture.
+ * Start reading @p f; XF_ERR_FORMAT if it is not an xfgcu capture.
  * Reads the first line. Blocking stdio.
  * @param r  the reader's storage
  * @param f  the file, open for reading (closed by the caller)
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p r or @p f), ::XF_ERR_PARAMS (not an
- *   xfgcu capture; r->error says why)
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p r or @p f), ::XF_ERR_FORMAT (not an
+ *   xfgcu capture, or empty; r->error says why), ::XF_ERR_IO (the read
+ *   failed: errno says why)
  */
 xf_err xf_capture_open(xf_capture_reader *r, FILE *f);
 /**
- * Read the next record: XF_OK, XF_ERR_CLOSED at the end of the file, or
- * XF_ERR_PARAMS for a malformed line (r->error says which line and why).
+ * Read the next record: XF_OK, XF_ERR_EOF at the end of the file, or
+ * XF_ERR_FORMAT for a malformed line (r->error says which line and why).
  *
  * Comment and empty lines are skipped. Blocking stdio; allocates (and
  * frees) a line buffer with getline(). @p rec may be partly written on
  * error.
  * @param r    the reader
  * @param rec  receives the record
- * @return ::XF_OK, ::XF_ERR_CLOSED (end of file, or a read error),
- *   ::XF_ERR_PARAMS (malformed line), ::XF_ERR_ARG (NULL @p r or @p rec)
+ * @return ::XF_OK, ::XF_ERR_EOF (end of file: no more records),
+ *   ::XF_ERR_FORMAT (malformed line), ::XF_ERR_IO (the read failed: errno
+ *   says why), ::XF_ERR_ARG (NULL @p r or @p rec)
  */
 xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec);
 

@@ -310,8 +310,8 @@ static void step_health(demo *d)
     demo_step(d, "link health");
     (void)demo_pump(d, 50);
     demo_got("link %s: %u packets sent, %u replies, %u replies/s, %u missing in the last second",
-             xf_link_state_name((xf_link_state)h->link), (unsigned)h->packets_sent, (unsigned)h->replies,
-             (unsigned)h->reply_rate_hz, (unsigned)h->replies_missing);
+             xf_link_state_name(h->link), (unsigned)h->packets_sent, (unsigned)h->replies, (unsigned)h->reply_rate_hz,
+             (unsigned)h->replies_missing);
     demo_got("parser: %u frames, %u CRC errors, %u bytes skipped; simulator: %u correct packets in, %u replies out",
              (unsigned)ps->frames, (unsigned)ps->crc_errors, (unsigned)ps->bytes_skipped,
              (unsigned)d->sim.stats.packets_in, (unsigned)d->sim.stats.replies);

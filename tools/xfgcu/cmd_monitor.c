@@ -171,8 +171,8 @@ static void draw_screen(const monitor *m)
            yes_no(t->pod_status & XF_POD_NIGHT_VISION_ON, "on", "off"),
            yes_no(t->pod_status & XF_POD_LIGHTING_ON, "on", "off"), t->error_code);
     draw_v2(t);
-    printf("link        %s, %s, %u sent, %u received\n", xf_link_state_name((xf_link_state)h->link), rate,
-           (unsigned)h->packets_sent, (unsigned)h->replies);
+    printf("link        %s, %s, %u sent, %u received\n", xf_link_state_name(h->link), rate, (unsigned)h->packets_sent,
+           (unsigned)h->replies);
     printf("parser      %u CRC errors, %u length errors, %u bytes skipped\n", (unsigned)ps->crc_errors,
            (unsigned)ps->length_errors, (unsigned)ps->bytes_skipped);
     fflush(stdout);
@@ -189,9 +189,9 @@ static void print_line(const monitor *m, uint32_t elapsed)
     distance_text(t, &u, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
-           cli_seconds(elapsed), xf_link_state_name((xf_link_state)h->link), rate, mode ? mode : "unknown",
-           (double)u.cam_roll_deg, (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1,
-           (double)u.zoom_cam2, dist, yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
+           cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", (double)u.cam_roll_deg,
+           (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1, (double)u.zoom_cam2, dist,
+           yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
     fflush(stdout);
 }
 

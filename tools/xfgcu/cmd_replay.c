@@ -164,11 +164,14 @@ static int read_capture(replay *r, FILE *in)
         feed(r, rec);
     }
     free(rec);
-    if (err == XF_ERR_PARAMS) {
+    if (err == XF_ERR_FORMAT) {
         return cli_fail("replay %s: %s", r->file, reader.error);
     }
-    if (err != XF_ERR_CLOSED && err != XF_OK) {
-        return cli_fail("replay %s: cannot read: %s", r->file, ferror(in) ? strerror(errno) : xf_strerror(err));
+    if (err == XF_ERR_IO) {
+        return cli_fail("replay %s: cannot read: %s", r->file, reader.error);
+    }
+    if (err != XF_ERR_EOF && err != XF_OK) {
+        return cli_fail("replay %s: cannot read: %s", r->file, xf_strerror(err));
     }
     flush_parsers(r);
     return r->rc;

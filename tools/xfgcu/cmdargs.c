@@ -825,11 +825,11 @@ static int check_combination(const parse_state *st)
     return XFGCU_EXIT_OK;
 }
 
-static int option_covers(const opt_spec *o, const char *field)
+static int option_covers(const opt_spec *o, xf_field field)
 {
     size_t k, span = (o->kind == K_BOX) ? 4u : (o->kind == K_POINT || o->kind == K_OFFSET) ? 2u : 1u;
     for (k = 0; k < span; k++) {
-        if (strcmp(xf_field_name((xf_field)(o->field + k)), field) == 0) {
+        if ((xf_field)(o->field + k) == field) {
             return 1;
         }
     }
@@ -839,13 +839,13 @@ static int option_covers(const opt_spec *o, const char *field)
 /* The codec's own range check; its bad_field names the member, mapped back to the option given. */
 static int check_with_codec(const parse_state *st, uint8_t version)
 {
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     size_t i;
     xf_err err = xf_command_check(&st->cmd, version, &bad);
     if (err == XF_OK) {
         return XFGCU_EXIT_OK;
     }
-    for (i = 0; bad != NULL && i < st->spec->extra->nopts; i++) {
+    for (i = 0; bad != XF_F_NONE && i < st->spec->extra->nopts; i++) {
         const opt_spec *o = &st->spec->extra->opts[i];
         if (st->given[i] != NULL && o->kind != K_SWITCH && option_covers(o, bad)) {
             if ((o->flags & OPT_BY_VERSION) != 0u) {
@@ -855,7 +855,8 @@ static int check_with_codec(const parse_state *st, uint8_t version)
             return out_of_range(st, o, st->given[i]);
         }
     }
-    return cli_fail_in(st->where, "%s%s%s", xf_strerror(err), bad != NULL ? ": " : "", bad != NULL ? bad : "");
+    return cli_fail_in(st->where, "%s%s%s", xf_strerror(err), bad != XF_F_NONE ? ": " : "",
+                       bad != XF_F_NONE ? xf_field_name(bad) : "");
 }
 
 /* The command's options for getopt_long(), with --cameras where the order takes a mask, and

@@ -46,16 +46,14 @@ static int start_sim(demo *d)
 
 static int start_client(demo *d)
 {
-    xf_tcp_config tc;
+    char spec[128];
     xf_client_config cc;
     xf_hal hal;
-    xf_tcp_config_init(&tc);
-    tc.host = "127.0.0.1";
-    tc.port = d->gcu_link.port;
-    if (xf_tcp_open(&d->tcp, &tc) != XF_OK || xf_tcp_wait(&d->tcp, 2000) != XF_OK) {
-        return cli_fail_link("demo: cannot connect to the simulated GCU: %s", d->tcp.error.text);
+    (void)xf_link_spec_for_simlink(&d->gcu_link, spec, sizeof(spec));
+    if (xf_link_open(&d->link, spec) != XF_OK || xf_link_wait(&d->link, 2000) != XF_OK ||
+        xf_link_hal(&d->link, &hal) != XF_OK) {
+        return cli_fail_link("demo: cannot connect to the simulated GCU: %s", xf_link_error(&d->link)->text);
     }
-    xf_tcp_hal(&d->tcp, &hal);
     xf_client_config_init(&cc);
     cc.on_bytes = on_bytes;
     cc.user = d;
@@ -78,7 +76,7 @@ int demo_start(demo *d)
 
 void demo_stop(demo *d)
 {
-    xf_tcp_close(&d->tcp);
+    xf_link_close(&d->link);
     xf_simlink_close(&d->gcu_link);
 }
 

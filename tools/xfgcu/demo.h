@@ -10,6 +10,7 @@
 
 #include "cli.h"
 #include "xfgcu/xf_client.h"
+#include "xfgcu/posix/xf_link.h"
 #include "xfgcu/posix/xf_posix.h"
 #include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/posix/xf_simlink.h"
@@ -20,7 +21,7 @@
 typedef struct demo {
     xf_simlink gcu_link; /* the simulator's end: a TCP server on 127.0.0.1 */
     xf_sim sim;
-    xf_tcp tcp; /* the client's end */
+    xf_link link; /* the client's end: a TCP link, from the spec that reaches the simulator */
     xf_client client;
     uint32_t t0;   /* start of the tour */
     uint32_t mark; /* start of what a step times */

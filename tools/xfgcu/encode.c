@@ -90,7 +90,7 @@ static int encode_named(const cmd_line *l)
     xf_host_packet pkt;
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = 0;
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     xf_err err;
     xf_host_packet_init(&pkt, l->version); /* no carrier data; sub_request = 0x01 */
     err = xf_host_set_command(&pkt, &l->cmd, &bad);
@@ -98,8 +98,8 @@ static int encode_named(const cmd_line *l)
         err = xf_host_pack(&pkt, buf, sizeof(buf), &len);
     }
     if (err != XF_OK) {
-        return cli_fail("encode %s: %s%s%s", cmdargs_name(l->spec), xf_strerror(err), bad != NULL ? ": " : "",
-                        bad != NULL ? bad : "");
+        return cli_fail("encode %s: %s%s%s", cmdargs_name(l->spec), xf_strerror(err), bad != XF_F_NONE ? ": " : "",
+                        bad != XF_F_NONE ? xf_field_name(bad) : "");
     }
     print_hex(buf, len);
     return XFGCU_EXIT_OK;

@@ -42,7 +42,7 @@ static void put_hex(builder *b, const char *key, const uint8_t *bytes, size_t n)
 static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t n, uint8_t version)
 {
     const xf_order_info *info = xf_order_lookup(order);
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     char why[128];
     xf_command cmd;
     xf_err err;
@@ -69,12 +69,12 @@ static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t
         snprintf(why, sizeof(why), "%s takes %zu parameter bytes, not %zu", xf_order_name(info->order),
                  xf_order_params_len(order), n);
     } else {
-        snprintf(why, sizeof(why), "%s out of range", bad != NULL ? bad : "a parameter");
+        snprintf(why, sizeof(why), "%s out of range", bad != XF_F_NONE ? xf_field_name(bad) : "a parameter");
     }
     put(b, "command_error", json_string(why));
 }
 
-static const char *result_name(uint8_t result)
+static const char *result_name(xf_result result)
 {
     switch (result) {
     case XF_RESULT_OK: return "ok";
@@ -349,7 +349,8 @@ static int command_member(const reader *r, const xf_order_info *info, const char
 static int params_from_command(const reader *r, const json_t *c, uint8_t *out, size_t *n)
 {
     const xf_order_info *info = xf_order_lookup(r->order);
-    const char *key, *bad = NULL;
+    const char *key;
+    xf_field bad = XF_F_NONE;
     json_t *value;
     xf_command cmd;
     xf_err err;
@@ -377,8 +378,9 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
     }
     err = xf_command_encode(&cmd, r->version, out, XF_PARAMS_MAX, n, &bad);
     if (err != XF_OK) {
-        return cli_fail_in(r->where, "command.%s is out of range for %s (protocol %u)", bad != NULL ? bad : "?",
-                           xf_order_name(info->order), (unsigned)r->version);
+        return cli_fail_in(r->where, "command.%s is out of range for %s (protocol %u)",
+                           bad != XF_F_NONE ? xf_field_name(bad) : "?", xf_order_name(info->order),
+                           (unsigned)r->version);
     }
     return XFGCU_EXIT_OK;
 }

@@ -138,23 +138,16 @@ static const struct option link_options[] = {
     {NULL, 0, NULL, 0},
 };
 
-/* --udp HOST, --tcp HOST[:PORT] */
+/* --udp HOST, --tcp HOST[:PORT] (read as the library reads the spec "tcp:HOST[:PORT]") */
 static int take_host(const cli_args *a, int port_allowed, const char **host)
 {
-    const char *text = a->value, *colon;
+    xf_link_spec spec;
+    const char *reason = NULL;
     int rc = cli_value_text(a, port_allowed ? "HOST[:PORT]" : "HOST", host);
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
+    if (rc == XFGCU_EXIT_OK && port_allowed && cli_tcp_spec(*host, &spec, &reason) != XF_OK) {
+        rc = cli_fail("--%s %s: %s", a->opt->name, *host, reason);
     }
-    colon = strrchr(text, ':');
-    /* HOST:PORT, or [IPv6]:PORT; a bare IPv6 address has several colons and no port */
-    if (port_allowed && colon != NULL && (strchr(text, ':') == colon || colon[-1] == ']')) {
-        long long v;
-        if (cli_parse_int(colon + 1, &v) != 0 || v < 1 || v > 65535) {
-            return cli_fail("--%s %s: PORT must be 1..65535", a->opt->name, text);
-        }
-    }
-    return XFGCU_EXIT_OK;
+    return rc;
 }
 
 /* One link option, as cli_next() returned it. */

@@ -47,6 +47,26 @@ int cli_value_baud(const cli_args *a, long *baud, int *given)
     return rc;
 }
 
+/* The library's reason without the text it quotes first ("QUOTED: reason"), when it quoted it whole. */
+static const char *spec_reason(const xf_link_spec *spec, const char *quoted)
+{
+    size_t n = strlen(quoted);
+    const char *t = spec->error.text;
+    return (strncmp(t, quoted, n) == 0 && strncmp(t + n, ": ", 2) == 0) ? t + n + 2 : t;
+}
+
+xf_err cli_tcp_spec(const char *text, xf_link_spec *spec, const char **reason)
+{
+    char buf[XF_LINK_SPEC_MAX + 2u]; /* a longer text is cut here, and refused as too long */
+    xf_err err;
+    snprintf(buf, sizeof(buf), "tcp:%s", text);
+    err = xf_link_spec_parse(buf, spec);
+    if (reason != NULL) {
+        *reason = spec_reason(spec, buf);
+    }
+    return err;
+}
+
 double cli_seconds(uint32_t ms) { return (double)ms / 1000.0; }
 
 double cli_wrap180(double deg) { return xf_units_wrap360(deg, -180.0); }
@@ -76,106 +96,58 @@ void online_free(online *o)
     if (o == NULL) {
         return;
     }
-    if (o->opened) {
-        switch (o->kind) {
-        case ONLINE_SERIAL: xf_serial_close(&o->serial); break;
-        case ONLINE_UDP: xf_udp_close(&o->udp); break;
-        case ONLINE_TCP: xf_tcp_close(&o->tcp); break;
-        }
-    }
+    xf_link_close(&o->link);
     free(o);
 }
 
-/* "HOST", "HOST:PORT", "[V6]:PORT" or a bare IPv6 address (several colons, no port). */
-static void split_host_port(const char *text, char *host, size_t cap, long *port)
+/* The spec the link options name: --serial PATH with --baud, --udp HOST with --gcu-port and
+ * --local-port, or --tcp HOST[:PORT] with --gcu-port when HOST has no PORT; a bad one is bad input. */
+static int options_spec(online *o, xf_link_spec *spec)
 {
-    const char *colon = strrchr(text, ':');
-    size_t n = strlen(text);
-    *port = 0;
-    if (colon != NULL && (strchr(text, ':') == colon || colon[-1] == ']')) {
-        long long v = 0;
-        n = (size_t)(colon - text);
-        if (cli_parse_int(colon + 1, &v) == 0) {
-            *port = (long)v; /* checked by main */
-        }
+    const cli_link *opt = o->opt;
+    const char *reason = NULL;
+    xf_err err;
+    if (opt->serial != NULL) {
+        err = xf_link_spec_init(spec, XF_LINK_KIND_SERIAL, opt->serial);
+        spec->baud = (uint32_t)opt->baud;
+        reason = spec_reason(spec, opt->serial);
+    } else if (opt->udp != NULL) {
+        err = xf_link_spec_init(spec, XF_LINK_KIND_UDP, opt->udp);
+        spec->local_port = (uint16_t)opt->local_port;
+        reason = spec_reason(spec, opt->udp);
+    } else {
+        err = cli_tcp_spec(opt->tcp, spec, &reason);
+        spec->connect_timeout_ms = (uint32_t)opt->timeout_ms;
     }
-    if (n >= 2u && text[0] == '[' && text[n - 1u] == ']') {
-        text++;
-        n -= 2u;
+    if (opt->gcu_port != 0 && !spec->port_given) {
+        spec->port = (uint16_t)opt->gcu_port;
     }
-    if (n >= cap) {
-        n = cap - 1u;
-    }
-    memcpy(host, text, n);
-    host[n] = '\0';
-}
-
-static int open_failed(const online *o, const char *why) { return cli_fail_link("%s: %s", o->option, why); }
-
-static int open_serial(online *o)
-{
-    snprintf(o->option, sizeof(o->option), "--serial %s", o->opt->serial);
-    snprintf(o->desc, sizeof(o->desc), "serial %s at %ld baud", o->opt->serial, o->opt->baud);
-    o->kind = ONLINE_SERIAL;
-    if (xf_serial_open(&o->serial, o->opt->serial, (uint32_t)o->opt->baud) != XF_OK) {
-        return open_failed(o, o->serial.error.text);
-    }
-    o->opened = 1;
-    xf_serial_hal(&o->serial, &o->raw);
-    return XFGCU_EXIT_OK;
-}
-
-static int open_udp(online *o)
-{
-    xf_udp_config uc;
-    xf_udp_config_init(&uc);
-    uc.gcu_host = o->opt->udp;
-    uc.gcu_port = (uint16_t)(o->opt->gcu_port != 0 ? o->opt->gcu_port : (long)XF_GCU_UDP_PORT);
-    uc.local_port = (uint16_t)o->opt->local_port;
-    snprintf(o->option, sizeof(o->option), "--udp %s", o->opt->udp);
-    snprintf(o->desc, sizeof(o->desc), "udp %s:%u", o->opt->udp, (unsigned)uc.gcu_port);
-    o->kind = ONLINE_UDP;
-    if (xf_udp_open(&o->udp, &uc) != XF_OK) {
-        return open_failed(o, o->udp.error.text);
-    }
-    o->opened = 1;
-    xf_udp_hal(&o->udp, &o->raw);
-    return XFGCU_EXIT_OK;
-}
-
-static int open_tcp(online *o)
-{
-    xf_tcp_config tc;
-    char host[256];
-    long port;
-    split_host_port(o->opt->tcp, host, sizeof(host), &port);
-    if (port == 0) {
-        port = (o->opt->gcu_port != 0) ? o->opt->gcu_port : (long)XF_GCU_TCP_PORT;
-    }
-    xf_tcp_config_init(&tc);
-    tc.host = host;
-    tc.port = (uint16_t)port;
-    tc.connect_timeout_ms = (uint32_t)o->opt->timeout_ms;
-    snprintf(o->option, sizeof(o->option), "--tcp %s", o->opt->tcp);
-    snprintf(o->desc, sizeof(o->desc), strchr(host, ':') != NULL ? "tcp [%s]:%ld" : "tcp %s:%ld", host, port);
-    o->kind = ONLINE_TCP;
-    if (xf_tcp_open(&o->tcp, &tc) != XF_OK) {
-        return open_failed(o, o->tcp.error.text);
-    }
-    o->opened = 1;
-    if (xf_tcp_wait(&o->tcp, (uint32_t)o->opt->timeout_ms) != XF_OK) {
-        return open_failed(o, o->tcp.error.text);
-    }
-    xf_tcp_hal(&o->tcp, &o->raw);
-    return XFGCU_EXIT_OK;
+    return (err == XF_OK) ? XFGCU_EXIT_OK : cli_fail("%s: %s", o->option, reason);
 }
 
 static int open_link(online *o)
 {
-    if (o->opt->serial != NULL) {
-        return open_serial(o);
+    const cli_link *opt = o->opt;
+    const char *name = "tcp", *value = opt->tcp;
+    xf_link_spec spec;
+    int rc;
+    if (opt->serial != NULL) {
+        name = "serial";
+        value = opt->serial;
+    } else if (opt->udp != NULL) {
+        name = "udp";
+        value = opt->udp;
     }
-    return (o->opt->udp != NULL) ? open_udp(o) : open_tcp(o);
+    snprintf(o->option, sizeof(o->option), "--%s %s", name, value);
+    rc = options_spec(o, &spec);
+    if (rc != XFGCU_EXIT_OK) {
+        return rc;
+    }
+    if (xf_link_open_spec(&o->link, &spec) != XF_OK || xf_link_wait(&o->link, (uint32_t)opt->timeout_ms) != XF_OK) {
+        return cli_fail_link("%s: %s", o->option, xf_link_error(&o->link)->text);
+    }
+    (void)xf_link_describe(&o->link, o->desc, sizeof(o->desc));
+    return xf_link_hal(&o->link, &o->raw) == XF_OK ? XFGCU_EXIT_OK : cli_fail_link("%s: not open", o->option);
 }
 
 /* The tap's clock: the one the commands step the client with. */
@@ -214,9 +186,7 @@ static int start_client(online *o, const online_hooks *hooks)
 /* Why the GCU may be silent, from the link's own error, when it has one. */
 static const char *link_error(const online *o)
 {
-    const char *text = (o->kind == ONLINE_SERIAL) ? o->serial.error.text
-                       : (o->kind == ONLINE_UDP)  ? o->udp.error.text
-                                                  : o->tcp.error.text;
+    const char *text = xf_link_error(&o->link)->text;
     return xf_client_health(&o->client)->transport_closed && text[0] != '\0' ? text : NULL;
 }
 
@@ -305,11 +275,6 @@ void online_linger(online *o, uint32_t packets)
 
 /* ---- one command ------------------------------------------------------------------- */
 
-static int final_status(xf_cmd_status st)
-{
-    return st != XF_CMD_QUEUED && st != XF_CMD_SENDING && st != XF_CMD_OPERATING && st != XF_CMD_UNKNOWN;
-}
-
 static void report_progress(uint32_t id, online_progress_fn progress, void *user, uint32_t *since, int *reported)
 {
     uint32_t now = xf_posix_now_ms();
@@ -332,26 +297,26 @@ int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_p
 {
     uint32_t id = 0, since = 0;
     int reported = 0;
-    const char *bad = NULL;
-    xf_cmd_status st;
+    xf_field bad = XF_F_NONE;
     xf_err err = xf_client_submit(&o->client, cmd, &id, &bad);
     memset(result, 0, sizeof(*result));
     result->order = cmd->order;
     if (err != XF_OK) {
-        return cli_fail("%s %s: %s%s%s", o->context, xf_order_name(cmd->order), xf_strerror(err), bad ? ": " : "",
-                        bad ? bad : "");
+        return cli_fail("%s %s: %s%s%s", o->context, xf_order_name(cmd->order), xf_strerror(err),
+                        bad != XF_F_NONE ? ": " : "", bad != XF_F_NONE ? xf_field_name(bad) : "");
     }
-    while (!final_status(st = xf_client_command_status(&o->client, id, result))) {
+    /* the library's wait, in slices: between them, a signal cancels and progress is shown */
+    while ((err = xf_posix_wait(&o->client, id, 20, result, NULL, 0)) == XF_ERR_TIMEOUT) {
         if (cli_stop_requested()) {
-            xf_client_cancel_all(&o->client);
-            continue;
-        }
-        if (st == XF_CMD_OPERATING) {
+            xf_client_cancel_all(&o->client); /* the next slice sees it cancelled */
+        } else if (result->status == XF_CMD_OPERATING) {
             report_progress(id, progress, user, &since, &reported);
         }
-        online_poll(o, 20);
     }
-    if (st == XF_CMD_UNKNOWN) { /* forgotten: cannot happen with one command at a time */
+    if (err != XF_OK) { /* forgotten (cannot happen with one command at a time), or poll() failed */
+        memset(result, 0, sizeof(*result));
+        result->id = id;
+        result->order = cmd->order;
         result->status = XF_CMD_TIMEOUT;
     }
     return XFGCU_EXIT_OK;
@@ -359,7 +324,7 @@ int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_p
 
 void online_result_text(const xf_cmd_result *r, char *buf, size_t cap)
 {
-    switch ((xf_cmd_status)r->status) {
+    switch (r->status) {
     case XF_CMD_OK: snprintf(buf, cap, "ok"); break;
     case XF_CMD_FAILED:
         if (r->failed_cameras != 0u) {
@@ -371,7 +336,7 @@ void online_result_text(const xf_cmd_result *r, char *buf, size_t cap)
     case XF_CMD_TIMEOUT: snprintf(buf, cap, "timeout"); break;
     case XF_CMD_LINK_LOST: snprintf(buf, cap, "link lost"); break;
     case XF_CMD_CANCELLED: snprintf(buf, cap, "interrupted"); break;
-    default: snprintf(buf, cap, "%s", xf_cmd_status_name((xf_cmd_status)r->status)); break;
+    default: snprintf(buf, cap, "%s", xf_cmd_status_name(r->status)); break;
     }
 }
 
@@ -380,7 +345,7 @@ int online_result_exit(const online *o, const char *what, const xf_cmd_result *r
     char text[64];
     const char *why;
     online_result_text(r, text, sizeof(text));
-    switch ((xf_cmd_status)r->status) {
+    switch (r->status) {
     case XF_CMD_OK: return XFGCU_EXIT_OK;
     case XF_CMD_FAILED:
         cli_fail("%s: the GCU answered %s (state 0x%02X) on %s", what, text, r->state, o->desc);

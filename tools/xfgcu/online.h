@@ -16,6 +16,7 @@
 
 #include "cli.h"
 #include "xfgcu/xf_client.h"
+#include "xfgcu/posix/xf_link.h"
 #include "xfgcu/posix/xf_posix.h"
 #include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/posix/xf_simlink.h"
@@ -32,6 +33,12 @@ int cli_stop_requested(void);
 
 /** --baud: 115200, 250000, 500000 or 1000000 (xf_serial_baud_ok()); see cli_value_long(). */
 int cli_value_baud(const cli_args *a, long *baud, int *given);
+/**
+ * --tcp HOST[:PORT] read as the library reads the spec "tcp:HOST[:PORT]" (xf_link_spec_parse()).
+ * @return XF_OK, or the parser's code with *reason (may be NULL) saying what is wrong, without
+ *   the spec the library's text quotes first.
+ */
+xf_err cli_tcp_spec(const char *text, xf_link_spec *spec, const char **reason);
 /** Milliseconds to seconds for humans: "1.25 s". */
 double cli_seconds(uint32_t ms);
 /** Wrap degrees into [-180, 180). */
@@ -47,19 +54,13 @@ typedef struct online_hooks {
     void *user;    /**< for on_bytes, on_link and tap */
 } online_hooks;
 
-typedef enum online_kind { ONLINE_SERIAL, ONLINE_UDP, ONLINE_TCP } online_kind;
-
 typedef struct online {
     const cli_link *opt;
     const char *context; /* the command's name, for messages */
-    online_kind kind;
-    char desc[320];   /* "tcp 127.0.0.1:2332": where, for messages and captures */
-    char option[300]; /* "--tcp 127.0.0.1:2332": the option that named the link */
-    xf_serial serial;
-    xf_udp udp;
-    xf_tcp tcp;
-    int opened;
-    xf_hal raw; /* the link's own hal */
+    char desc[320];      /* "tcp 127.0.0.1:2332": where, for messages and captures (xf_link_describe()) */
+    char option[300];    /* "--tcp 127.0.0.1:2332": the option that named the link */
+    xf_link link;        /* the link the options name, opened from their spec */
+    xf_hal raw;          /* the link's own hal */
     xf_tap tap;
     xf_hal hal; /* what the client uses: raw, or tapped */
     xf_client client;

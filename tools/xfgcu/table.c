@@ -195,7 +195,7 @@ static void member_text(xf_field f, int32_t v, char *buf, size_t cap)
 static void command_text(uint8_t order, const uint8_t *params, size_t n, uint8_t version, char *buf, size_t cap)
 {
     const xf_order_info *info = xf_order_lookup(order);
-    const char *bad = NULL;
+    xf_field bad = XF_F_NONE;
     xf_command cmd;
     size_t i;
     xf_err err;
@@ -207,7 +207,7 @@ static void command_text(uint8_t order, const uint8_t *params, size_t n, uint8_t
     if (err == XF_ERR_PARAMS) {
         snprintf(buf, cap, "(%s takes %zu bytes)", xf_order_name(info->order), xf_order_params_len(order));
     } else if (err != XF_OK) {
-        snprintf(buf, cap, "(%s out of range)", bad != NULL ? bad : "a parameter");
+        snprintf(buf, cap, "(%s out of range)", bad != XF_F_NONE ? xf_field_name(bad) : "a parameter");
     }
     for (i = 0; err == XF_OK && i < info->nfields; i++) {
         char item[64];

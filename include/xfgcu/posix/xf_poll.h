@@ -36,6 +36,65 @@ XF_BEGIN_DECLS
 xf_err xf_posix_poll(struct xf_client *const *clients, size_t n_clients, struct xf_sim *const *sims, size_t n_sims,
                      int max_wait_ms);
 
+/* ---- one command to its result ---------------------------------------------------- */
+
+/**
+ * Run @p cmd to its result: submit it to @p c, then drive @p c with the poll loop
+ * (xf_posix_wait()) until the result is known, and return at once when it is: in the step that
+ * handles the reply carrying the command's final state, with no packet waited for beyond what
+ * the client itself needs. For start-up and simple programs; a program with work of its own
+ * between packets submits and polls itself (xf_client_submit(), xf_posix_poll()).
+ *
+ * Blocks, by design, up to @p timeout_ms (the command itself ends by the client's own timeouts:
+ * command_timeout_ms, or operating_timeout_ms after "operating"). Only @p c is stepped meanwhile:
+ * other clients and simulators of the program are not (xf_posix_wait() steps simulators too).
+ * Commands queued before @p cmd run first, as always, and the wait includes their time; their
+ * results, and those of commands that callbacks submit meanwhile, come as usual (on_result,
+ * xf_client_command_status()); nothing is cancelled. Signals do not end the wait (call with a
+ * short timeout in a loop to react to them). Must not be called from one of @p c's callbacks.
+ * @param c           the client, started (xf_client_init())
+ * @param cmd         the command (copied)
+ * @param timeout_ms  how long to wait at most, ms
+ * @param result      receives the outcome (may be NULL): on ::XF_OK the final result (ok, failed,
+ *   timeout, link lost, cancelled); on ::XF_ERR_TIMEOUT its id, order and where it is (queued,
+ *   sending, operating); otherwise zeros but its order
+ * @return ::XF_OK (the result is known: see result->status, which may be a failure);
+ *   ::XF_ERR_TIMEOUT (@p timeout_ms passed first: the command stays queued or running, and its
+ *   result comes later as any command's, by result->id; xf_client_cancel_all() drops it and every
+ *   other); ::XF_ERR_ARG (NULL @p c or @p cmd); what xf_client_submit() refuses a command with
+ *   (::XF_ERR_RANGE: a member out of range, which xf_command_check() names;
+ *   ::XF_ERR_NOT_FOUND: an order the protocol does not define); ::XF_ERR_BUSY (queue full, or
+ *   called from one of @p c's callbacks: nothing submitted); ::XF_ERR_IO (poll() failed)
+ */
+xf_err xf_posix_run(struct xf_client *c, const xf_command *cmd, uint32_t timeout_ms, xf_cmd_result *result);
+
+/**
+ * Drive @p c (and the simulators @p sims, stepped in the same loop: an in-process simulated GCU)
+ * with xf_posix_poll() until command @p id has finished, or @p timeout_ms has passed. Returns as
+ * soon as the step that finishes it has run. What xf_posix_run() does after submitting, for a
+ * command submitted already (xf_client_submit()), or to wait in slices (a loop that calls it
+ * with a short timeout and checks a signal flag between calls, as the xfgcu program does).
+ *
+ * Blocks, by design, up to @p timeout_ms; a @p timeout_ms of 0 only looks at the status. Other
+ * clients are not stepped meanwhile; no command is cancelled. Must not be called from one of
+ * @p c's callbacks.
+ * @param c           the client
+ * @param id          the command's id (from xf_client_submit())
+ * @param timeout_ms  how long to wait at most, ms
+ * @param result      receives the outcome (may be NULL): on ::XF_OK the final result; on
+ *   ::XF_ERR_TIMEOUT its id and where it is (queued, sending, operating), order 0; left alone
+ *   otherwise
+ * @param sims        simulators to step too (none NULL; may be NULL when @p n_sims is 0)
+ * @param n_sims      how many
+ * @return ::XF_OK (finished: see result->status); ::XF_ERR_TIMEOUT (not finished within
+ *   @p timeout_ms); ::XF_ERR_ARG (NULL @p c, or NULL @p sims with @p n_sims not 0);
+ *   ::XF_ERR_NOT_FOUND (an @p id the client does not know: never given, or finished so long ago
+ *   that ::XF_CLIENT_RESULTS newer results replaced its own); ::XF_ERR_BUSY (called from one of
+ *   @p c's callbacks); ::XF_ERR_IO (poll() failed)
+ */
+xf_err xf_posix_wait(struct xf_client *c, uint32_t id, uint32_t timeout_ms, xf_cmd_result *result,
+                     struct xf_sim *const *sims, size_t n_sims);
+
 XF_END_DECLS
 
 #endif /* XF_POLL_H */

@@ -27,6 +27,7 @@
 #ifndef XF_POSIX_H
 #define XF_POSIX_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <sys/socket.h>
@@ -71,10 +72,10 @@ struct sp_port; /* libserialport's */
 /**
  * Baud rates the GCU speaks; anything else is XF_ERR_RANGE.
  * @param baud  the rate
- * @return 1 for 115200, 250000, 500000 and 1000000; 0 otherwise (which
- *   xf_serial_open() refuses with ::XF_ERR_RANGE)
+ * @return true for 115200, 250000, 500000 and 1000000; false otherwise
+ *   (which xf_serial_open() refuses with ::XF_ERR_RANGE)
  */
-int xf_serial_baud_ok(uint32_t baud);
+bool xf_serial_baud_ok(uint32_t baud);
 
 /** A serial link's state: zero it (or close it) before xf_serial_open(). */
 typedef struct xf_serial {
