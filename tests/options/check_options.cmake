@@ -1,7 +1,7 @@
 # Builds app.c against the compiled library (LIB) with the library's own
 # options, which must link and run, then with each layout option changed,
 # which must fail to link with the option named in the linker's message.
-# cmake -DCC=... -DFLAGS=... -DINC=... -DLIB=... -DSRC=... -DOUT=... -P check_options.cmake
+# cmake -DCC=... -DFLAGS=... -DINC=... -DLIB=... -DSRC=... -DOUT=... [-DEMU=qemu-...] -P check_options.cmake
 separate_arguments(flags UNIX_COMMAND "${FLAGS}")
 
 function(build result output)
@@ -15,7 +15,7 @@ build(rc msg)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the library's own options do not link:\n${msg}")
 endif()
-execute_process(COMMAND ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+execute_process(COMMAND ${EMU} ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "init failed with the library's own options: ${out}")
 endif()

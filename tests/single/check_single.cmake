@@ -1,8 +1,8 @@
 # Runs PROG (a program of two translation units using the parser and the packers) and counts, with
 # nm, the copies of each codec table (xf__*_table*, xf__*_list, xf__order_rows, ...) and of a few
 # codec functions: each must be there exactly once.
-# cmake -DPROG=... -DNM=... -P check_single.cmake
-execute_process(COMMAND ${PROG} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+# cmake -DPROG=... -DNM=... [-DEMU=qemu-...] -P check_single.cmake
+execute_process(COMMAND ${EMU} ${PROG} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${PROG} failed: ${out}")
 endif()
