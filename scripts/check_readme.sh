@@ -69,6 +69,18 @@ if [ "$status" = 0 ] && { [ -d "$work/myapp2/build/xfgcu/tests" ] || [ -d "$work
   echo "README recipe: add_subdirectory built xfgcu's tests or tools for a consumer" >&2
   status=1
 fi
+# The installed shared libraries export the public API only: no xf__ internal (cmake/xfgcu.map).
+if [ "$status" = 0 ]; then
+  sos=("$HOME"/opt/xfgcu/lib/libxfgcu_*.so)
+  leaked=$(for so in "${sos[@]}"; do nm -D --defined-only "$so" | awk -v f="$so" '$3 ~ /^xf__/ {print f ": " $3}'; done)
+  if [ "${#sos[@]}" -lt 5 ] || [ -n "$leaked" ]; then
+    echo "README: shared libraries missing (${#sos[@]}) or exporting internals: $leaked" >&2
+    status=1
+  else
+    echo "--- ${#sos[@]} shared libraries export no xf__ symbol"
+  fi
+fi
+
 # The README's promise for a machine without cmocka: configure says so in one line, and the
 # library, the program and the examples still build. (pkg-config is shown every .pc file but
 # cmocka's.)
