@@ -2,17 +2,20 @@
  * fuzz_parser_raw - raw bytes into the streaming parser, both directions.
  *
  * Input layout:
- *   byte 0          k = (byte & 7) + 1: number of chunk sizes that follow
+ *   byte 0          k = (byte & 7) + 1: number of chunk sizes that follow;
+ *                   bit 3: end the input with xf_parser_reset() instead of
+ *                   xf_parser_flush()
  *   bytes 1..k      chunk sizes, cycled: 0 = empty feed, 255 = the rest
  *   the rest        the stream
  * Inputs shorter than k + 1 bytes are fed whole.
  *
- * Checks (fuzz_common.h): every invariant of the parser after every call
- * of xf_parser_feed and then xf_parser_flush, agreement with a reference
- * model, frame decode/encode round trips; and
- * on the raw stream itself, unpack == xf_packet_check for both directions
- * and pack(unpack(x)) == x, plus command / feedback decoding of arbitrary
- * parameter bytes.
+ * Checks (fuzz_common.h): after every call of xf_parser_feed, and when the
+ * input ends, every counter and every frame equal the reference model's
+ * (tests/parser_ref.h), each frame returned by the call that feeds its last
+ * byte, plus the parser's own invariants (XF_ASSERT) and frame decode/encode
+ * round trips; on the raw stream itself, unpack == xf_packet_check for both
+ * directions and pack(unpack(x)) == x, plus command / feedback decoding of
+ * arbitrary parameter bytes.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -28,12 +31,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t n = size;
     const uint8_t *sizes = NULL;
     size_t nsizes = 0;
-    fz_span *frames;
+    pr_frame *frames;
     fz_plan plan;
-    int d;
+    fz_result res;
+    int d, end = FZ_END_FLUSH;
 
     if (size > 0u) {
         nsizes = (size_t)(data[0] & 7u) + 1u;
+        end = (data[0] & 8u) ? FZ_END_RESET : FZ_END_FLUSH;
         if (size > nsizes) {
             sizes = data + 1;
             stream = data + 1 + nsizes;
@@ -43,12 +48,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
 
-    frames = (fz_span *)malloc((n / XF_PACKET_MIN_LEN + 1u) * sizeof(fz_span));
+    frames = (pr_frame *)malloc((n / XF_PACKET_MIN_LEN + 1u) * sizeof(pr_frame));
     FZ_CHECK(frames != NULL);
     for (d = 0; d < 2; d++) {
         xf_direction dir = (d == 0) ? XF_DIR_GCU : XF_DIR_HOST;
         fz_plan_init(&plan, sizes, nsizes);
-        (void)fz_feed_checked(stream, n, dir, &plan, 1, frames, NULL);
+        fz_feed_checked(stream, n, dir, &plan, end, frames, &res);
     }
     free(frames);
 

@@ -1,10 +1,15 @@
 /*
- * gen_corpus - writes the small committed seed corpus of the fuzz harnesses.
+ * gen_corpus - writes the small committed seed corpus of the fuzz harnesses,
+ * and the hand-made regression inputs of the parser's semantics.
  *
- *     gen_corpus DIR     writes DIR/fuzz_parser_raw/... and DIR/fuzz_parser_crcfix/...
+ *     gen_corpus DIR [REGDIR]   writes DIR/fuzz_parser_raw/... and DIR/fuzz_parser_crcfix/...,
+ *                               and REGDIR/<harness>/sem-... when REGDIR is given
  *
- * Regenerate with `scripts/fuzz.sh corpus` (it overwrites only the files
- * named here; files the fuzzer added by hand stay). Deterministic.
+ * Regenerate with `scripts/fuzz.sh corpus` (fuzz/corpus and fuzz/regressions;
+ * it overwrites only the files named here; files added by hand stay).
+ * Deterministic. The harnesses compare the parser with the reference model
+ * (tests/parser_ref.h) on every input: these seeds only steer them to the
+ * interesting cases; none states an outcome itself.
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -220,8 +225,9 @@ static void gen_raw(const char *dir)
     }
     write_file(dir, h, "ring-wrap", &b);
 
-    /* the input ends inside a 255-byte claim with an intact frame behind it
-     * (a contender) and one that ends later (only a flush returns it) */
+    /* intact frames inside a 255-byte claim and a 224-byte one: each comes out
+     * at its own last byte, and the claims are dropped with it; the input ends
+     * inside the last claim */
     b.n = 0;
     put_bytes(&b, "01 07");
     put_bytes(&b, "8A 5E FF 00 01 02 03");
@@ -282,7 +288,7 @@ static void gen_crcfix(const char *dir)
     put_bytes(&b, "04 00 10 30  02 00 11  05 01 12 40 07  02 01 13  0C 00 14 47  0A 00 15");
     write_file(dir, h, "truncated-corrupted", &b);
 
-    /* the stream ends inside bogus claims: only a flush returns the last packets */
+    /* the stream ends inside bogus claims: the packets inside them come out at their own end */
     b.n = 0;
     put_bytes(&b, "00 FF");
     put_bytes(&b, "02 00 21  06 FF 00  02 01 22  06 F0 00  02 00 23  0A 01 24  07");
@@ -299,13 +305,179 @@ static void gen_crcfix(const char *dir)
     write_file(dir, h, "long-packets-input-body", &b);
 }
 
+/* A packet of direction dir and length len, body (bytes 4 .. len-3) fill,
+ * into p (XF_PACKET_LIMIT bytes); the caller may change the body and call
+ * seal() again. */
+static void seal(uint8_t *p, size_t len)
+{
+    uint16_t crc = xf_crc16(p, len - 2u);
+    p[len - 2u] = (uint8_t)(crc >> 8);
+    p[len - 1u] = (uint8_t)crc;
+}
+
+static void raw_packet(uint8_t *p, size_t len, uint8_t fill)
+{
+    memset(p, fill, len);
+    p[0] = XF_GCU_HEADER0;
+    p[1] = XF_GCU_HEADER1;
+    p[2] = (uint8_t)len;
+    p[3] = 0;
+    p[4] = 1; /* version */
+    seal(p, len);
+}
+
+static void put_fill(buf *b, uint8_t v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        put1(b, v);
+    }
+}
+
+/* The rules of the parser's semantics, each as a small input (fuzz/README.md). */
+static void gen_regressions(const char *dir)
+{
+    const char *h = "fuzz_parser_raw";
+    uint8_t p[XF_PACKET_LIMIT];
+    buf b;
+    int i, plan;
+    static const char *plans[2] = {"00 01", "02 03 40 FF"}; /* byte by byte; 3, 64, then the rest */
+    static const char *names[2][6] = {
+        {"sem-frame-inside-long-claim-bytewise", "sem-false-later-than-frame-bytewise", "sem-false-inside-frame-bytewise",
+         "sem-false-sooner-loses-frame-bytewise", "sem-truncated-then-real-bytewise", "sem-same-end-bytewise"},
+        {"sem-frame-inside-long-claim-chunks", "sem-false-later-than-frame-chunks", "sem-false-inside-frame-chunks",
+         "sem-false-sooner-loses-frame-chunks", "sem-truncated-then-real-chunks", "sem-same-end-chunks"},
+    };
+
+    for (plan = 0; plan < 2; plan++) {
+        /* a frame inside a false candidate with a bogus long length (255):
+         * returned at its own last byte; the false one is dropped with it */
+        b.n = 0;
+        put_bytes(&b, plans[plan]);
+        put_bytes(&b, "8A 5E FF 00 11 22 33");
+        gcu_frame(&b, XF_ORDER_ZOOM_IN, 0x00, 21, 1);
+        put_fill(&b, 0x00, 260);
+        write_file(dir, h, names[plan][0], &b);
+
+        /* 17 nested false candidates (255) that end after a frame: the ones
+         * that would end last are given up, whatever the slots (up to 16);
+         * the frame survives */
+        b.n = 0;
+        put_bytes(&b, plans[plan]);
+        for (i = 0; i < 17; i++) {
+            put_bytes(&b, "8A 5E FF 00");
+        }
+        gcu_frame(&b, 0x00, 0, 22, 1);
+        put_fill(&b, 0x00, 300);
+        write_file(dir, h, names[plan][1], &b);
+
+        /* the same with lengths an 84-byte build accepts: a frame of 84 whose
+         * body holds 17 false candidates (84) that end after it */
+        b.n = 0;
+        put_bytes(&b, plans[plan]);
+        raw_packet(p, 84, 0x11);
+        for (i = 0; i < 17; i++) {
+            memcpy(p + 4 + 4 * i, "\x8A\x5E\x54\x00", 4);
+        }
+        seal(p, 84);
+        put(&b, p, 84);
+        put_fill(&b, 0x00, 100);
+        write_file(dir, h, names[plan][2], &b);
+
+        /* 16 false candidates (84) that end sooner than a frame of 84 that
+         * starts after them: with up to 16 slots the frame is given up (the
+         * documented loss) and the false ones fail their CRC */
+        b.n = 0;
+        put_bytes(&b, plans[plan]);
+        for (i = 0; i < 16; i++) {
+            put_bytes(&b, "8A 5E 54 00");
+        }
+        raw_packet(p, 84, 0x22);
+        put(&b, p, 84);
+        gcu_frame(&b, 0x00, 0, 23, 1);
+        put_fill(&b, 0x00, 100);
+        write_file(dir, h, names[plan][3], &b);
+
+        /* truncated packets followed by real ones: an 84-byte one cut at 40
+         * (its candidate fails inside the next frame), a 255-byte one cut at
+         * 40 (dropped when the frame inside it is returned) */
+        b.n = 0;
+        put_bytes(&b, plans[plan]);
+        raw_packet(p, 84, 0x33);
+        put(&b, p, 40);
+        gcu_frame(&b, 0x00, 0, 24, 1);
+        raw_packet(p, 255, 0x44);
+        p[2] = 0xFF;
+        seal(p, 255);
+        put(&b, p, 40);
+        gcu_frame(&b, XF_ORDER_TRACK, 0x01, 25, 1);
+        put_fill(&b, 0x00, 10);
+        write_file(dir, h, names[plan][4], &b);
+
+        /* candidates that end on the same byte. A false one (84) and a
+         * frame (72) at 12: both pending (K >= 2), the earlier start is
+         * examined first (a CRC error), then the frame. Then, for each K in
+         * 1..16: K false ones (84) fill the slots, and a frame of 80 after
+         * them ends with the last of them: not admitted (it does not end
+         * sooner), given up. Zero bytes between the parts. */
+        b.n = 0;
+        put_bytes(&b, plans[plan]);
+        put_bytes(&b, "8A 5E 54 00 00 00 00 00 00 00 00 00");
+        raw_packet(p, 72, 0x55);
+        put(&b, p, 72);
+        put_fill(&b, 0x00, 20);
+        for (i = 1; i <= 16; i++) {
+            int k;
+            for (k = 0; k < i; k++) {
+                put_bytes(&b, "8A 5E 54 00");
+            }
+            raw_packet(p, 80, (uint8_t)(0x60 + i));
+            put(&b, p, 80);
+            put_fill(&b, 0x00, 20);
+        }
+        write_file(dir, h, names[plan][5], &b);
+    }
+
+    /* the input ends with partial headers (h0 h1 L held), reset instead of flush */
+    b.n = 0;
+    put_bytes(&b, "08 01");
+    gcu_frame(&b, 0x00, 0, 26, 1);
+    put_bytes(&b, "8A 5E 01 02 8A 5E 48");
+    write_file(dir, h, "sem-partial-header-at-end-reset", &b);
+
+    h = "fuzz_parser_crcfix";
+    /* frames inside bogus claims of either direction, byte by byte */
+    b.n = 0;
+    put_bytes(&b, "00 01");
+    put_bytes(&b, "06 FF 00  00 03 01 02 03  02 00 11  06 C8 00  03 01 12  0E FF 00  0A 05 13");
+    write_file(dir, h, "sem-frame-inside-bogus-claim", &b);
+    /* 17 false candidates (255) that end later, then a packet, both directions */
+    b.n = 0;
+    put_bytes(&b, "00 FF");
+    put_bytes(&b, "01 10 FF  02 00 22  09 10 FF  0A 00 23");
+    write_file(dir, h, "sem-false-later-than-packet", &b);
+    /* 16 false candidates (84) that end sooner than a packet of 84 after them: it is given up */
+    b.n = 0;
+    put_bytes(&b, "00 01");
+    put_bytes(&b, "01 0F 54  02 0C 33  02 00 34");
+    write_file(dir, h, "sem-false-sooner-loses-packet", &b);
+    /* truncated packets (84 and 255, cut at 40), each followed by an intact one */
+    b.n = 0;
+    put_bytes(&b, "02 03 40 FF");
+    put_bytes(&b, "04 0C 44 28  02 00 55  04 FF 66 28  02 01 77");
+    write_file(dir, h, "sem-truncated-then-real", &b);
+}
+
 int main(int argc, char **argv)
 {
-    if (argc != 2) {
-        fprintf(stderr, "usage: gen_corpus DIR\n");
+    if (argc != 2 && argc != 3) {
+        fprintf(stderr, "usage: gen_corpus DIR [REGDIR]\n");
         return 2;
     }
     gen_raw(argv[1]);
     gen_crcfix(argv[1]);
+    if (argc == 3) {
+        gen_regressions(argv[2]);
+    }
     return 0;
 }

@@ -5,10 +5,13 @@
 #   scripts/fuzz.sh smoke            replay the committed corpus (and fuzz/regressions/)
 #                                    through every harness and variant, then fuzz each main harness
 #                                    for $FUZZ_SMOKE_SECONDS (default 30) s. About 1 min.
+#                                    (ctest replays the same inputs in any build with the tests:
+#                                    the replay_* tests, fuzz/replay.cmake.)
 #   scripts/fuzz.sh long [SECONDS]   a long campaign: SECONDS (default 600) per binary, on a
 #                                    writable corpus in build/fuzz/corpus-long/ that persists
 #                                    between campaigns (seeded from fuzz/corpus/).
-#   scripts/fuzz.sh corpus           regenerate the committed seed corpus (fuzz/gen_corpus.c).
+#   scripts/fuzz.sh corpus           regenerate the committed seed corpus and the hand-made
+#                                    regressions (sem-*) of the parser's semantics (fuzz/gen_corpus.c).
 #   scripts/fuzz.sh build            just build.
 #
 # Exits non-zero if any harness crashes or reports a violated invariant; the
@@ -20,9 +23,9 @@ cd "$(dirname "$0")/.."
 mode="${1:-smoke}"
 bdir=build/fuzz
 main_harnesses=(fuzz_parser_raw fuzz_parser_crcfix)
-# Variants built from the same sources (fuzz/CMakeLists.txt): _alt with XF_CRC_TABLE_256=1,
-# XF_PACKET_MAX_LEN=84, XF_NO_LIBC=1; _nomemo with XF_PARSER_MEMO=0.
-variants=(_alt _nomemo)
+# Variants built from the same sources (fuzz/variants.cmake): _alt with XF_CRC_TABLE_256=1,
+# XF_PACKET_MAX_LEN=84, XF_NO_LIBC=1; _slots1 with XF_PARSER_SLOTS=1.
+variants=(_alt _slots1)
 
 base_of() { # harness name without its variant suffix
   local h="$1" v
@@ -91,9 +94,9 @@ case "$mode" in
     ;;
   corpus)
     build
-    for h in "${main_harnesses[@]}"; do mkdir -p "fuzz/corpus/$h"; done
-    "$bdir/fuzz/xfgcu_gen_corpus" fuzz/corpus
-    du -sh fuzz/corpus
+    for h in "${main_harnesses[@]}"; do mkdir -p "fuzz/corpus/$h" "fuzz/regressions/$h"; done
+    "$bdir/fuzz/xfgcu_gen_corpus" fuzz/corpus fuzz/regressions
+    du -sh fuzz/corpus fuzz/regressions
     ;;
   smoke)
     secs="${FUZZ_SMOKE_SECONDS:-30}"

@@ -20,7 +20,7 @@ for cc in gcc clang; do
       n=$((n + 1))
     done
     # the codec's implementation translation unit with each option
-    for defs in "-DXF_CRC_TABLE_256=1" "-DXF_PACKET_MAX_LEN=84" "-DXF_NO_LIBC=1" "-DXF_PARSER_MEMO=0"; do
+    for defs in "-DXF_CRC_TABLE_256=1" "-DXF_PACKET_MAX_LEN=84" "-DXF_NO_LIBC=1" "-DXF_PARSER_SLOTS=1"; do
       "$cc" -std="$std" "${warn[@]}" $defs -Iinclude -c src/xf_codec.c -o "$out/codec.$cc.$std.o"
       n=$((n + 1))
     done
@@ -120,7 +120,7 @@ for cxx in g++ clang++; do
   for o in -O0 -O2 -O3 -Os; do combos+=("$cxx$o|$cxx C++ $o|$cxx|$cxxwarn $o"); done
 done
 # the options that change the codec's code paths, where the optimiser looks hardest
-for opt in XF_PARSER_MEMO=0 XF_CRC_TABLE_256=1 XF_PACKET_MAX_LEN=84 XF_NO_LIBC=1; do
+for opt in XF_PARSER_SLOTS=1 XF_CRC_TABLE_256=1 XF_PACKET_MAX_LEN=84 XF_NO_LIBC=1; do
   for cc in gcc clang; do
     for o in -O2 -O3; do combos+=("$cc$o-${opt%%=*}-${opt#*=}|$cc C99 $o -D$opt|$cc|$cwarn $o -D$opt"); done
   done

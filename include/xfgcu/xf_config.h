@@ -14,12 +14,11 @@
  *   84..255 (default 255, the protocol's own limit). An MCU that only
  *   receives GCU replies (72 or 73 bytes) may set 84 to save RAM; longer
  *   packets are then counted as length errors.
- * - ::XF_PARSER_MEMO: 1 (default) the parser keeps, for each byte in its
- *   ring, the (normalised) CRC before it, so checking any candidate costs
- *   O(1) and adversarial input O(1) per byte; 0 keeps no memo (a 16-bit value
- *   less per ring slot, and less flash): candidates after a failure are
- *   checked by re-reading them, still exact, at O(packet length) each on
- *   adversarial input.
+ * - ::XF_PARSER_SLOTS: candidates the parser checks at once, 1..16
+ *   (default 4): more resist more crafted false headers, at 4 bytes of RAM
+ *   and one CRC step per byte each (docs/codec.md).
+ * - ::XF_ASSERT: define to check the codec's internal invariants (the tests
+ *   and fuzzers do); by default it compiles to nothing.
  * - `XF_IMPLEMENTATION`: defined in exactly one translation unit (the
  *   library's src/xf_codec.c, or one file of yours), before the first
  *   include, where the codec's functions and tables are defined (::XF_API).
@@ -84,19 +83,32 @@
 #error "XF_NO_LIBC must be 0 or 1"
 #endif
 
-/**
- * Parser memo: 1 (default) the parser keeps, for each byte it holds, the
- * normalised CRC of the stream before it (xf_crc.h), so any candidate frame
- * is checked in constant time and adversarial input costs O(1) per byte.
- * 0: no memo, less RAM per parser and less flash; a candidate is checked by
- * reading its bytes again, still exact, at O(packet length) per candidate on
- * adversarial input. Must be 0 or 1.
- */
-#ifndef XF_PARSER_MEMO
-#define XF_PARSER_MEMO 1
+#ifdef XF_PARSER_MEMO
+#error                                                                                                                 \
+    "XF_PARSER_MEMO is gone: the parser has no memo any more; XF_PARSER_SLOTS sets how many candidates it checks at once"
 #endif
-#if (XF_PARSER_MEMO != 0) && (XF_PARSER_MEMO != 1)
-#error "XF_PARSER_MEMO must be 0 or 1"
+/**
+ * Candidates (a header pair and a valid length) the parser checks at once,
+ * each with its own running CRC, 1..16 (default 4). A candidate that arrives
+ * while this many that end sooner are pending is given up unchecked
+ * (xf_parser_stats::given_up). Each slot costs 4 bytes of RAM and one CRC
+ * step per byte while it is in use (docs/codec.md).
+ */
+#ifndef XF_PARSER_SLOTS
+#define XF_PARSER_SLOTS 4
+#endif
+#if XF_PARSER_SLOTS < 1 || XF_PARSER_SLOTS > 16
+#error "XF_PARSER_SLOTS must be in [1, 16]"
+#endif
+
+/**
+ * Check an internal invariant of the codec. By default nothing is compiled;
+ * the tests and fuzzers define it (before any xfgcu header, in the
+ * translation unit that defines `XF_IMPLEMENTATION`) to stop on a broken
+ * invariant. @p cond has no side effects.
+ */
+#ifndef XF_ASSERT
+#define XF_ASSERT(cond) ((void)0)
 #endif
 
 #ifndef XF_CLIENT_QUEUE
@@ -113,7 +125,7 @@
 
 /*
  * Options that change the size or layout of a public struct (xf_parser,
- * xf_sim, xf_client): XF_PACKET_MAX_LEN, XF_PARSER_MEMO, XF_CLIENT_QUEUE and
+ * xf_sim, xf_client): XF_PACKET_MAX_LEN, XF_PARSER_SLOTS, XF_CLIENT_QUEUE and
  * XF_CLIENT_RESULTS. A compiled library and the code that calls it must agree
  * on them, or a struct allocated by one is overrun by the other. So that they
  * cannot silently disagree:
@@ -133,15 +145,15 @@
 
 /** The layout options packed in one word, as init compares them. */
 #define XF_OPTIONS_WORD                                                                                                \
-    ((unsigned long)XF_PACKET_MAX_LEN | ((unsigned long)XF_PARSER_MEMO << 8) | ((unsigned long)XF_CLIENT_QUEUE << 9) | \
-     ((unsigned long)XF_CLIENT_RESULTS << 16))
+    ((unsigned long)XF_PACKET_MAX_LEN | ((unsigned long)XF_PARSER_SLOTS << 8) |                                        \
+     ((unsigned long)XF_CLIENT_QUEUE << 13) | ((unsigned long)XF_CLIENT_RESULTS << 20))
 
 /* Internal: the symbol of one option's value, and the list of the options. */
 #define XF__OPTION_SYM(name, value)  XF__OPTION_SYM_(name, value)
 #define XF__OPTION_SYM_(name, value) xf_option_XF_##name##_is_##value
 #define XF__OPTIONS(X)                                                                                                 \
     X(PACKET_MAX_LEN, XF_PACKET_MAX_LEN)                                                                               \
-    X(PARSER_MEMO, XF_PARSER_MEMO)                                                                                     \
+    X(PARSER_SLOTS, XF_PARSER_SLOTS)                                                                                   \
     X(CLIENT_QUEUE, XF_CLIENT_QUEUE)                                                                                   \
     X(CLIENT_RESULTS, XF_CLIENT_RESULTS)
 #define XF__OPTION_DECLARE(name, value) extern const unsigned char XF__OPTION_SYM(name, value);
@@ -185,8 +197,10 @@
  * even where the compiler's size heuristics would not (GCC, clang). */
 #if defined(__GNUC__)
 #define XF__HOT_INLINE __attribute__((always_inline)) static inline
+#define XF__COLD       __attribute__((noinline)) static
 #else
 #define XF__HOT_INLINE static inline
+#define XF__COLD       static
 #endif
 
 /**

@@ -35,24 +35,6 @@ XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len);
  */
 XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
 
-/*
- * Internal, for the streaming parser's memo (xf_parser.h). With P(i) the
- * CRC of a stream's first i bytes (init 0, no final XOR), the parser keeps
- * the *normalised prefix*
- *     N(i) = P(i) * x^(-8 (i mod 16)) mod G
- * (x is invertible mod G). A frame of bytes [i, j), its CRC included, is
- * intact exactly when its CRC residue is 0, i.e. P(j) = P(i) * x^(8(j-i)),
- * i.e.
- *     N(j) == N(i) * x^(128 k),   k = ((i mod 16) + (j - i)) / 16
- * one product by one of 17 constants (xf__crc_x128k), where the plain
- * prefix would need a product by x^(8(j-i)) for each length. Advancing N by
- * one byte b at stream position i (s = (i + 1) mod 16) is
- *     N = N * x^128 (only when s = 0),  N ^= b * x^(16 - 8s)
- * two lookups in xf__crc_norm_table (one lookup in a larger table with
- * XF_CRC_TABLE_256; sizes in docs/performance.md), and no chain through the CRC.
- * scripts/gen_crc_tables.py generates every table (xf_crc_tables.h); tests/test_crc.c checks them.
- */
-
 #if XF_EMIT_DEFINITIONS
 
 #include "xf_crc_tables.h" /* generated: scripts/gen_crc_tables.py */
@@ -88,10 +70,11 @@ static inline uint32_t xf__crc_step(uint32_t c, const uint32_t *table, uint8_t b
 }
 #endif
 
-XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
+/* len bytes into a CRC kept in the top half of c (the parser keeps each
+ * candidate's CRC in this form). */
+static inline uint32_t xf__crc_run(uint32_t c, const uint8_t *data, size_t len)
 {
     const uint32_t *table = xf__crc_table();
-    uint32_t c = (uint32_t)crc << 16;
     size_t i = 0;
     for (; i + 4u <= len; i += 4u) {
         c = xf__crc_step(c, table, data[i]);
@@ -102,50 +85,15 @@ XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
     for (; i < len; i++) {
         c = xf__crc_step(c, table, data[i]);
     }
-    return (uint16_t)(c >> 16);
+    return c;
+}
+
+XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
+{
+    return (uint16_t)(xf__crc_run((uint32_t)crc << 16, data, len) >> 16);
 }
 
 XF_API uint16_t xf_crc16(const uint8_t *data, size_t len) { return xf_crc16_update(0, data, len); }
-
-/* a * b mod G for a fixed b, given mul[i][n] = (n * x^(4i)) * b mod G:
- * the product is linear in a, so it is the XOR of one multiple per nibble
- * of a, four independent lookups (no chain of reductions). */
-static inline uint16_t xf__crc_mul_tab(uint16_t a, const uint16_t mul[4][16])
-{
-    return (uint16_t)(mul[0][a & 0x0Fu] ^ mul[1][(a >> 4) & 0x0Fu] ^ mul[2][(a >> 8) & 0x0Fu] ^ mul[3][a >> 12]);
-}
-
-/* a * x^(128k) mod G, k in 0..16. Only the parser's memo calls this; with
- * --gc-sections an image that never does keeps none of its table. */
-XF__HOT_INLINE uint16_t xf__crc_x128k(uint16_t a, unsigned k) { return xf__crc_mul_tab(a, xf__crc_x128k_table[k]); }
-
-#if XF_CRC_TABLE_256
-/* norm + 256 s: b * x^(16 - 8s) mod G for every byte b (the builds that
- * chose the big CRC table for speed get one lookup a byte here too). */
-static inline const uint16_t *xf__crc_norm_table(void) { return &xf__crc_norm256[0][0]; }
-
-/* Entries per row s of xf__crc_norm_table(). */
-#define XF__NORM_ROW ((size_t)256u)
-
-/* N after byte b, where s is the position after b mod 16 and t is
- * xf__crc_norm_table() + XF__NORM_ROW * s. */
-XF__HOT_INLINE uint16_t xf__crc_norm_step(uint16_t n, const uint16_t *t, uint8_t b) { return (uint16_t)(n ^ t[b]); }
-#else
-/* norm + 32 s: b * x^(16 - 8s) mod G for the low nibble of b (16 entries),
- * then for the high nibble (16 more). */
-static inline const uint16_t *xf__crc_norm_table(void) { return &xf__crc_norm16[0][0]; }
-
-/* Entries per row s of xf__crc_norm_table(). */
-#define XF__NORM_ROW ((size_t)32u)
-
-/* N after byte b, where s is the position after b mod 16 and t is
- * xf__crc_norm_table() + XF__NORM_ROW * s. */
-XF__HOT_INLINE uint16_t xf__crc_norm_step(uint16_t n, const uint16_t *t, uint8_t b)
-{
-    unsigned x = b; /* a full-width index: no re-zero-extension after the shift */
-    return (uint16_t)(n ^ t[x & 0x0Fu] ^ (t + 16)[x >> 4]);
-}
-#endif
 
 #endif /* XF_EMIT_DEFINITIONS */
 

@@ -106,7 +106,7 @@ XF_API const char *xf_strerror(int err)
     case XF_ERR_RANGE: return "value out of range";
     case XF_ERR_UNSUPPORTED: return "not supported";
     case XF_ERR_CONFIG:
-        return "library built with other options (XF_PACKET_MAX_LEN, XF_PARSER_MEMO, XF_CLIENT_QUEUE, "
+        return "library built with other options (XF_PACKET_MAX_LEN, XF_PARSER_SLOTS, XF_CLIENT_QUEUE, "
                "XF_CLIENT_RESULTS)";
     case XF_ERR_HEADER: return "bad header";
     case XF_ERR_LENGTH: return "bad length";

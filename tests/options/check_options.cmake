@@ -21,7 +21,7 @@ if(NOT rc EQUAL 0)
 endif()
 message(STATUS "same options: ${out}")
 
-foreach(case XF_PACKET_MAX_LEN=84 XF_PARSER_MEMO=0 XF_CLIENT_QUEUE=2 XF_CLIENT_RESULTS=3)
+foreach(case XF_PACKET_MAX_LEN=84 XF_PARSER_SLOTS=2 XF_CLIENT_QUEUE=2 XF_CLIENT_RESULTS=3)
   string(REPLACE "=" "_is_" symbol "xf_option_${case}")
   build(rc msg -D${case})
   if(rc EQUAL 0)

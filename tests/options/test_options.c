@@ -52,8 +52,9 @@ static void test_library_reports_its_options(void **state)
     assert_int_equal(xf_client_size(), sizeof(xf_client));
     assert_int_equal(xf_options_word(), XF_OPTIONS_WORD);
     assert_int_equal(XF_OPTIONS_WORD & 0xFFu, XF_PACKET_MAX_LEN);
-    assert_int_equal((XF_OPTIONS_WORD >> 9) & 0x7Fu, XF_CLIENT_QUEUE);
-    assert_int_equal((XF_OPTIONS_WORD >> 16) & 0x7Fu, XF_CLIENT_RESULTS);
+    assert_int_equal((XF_OPTIONS_WORD >> 8) & 0x1Fu, XF_PARSER_SLOTS);
+    assert_int_equal((XF_OPTIONS_WORD >> 13) & 0x7Fu, XF_CLIENT_QUEUE);
+    assert_int_equal((XF_OPTIONS_WORD >> 20) & 0x7Fu, XF_CLIENT_RESULTS);
 }
 
 static void test_client_refuses_other_options(void **state)
@@ -74,7 +75,7 @@ static void test_client_refuses_other_options(void **state)
     assert_int_equal(xf_client_init(&g.c, &hal, NULL), XF_OK);
     assert_true(untouched(g.guard, sizeof(g.guard)));
     assert_string_equal(xf_strerror(XF_ERR_CONFIG),
-                        "library built with other options (XF_PACKET_MAX_LEN, XF_PARSER_MEMO, XF_CLIENT_QUEUE, "
+                        "library built with other options (XF_PACKET_MAX_LEN, XF_PARSER_SLOTS, XF_CLIENT_QUEUE, "
                         "XF_CLIENT_RESULTS)");
 }
 
