@@ -71,15 +71,17 @@ typedef struct xf_frame {
 
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
-    uint8_t ring[XF_PARSER_RING];  /**< private: bytes held, each at ring index = stream position mod XF_PARSER_RING */
-    xf_parser_stats stats;         /**< counters, readable at any time; the application may zero them */
-    uint16_t crc[XF_PARSER_SLOTS]; /**< private: each candidate's CRC so far, soonest end first */
-    uint8_t at[XF_PARSER_SLOTS];   /**< private: ring index of each candidate's first byte */
-    uint8_t fin[XF_PARSER_SLOTS];  /**< private: ring index just past each candidate's last byte */
-    uint8_t head;                  /**< private: ring index of the first byte held */
-    uint8_t end;                   /**< private: ring index just past the last byte held */
-    uint8_t n;                     /**< private: candidates pending */
-    uint8_t h0;                    /**< private: first header byte of the direction parsed */
+    uint8_t ring[XF_PARSER_RING];   /**< private: bytes held, each at ring index = stream position mod XF_PARSER_RING */
+    xf_parser_stats stats;          /**< counters, readable at any time; the application may zero them */
+    uint16_t want[XF_PARSER_SLOTS]; /**< private: per candidate, what `crc` must be at its end, before the shift
+                                       (docs/codec.md) */
+    uint16_t crc;                   /**< private: CRC of the bytes taken since the parser last had no candidate */
+    uint8_t at[XF_PARSER_SLOTS];    /**< private: ring index of each candidate's first byte, soonest end first */
+    uint8_t next;                   /**< private: ring index just past the first candidate's last byte */
+    uint8_t head;                   /**< private: ring index of the first byte held */
+    uint8_t end;                    /**< private: ring index just past the last byte held */
+    uint8_t n;                      /**< private: candidates pending */
+    uint8_t h0;                     /**< private: first header byte of the direction parsed */
 } xf_parser;
 
 /**
@@ -249,8 +251,14 @@ static inline uint8_t xf__h1(const xf_parser *p)
 
 static inline unsigned xf__held(const xf_parser *p) { return (unsigned)XF__IX(p->end - p->head); }
 
+/* Length and end (ring index just past its last byte) of candidate k: its
+ * header is held as long as it is pending. */
+static inline unsigned xf__len(const xf_parser *p, unsigned k) { return p->ring[XF__IX(p->at[k] + 2u)]; }
+
+static inline unsigned xf__fin(const xf_parser *p, unsigned k) { return XF__IX(p->at[k] + xf__len(p, k)); }
+
 /* Bytes still to come before candidate k ends. */
-static inline unsigned xf__left(const xf_parser *p, unsigned k) { return (unsigned)XF__IX(p->fin[k] - p->end); }
+static inline unsigned xf__left(const xf_parser *p, unsigned k) { return (unsigned)XF__IX(xf__fin(p, k) - p->end); }
 
 static inline int xf__len_ok(unsigned len) { return len >= XF__MIN && len <= XF_PACKET_MAX_LEN; }
 
@@ -308,25 +316,29 @@ static void xf__settle(xf_parser *p)
     p->head = XF__IX(p->end - keep);
 }
 
-/* Drop candidate k, keeping the others in order. */
-static void xf__remove(xf_parser *p, unsigned k)
+/* Drop candidate 0 (its end has come), keeping the others in order. */
+static void xf__shift(xf_parser *p)
 {
-    for (p->n--; k < p->n; k++) {
-        p->crc[k] = p->crc[k + 1u];
+    unsigned k;
+    for (p->n--, k = 0; k < p->n; k++) {
+        p->want[k] = p->want[k + 1u];
         p->at[k] = p->at[k + 1u];
-        p->fin[k] = p->fin[k + 1u];
     }
+    p->next = (p->n > 0u) ? (uint8_t)xf__fin(p, 0) : p->end;
 }
 
-/* A header pair and a valid length end with the byte just taken: a new
- * candidate, placed in order of end (after those that end with it: they
- * started earlier). When every slot is taken, the candidate that ends last
- * is given up. 1 when a pending one was. */
+/* A header pair and a valid length end with the byte just taken (and are
+ * in `crc` already): a new candidate, placed in order of end (after those
+ * that end with it: they started earlier). Its `want` is what the CRC of
+ * everything before it contributes at its end: the frame is intact exactly
+ * when the running CRC then equals want * x^(8 (len - 4)) (xf__crc_zeros);
+ * with no other candidate the running CRC restarts at the candidate, and
+ * want is 0. When every slot is taken, the candidate that ends last is
+ * given up. 1 when a pending one was, and held the first byte held. */
 static int xf__admit(xf_parser *p, unsigned len)
 {
     unsigned left = len - 4u, k = p->n;
-    uint32_t pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
-    uint8_t tail[2];
+    uint32_t c = (uint32_t)((p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC) << 16;
     int out = (k == XF_PARSER_SLOTS);
     if (out) {
         p->stats.given_up++;
@@ -334,19 +346,21 @@ static int xf__admit(xf_parser *p, unsigned len)
             return 0;
         }
         k--; /* the candidate that ends last makes room */
+        out = (p->at[k] == p->head);
+    }
+    c = xf__crc_step(xf__crc_step(c, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
+    if (p->n == 0u) {
+        p->crc = (uint16_t)(c >> 16); /* the CRC of the stream before the candidate counts as 0 */
     }
     p->n = (uint8_t)(k + 1u);
     for (; k > 0u && xf__left(p, k - 1u) > left; k--) {
-        p->crc[k] = p->crc[k - 1u];
+        p->want[k] = p->want[k - 1u];
         p->at[k] = p->at[k - 1u];
-        p->fin[k] = p->fin[k - 1u];
     }
-    tail[0] = (uint8_t)len;
-    tail[1] = 0;
-    p->crc[k] = (uint16_t)(xf__crc_run(pair << 16, tail, 2u) >> 16);
+    p->want[k] = (uint16_t)(p->crc ^ (c >> 16));
     p->at[k] = XF__IX(p->end - 4u);
-    p->fin[k] = XF__IX(p->end - 4u + len);
-    XF_ASSERT(p->n <= XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left));
+    p->next = (uint8_t)xf__fin(p, 0);
+    XF_ASSERT(p->n <= XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left) && xf__len(p, k) == len);
     return out;
 }
 
@@ -386,8 +400,9 @@ static void xf__rotate(uint8_t *r, unsigned i0)
 /* Candidate 0 has ended intact: return it; everything else held overlaps it. */
 static void xf__emit(xf_parser *p, xf_frame *frame)
 {
-    unsigned i0 = p->at[0], len = (unsigned)XF__IX(p->fin[0] - p->at[0]);
-    XF_ASSERT(p->crc[0] == 0u && xf__len_ok(len) && p->ring[i0] == p->h0);
+    unsigned i0 = p->at[0], len = xf__len(p, 0);
+    XF_ASSERT(xf__len_ok(len) && p->ring[i0] == p->h0 &&
+              xf_crc16(p->ring + i0, (i0 + len <= XF_PARSER_RING) ? len : 0u) == 0u);
     p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->head);
     p->stats.frames++;
     if (i0 + len > XF_PARSER_RING) {
@@ -401,18 +416,26 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     p->end = 0;
 }
 
-/* Candidates end with the byte just taken (fin[0] == end): check them in
- * order of start; the first intact one is returned (1), failed ones go and
- * head moves past them (0). */
-static int xf__ends(xf_parser *p, xf_frame *frame)
+/* Is candidate 0, which ends with the byte just taken, intact? */
+static inline int xf__intact(const xf_parser *p)
 {
-    while (p->n > 0u && p->fin[0] == p->end) {
-        if (p->crc[0] == 0u) {
+    uint16_t w = p->want[0];
+    return p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u));
+}
+
+/* Candidates end with the byte just taken (next == end): check them in
+ * order of start; the first intact one is returned (1), failed ones go (0;
+ * *moved when one of them held the first byte held). */
+static int xf__ends(xf_parser *p, xf_frame *frame, int *moved)
+{
+    while (p->n > 0u && xf__fin(p, 0) == p->end) {
+        if (xf__intact(p)) {
             xf__emit(p, frame);
             return 1;
         }
         p->stats.crc_errors++;
-        xf__remove(p, 0);
+        *moved |= (p->at[0] == p->head);
+        xf__shift(p);
     }
     return 0;
 }
@@ -422,19 +445,15 @@ static int xf__ends(xf_parser *p, xf_frame *frame)
  * before it is h0. 1 when it completes a frame. */
 static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame, unsigned h0_back)
 {
-    const uint32_t *t = xf__crc_table();
-    unsigned k, n = p->n, e = XF__IX(p->end + 1u);
+    unsigned e = XF__IX(p->end + 1u);
     int moved = 0;
     p->ring[p->end] = b;
     p->end = (uint8_t)e;
-    for (k = 0; k < n; k++) {
-        p->crc[k] = (uint16_t)(xf__crc_step((uint32_t)p->crc[k] << 16, t, b) >> 16);
-    }
-    if (n != 0u && p->fin[0] == e) {
-        if (xf__ends(p, frame)) {
+    if (p->n != 0u) {
+        p->crc = (uint16_t)(xf__crc_step((uint32_t)p->crc << 16, xf__crc_table(), b) >> 16);
+        if (p->next == e && xf__ends(p, frame, &moved)) {
             return 1;
         }
-        moved = 1;
     }
     if (h0_back != 0u) {
         moved |= xf__open(p);
@@ -449,7 +468,7 @@ static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame, unsigned h0
  * the last byte: copy it, CRC it once per candidate. */
 static void xf__run(xf_parser *p, const uint8_t *d, size_t len)
 {
-    unsigned e = p->end, k;
+    unsigned e = p->end;
     size_t first = XF_PARSER_RING - e;
     if (len <= first) {
         XF_MEMCPY(p->ring + e, d, len);
@@ -458,9 +477,7 @@ static void xf__run(xf_parser *p, const uint8_t *d, size_t len)
         XF_MEMCPY(p->ring, d + first, len - first);
     }
     p->end = XF__IX(e + len);
-    for (k = 0; k < p->n; k++) {
-        p->crc[k] = (uint16_t)(xf__crc_run((uint32_t)p->crc[k] << 16, d, len) >> 16);
-    }
+    p->crc = (uint16_t)(xf__crc_run((uint32_t)p->crc << 16, d, len) >> 16);
 }
 
 /* Bytes of d before the first h0, at most len. */
@@ -528,32 +545,36 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
     return 0;
 }
 
-/* Which of the last four bytes held are h0: bit j for the byte j + 1 back. */
+/* Which of the last four bytes held are h0: bit j for the byte j + 1 back
+ * (bytes before the first held may set bits: xf__open checks what it is
+ * told). */
 static inline unsigned xf__near(const xf_parser *p)
 {
-    unsigned j, m = 0, held = xf__held(p);
-    for (j = 0; j < 4u && j < held; j++) {
-        m |= (unsigned)(p->ring[XF__IX(p->end - 1u - j)] == p->h0) << j;
-    }
-    return m;
+    const uint8_t *r = p->ring;
+    unsigned e = p->end, h0 = p->h0;
+    return (unsigned)(r[XF__IX(e - 1u)] == h0) | ((unsigned)(r[XF__IX(e - 2u)] == h0) << 1) |
+           ((unsigned)(r[XF__IX(e - 3u)] == h0) << 2) | ((unsigned)(r[XF__IX(e - 4u)] == h0) << 3);
 }
 
 /* Inside candidates, no h0 among the last three bytes nor at d[*i]: the
  * bytes up to the next h0 or the soonest end go in one run. 1 with a frame. */
 static int xf__bulk(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_frame *frame)
 {
-    size_t m = len - *i;
-    m = (m < xf__left(p, 0)) ? m : xf__left(p, 0);
+    size_t m = len - *i, left = (unsigned)XF__IX(p->next - p->end);
+    int moved = 0;
+    m = (m < left) ? m : left;
     m = xf__to_h0(p, d + *i, m);
     xf__run(p, d + *i, m);
     *i += m;
-    if (p->fin[0] != p->end) {
+    if (p->next != p->end) {
         return 0;
     }
-    if (xf__ends(p, frame)) {
+    if (xf__ends(p, frame, &moved)) {
         return 1;
     }
-    xf__settle(p);
+    if (moved || p->n == 0u) {
+        xf__settle(p);
+    }
     return 0;
 }
 
@@ -607,25 +628,42 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
 }
 
+/* One byte, outside the fast case of xf_parser_feed(). */
+XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
+{
+    int found = 0;
+    p->stats.bytes_in++;
+    if (p->end == p->head && b != p->h0) {
+        p->stats.bytes_skipped++; /* nothing held, and no header begins here */
+    } else {
+        found = xf__byte(p, b, frame, p->ring[XF__IX(p->end - 3u)] == p->h0);
+    }
+    if (consumed != NULL) {
+        *consumed = 1;
+    }
+    return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
+}
+
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
-    if (len == 1u && p != NULL && frame != NULL && data != NULL && p->n == 1u) {
-        unsigned e = p->end, b = data[0];
-        if (p->fin[0] != XF__IX(e + 1u) && p->ring[XF__IX(e - 3u)] != p->h0) {
-            /* A UART's byte inside one candidate, not its last, completing
-             * no header pair: store it, advance the CRC. */
-            p->ring[e] = (uint8_t)b;
-            p->end = XF__IX(e + 1u);
-            p->crc[0] = (uint16_t)(xf__crc_step((uint32_t)p->crc[0] << 16, xf__crc_table(), (uint8_t)b) >> 16);
-            p->stats.bytes_in++;
-            if (consumed != NULL) {
-                *consumed = 1;
-            }
-            return XF_PARSE_MORE;
-        }
-    }
     if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
         return XF_PARSE_ERR_ARG;
+    }
+    if (len == 1u) {
+        unsigned e = p->end, b = data[0];
+        if (p->n == 0u || p->next == XF__IX(e + 1u) || p->ring[XF__IX(e - 3u)] == p->h0) {
+            return xf__feed1(p, (uint8_t)b, consumed, frame);
+        }
+        /* A UART's byte inside candidates, ending none and completing no
+         * header pair: store it, advance the CRC. */
+        p->ring[e] = (uint8_t)b;
+        p->end = XF__IX(e + 1u);
+        p->crc = (uint16_t)(xf__crc_step((uint32_t)p->crc << 16, xf__crc_table(), (uint8_t)b) >> 16);
+        p->stats.bytes_in++;
+        if (consumed != NULL) {
+            *consumed = 1;
+        }
+        return XF_PARSE_MORE;
     }
     return xf__feed(p, data, len, consumed, frame);
 }
