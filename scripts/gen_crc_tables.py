@@ -6,9 +6,9 @@ CRC-16/XMODEM: G = x^16 + x^12 + x^5 + 1, MSB first, init 0, no final XOR.
   xf__crc_table16    the vendor's nibble table: the CRC of each 4-bit value, times 2^16
                      (the CRC loop keeps the CRC in the top half of a 32-bit word)
   xf__crc_table256   the same for each byte value (XF_CRC_TABLE_256)
-  xf__crc_zero16[j]  j = 0..3: the CRC state a after 16 * 2^j zero bytes is a * x^(128 * 2^j)
-                     mod G, linear in a: [j][i][v] = (v * x^(4i)) * x^(128 * 2^j) mod G, so that
-                     one product is four lookups (the parser's check of a later candidate)
+  xf__crc_zero16     the CRC state a after 16 zero bytes is a * x^128 mod G, linear in a:
+                     [i][v] = (v * x^(4i)) * x^128 mod G, so that the product is four lookups
+                     (the parser's check of a candidate that began behind another)
 
 Usage: scripts/gen_crc_tables.py            write the header
        scripts/gen_crc_tables.py --check    exit 1 if the header is not what this script makes
@@ -83,14 +83,11 @@ def generate():
           "static const uint32_t xf__crc_table16[16] = {"]
     o += lines([crc_of(n, 4) << 16 for n in range(16)], "0x%08Xu", 8, "    ")
     o += ["};", "#endif", "",
-          "/* [j][i][v]: (v * x^(4i)) * x^(128 * 2^j) mod G: 16 * 2^j zero bytes, as a product. */",
-          "static const uint16_t xf__crc_zero16[4][4][16] = {"]
-    for j in range(4):
-        c = xpow(128 << j)
-        o.append("    { /* x^(128 * %d) */" % (1 << j))
-        for i in range(4):
-            o.append("        {" + ", ".join("0x%04X" % mulmod(v << (4 * i), c) for v in range(16)) + "},")
-        o.append("    },")
+          "/* [i][v]: (v * x^(4i)) * x^128 mod G: 16 zero bytes, as a product. */",
+          "static const uint16_t xf__crc_zero16[4][16] = {"]
+    c = xpow(128)
+    for i in range(4):
+        o.append("    {" + ", ".join("0x%04X" % mulmod(v << (4 * i), c) for v in range(16)) + "},")
     o += ["};"]
     o += ["/* clang-format on */", "", "#endif /* XF_CRC_TABLES_H */", ""]
     return "\n".join(o)

@@ -95,22 +95,17 @@ XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
 
 XF_API uint16_t xf_crc16(const uint8_t *data, size_t len) { return xf_crc16_update(0, data, len); }
 
-/* The CRC state a after n zero bytes (n < 256), that is a * x^(8n) mod G:
- * a product by x^(128 * 2^j) (four lookups) for each bit j of n / 16, then
- * the last n mod 16 bytes one by one. The parser checks a candidate that
- * began while others were pending with it (docs/codec.md). */
+/* The CRC state a after n zero bytes, a * x^(8n) mod G: a product by x^128
+ * (four lookups) per 16 bytes, the rest one by one. The parser checks a
+ * candidate that began behind another with it (docs/codec.md). */
 static uint16_t xf__crc_zeros(uint16_t a, unsigned n)
 {
-    unsigned j;
     uint32_t c;
-    for (j = 0; j < 4u; j++) {
-        if ((n >> (4u + j)) & 1u) {
-            const uint16_t(*m)[16] = xf__crc_zero16[j];
-            a = (uint16_t)(m[0][a & 15u] ^ m[1][(a >> 4) & 15u] ^ m[2][(a >> 8) & 15u] ^ m[3][a >> 12]);
-        }
+    for (; n >= 16u; n -= 16u) {
+        const uint16_t(*m)[16] = xf__crc_zero16;
+        a = (uint16_t)(m[0][a & 15u] ^ m[1][(a >> 4) & 15u] ^ m[2][(a >> 8) & 15u] ^ m[3][a >> 12]);
     }
-    c = (uint32_t)a << 16;
-    for (j = 0; j < (n & 15u); j++) {
+    for (c = (uint32_t)a << 16; n > 0u; n--) {
         c = xf__crc_step(c, xf__crc_table(), 0);
     }
     return (uint16_t)(c >> 16);
