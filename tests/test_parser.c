@@ -505,6 +505,129 @@ static void test_consumed_stops_at_frame(void **state)
     assert_int_equal(p.stats.bytes_skipped, 0);
 }
 
+/* consumed stops right after a frame's last byte however the frame got
+ * there: whole in the chunk (no copy), behind a false candidate (from the
+ * parser's ring), and split across chunks; the rest of the chunk is left
+ * to the caller, untouched. */
+static void test_consumed_after_false_candidate(void **state)
+{
+    static const uint8_t false_cand[4] = {0x8A, 0x5E, 0x50, 0x00}; /* claims 80 bytes: ends after the frame */
+    test_rng r;
+    uint8_t buf[600];
+    size_t a, used = 0, i;
+    xf_parser p;
+    xf_frame f;
+    (void)state;
+    rng_seed(&r, 43);
+    memcpy(buf, false_cand, 4);
+    a = make_frame(&r, XF_DIR_GCU, 1, buf + 4);
+    memset(buf + 4 + a, 0x8A, 100); /* header bytes after it, which must not be taken */
+    assert_err(xf_parser_init(&p, XF_DIR_GCU), XF_OK);
+    assert_int_equal(xf_parser_feed(&p, buf, 4 + a + 100, &used, &f), XF_PARSE_FRAME);
+    assert_int_equal(used, 4 + a);
+    assert_int_equal(f.len, a);
+    assert_bytes_equal(f.data, buf + 4, a);
+    assert_true(f.data >= p.ring && f.data < p.ring + XF_PARSER_RING); /* it came from the ring */
+    assert_int_equal(xf_parser_pending(&p), 0);
+    assert_int_equal(p.stats.bytes_skipped, 4);
+    assert_int_equal(p.stats.bytes_in, 4 + a);
+    /* the same in chunks of 5: the chunk with the last byte stops there */
+    assert_err(xf_parser_init(&p, XF_DIR_GCU), XF_OK);
+    for (i = 0; i < 4 + a; i += 5) {
+        size_t n = 5, end = 4 + a;
+        xf_parse_status st = xf_parser_feed(&p, buf + i, n, &used, &f);
+        if (i + n >= end) {
+            assert_int_equal(st, XF_PARSE_FRAME);
+            assert_int_equal(used, end - i);
+            break;
+        }
+        assert_int_equal(st, XF_PARSE_MORE);
+        assert_int_equal(used, n);
+    }
+}
+
+/* flush: the input ended. It returns no frame (each intact frame was
+ * returned by the feed that completed it), drops what is held, counts it
+ * as skipped, and the parser then starts afresh: a candidate cut by the
+ * end of one input never joins bytes of the next. */
+static void test_flush(void **state)
+{
+    test_rng r;
+    uint8_t f1[256], f2[256];
+    size_t l1, l2, used;
+    xf_parser p;
+    xf_frame f;
+    (void)state;
+    rng_seed(&r, 7);
+    l1 = make_frame(&r, XF_DIR_GCU, 0, f1);
+    l2 = make_frame(&r, XF_DIR_GCU, 2, f2);
+    assert_err(xf_parser_init(&p, XF_DIR_GCU), XF_OK);
+    assert_int_equal(xf_parser_flush(&p, &f), XF_PARSE_MORE); /* nothing held: nothing to do */
+    assert_int_equal(xf_parser_feed(&p, f1, 50, &used, &f), XF_PARSE_MORE);
+    assert_int_equal(xf_parser_pending(&p), 50);
+    f.data = NULL;
+    assert_int_equal(xf_parser_flush(&p, &f), XF_PARSE_MORE);
+    assert_null(f.data); /* never written */
+    assert_int_equal(xf_parser_pending(&p), 0);
+    assert_int_equal(p.stats.bytes_skipped, 50);
+    assert_int_equal(p.stats.bytes_in, 50);
+    /* the rest of f1 after the flush is no frame; f2 then is */
+    assert_int_equal(xf_parser_feed(&p, f1 + 50, l1 - 50u, &used, &f), XF_PARSE_MORE);
+    assert_int_equal(xf_parser_feed(&p, f2, l2, &used, &f), XF_PARSE_FRAME);
+    assert_bytes_equal(f.data, f2, l2);
+    assert_int_equal(p.stats.frames, 1);
+    /* a partial header at the end is dropped too */
+    assert_int_equal(xf_parser_feed(&p, f1, 3, &used, &f), XF_PARSE_MORE);
+    assert_int_equal(xf_parser_pending(&p), 3);
+    assert_int_equal(xf_parser_flush(&p, &f), XF_PARSE_MORE);
+    assert_int_equal(xf_parser_pending(&p), 0);
+    assert_int_equal(p.stats.bytes_in, p.stats.bytes_skipped + l2);
+    assert_int_equal(xf_parser_flush(NULL, &f), XF_PARSE_ERR_ARG);
+    assert_int_equal(xf_parser_flush(&p, NULL), XF_PARSE_ERR_ARG);
+}
+
+/* The constants the parser starts a candidate's CRC from. */
+static void test_pair_crc(void **state)
+{
+    static const uint8_t gcu[2] = {XF_GCU_HEADER0, XF_GCU_HEADER1}, host[2] = {XF_HOST_HEADER0, XF_HOST_HEADER1};
+    (void)state;
+    assert_int_equal(xf_crc16(gcu, 2), XF__GCU_PAIR_CRC);
+    assert_int_equal(xf_crc16(host, 2), XF__HOST_PAIR_CRC);
+}
+
+/* xf_frame_gcu/xf_frame_host trust the parser's CRC but check the header
+ * and that the length field agrees with the frame's length. */
+static void test_frame_length_field(void **state)
+{
+    test_rng r;
+    uint8_t buf[256];
+    xf_gcu_packet g;
+    xf_host_packet hp;
+    xf_frame f;
+    size_t n;
+    (void)state;
+    rng_seed(&r, 8);
+    n = make_frame(&r, XF_DIR_GCU, 1, buf);
+    f.data = buf;
+    f.len = n;
+    assert_err(xf_frame_gcu(&f, &g), XF_OK);
+    assert_err(xf_frame_host(&f, &hp), XF_ERR_HEADER);
+    f.len = n - 1u; /* disagrees with the length field */
+    assert_err(xf_frame_gcu(&f, &g), XF_ERR_LENGTH);
+    f.len = n;
+    buf[2] ^= 1u; /* the field disagrees with the length */
+    assert_err(xf_frame_gcu(&f, &g), XF_ERR_LENGTH);
+    buf[2] ^= 1u;
+    buf[3] = 1; /* a length above 255 */
+    assert_err(xf_frame_gcu(&f, &g), XF_ERR_LENGTH);
+    buf[3] = 0;
+    f.len = 71;
+    assert_err(xf_frame_gcu(&f, &g), XF_ERR_LENGTH);
+    f.data = NULL;
+    assert_err(xf_frame_gcu(&f, &g), XF_ERR_ARG);
+    assert_err(xf_frame_gcu(NULL, &g), XF_ERR_ARG);
+}
+
 /* Host parser ignores GCU frames and the reverse. */
 static void test_direction_filter(void **state)
 {
@@ -917,6 +1040,10 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_appendix_one_byte_at_a_time),
         cmocka_unit_test(test_consumed_stops_at_frame),
+        cmocka_unit_test(test_consumed_after_false_candidate),
+        cmocka_unit_test(test_flush),
+        cmocka_unit_test(test_pair_crc),
+        cmocka_unit_test(test_frame_length_field),
         cmocka_unit_test(test_direction_filter),
         cmocka_unit_test(test_bad_lengths_do_not_delay),
         cmocka_unit_test(test_nested_false_candidates),

@@ -20,6 +20,10 @@
 #include <string.h>
 #include <cmocka.h>
 
+/* The codec's internal invariants are checked in every codec test (each is
+ * the codec's implementation unit): a broken one fails the test. */
+#define XF_ASSERT(cond) mock_assert((int)(cond), #cond, __FILE__, __LINE__)
+
 #include "xf_test_assert.h"
 
 #include "xfgcu/xfgcu.h"
