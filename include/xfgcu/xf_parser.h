@@ -320,7 +320,7 @@ static void xf__settle(xf_parser *p)
 static void xf__shift(xf_parser *p)
 {
     unsigned k;
-    for (p->n--, k = 0; k < p->n; k++) {
+    for (p->n--, k = 0; k < p->n && k + 1u < XF_PARSER_SLOTS; k++) { /* (the bound is for the compiler) */
         p->want[k] = p->want[k + 1u];
         p->at[k] = p->at[k + 1u];
     }
@@ -353,7 +353,7 @@ static int xf__admit(xf_parser *p, unsigned len)
         p->crc = (uint16_t)(c >> 16); /* the CRC of the stream before the candidate counts as 0 */
     }
     p->n = (uint8_t)(k + 1u);
-    for (; k > 0u && xf__left(p, k - 1u) > left; k--) {
+    for (; k > 0u && k < XF_PARSER_SLOTS && xf__left(p, k - 1u) > left; k--) {
         p->want[k] = p->want[k - 1u];
         p->at[k] = p->at[k - 1u];
     }
@@ -539,7 +539,11 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
         return 1;
     }
     XF_ASSERT(p->end == 0u && p->n == 0u); /* empty: at ring index 0 */
-    xf__run(p, d, 4u);
+    p->ring[0] = d[0]; /* the running CRC starts at this candidate (xf__admit) */
+    p->ring[1] = d[1];
+    p->ring[2] = d[2];
+    p->ring[3] = 0;
+    p->end = 4;
     (void)xf__admit(p, d[2]);
     *i += 4u;
     return 0;
