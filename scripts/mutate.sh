@@ -143,8 +143,8 @@ M = [
      "    (void)left;\n"),
     ("no_rotate",
      "a frame that wraps round the ring's end is returned unrotated",
-     "    if (i0 + len > XF_PARSER_RING) {\n        xf__rotate(p->ring, i0);\n",
-     "    if (0) {\n        xf__rotate(p->ring, i0);\n"),
+     "if (i0 + len > XF_PARSER_RING) {",
+     "if (0) { /* MUTANT: never made contiguous */"),
     ("emit_skip_uncounted",
      "bytes before a returned frame's start are not counted in bytes_skipped at emit",
      "    p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->head);\n",
@@ -218,7 +218,7 @@ if command -v ninja >/dev/null; then
   gen=(-G Ninja)
 fi
 echo "== configuring one Debug build in ${bld#"$root"/}"
-cmake -S "$src" -B "$bld" "${gen[@]}" -DCMAKE_BUILD_TYPE=Debug \
+cmake -S "$src" -B "$bld" ${gen[@]+"${gen[@]}"} -DCMAKE_BUILD_TYPE=Debug \
   -DXFGCU_BUILD_TESTS=ON -DXFGCU_BUILD_BENCH=ON -DXFGCU_BUILD_TOOLS=OFF -DXFGCU_BUILD_EXAMPLES=OFF \
   -DXFGCU_BUILD_DOCS=OFF -DXFGCU_BUILD_POSIX=OFF -DXFGCU_BUILD_FUZZ=OFF -DXFGCU_INSTALL=OFF \
   >"$logs/configure.log" 2>&1 || { echo "mutate.sh: configure failed: $logs/configure.log" >&2; exit 1; }

@@ -55,5 +55,7 @@ scripts/bench.sh
 build/gcc/bench/xfgcu_client_bench latency 500
 build/gcc/bench/xfgcu_client_bench cpu 3
 
+stage "mutation: named mutants of the parser, each killed by its tests (scripts/mutate.sh)"; scripts/mutate.sh
+
 stage "done"
 echo "all stages passed"

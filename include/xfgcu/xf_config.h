@@ -15,8 +15,8 @@
  *   receives GCU replies (72 or 73 bytes) may set 84 to save RAM; longer
  *   packets are then counted as length errors.
  * - ::XF_PARSER_SLOTS: candidates the parser checks at once, 1..16
- *   (default 4): more resist more crafted false headers, at 4 bytes of RAM
- *   and one CRC step per byte each (docs/codec.md).
+ *   (default 4): more resist more crafted false headers, at 3 bytes of RAM
+ *   each (docs/codec.md).
  * - ::XF_ASSERT: define to check the codec's internal invariants (the tests
  *   and fuzzers do); by default it compiles to nothing.
  * - `XF_IMPLEMENTATION`: defined in exactly one translation unit (the
@@ -89,10 +89,9 @@
 #endif
 /**
  * Candidates (a header pair and a valid length) the parser checks at once,
- * each with its own running CRC, 1..16 (default 4). A candidate that arrives
- * while this many that end sooner are pending is given up unchecked
- * (xf_parser_stats::given_up). Each slot costs 4 bytes of RAM and one CRC
- * step per byte while it is in use (docs/codec.md).
+ * 1..16 (default 4). A candidate that arrives while this many that end
+ * sooner are pending is given up unchecked (xf_parser_stats::given_up).
+ * Each slot costs 3 bytes of RAM (docs/codec.md).
  */
 #ifndef XF_PARSER_SLOTS
 #define XF_PARSER_SLOTS 4

@@ -9,14 +9,13 @@
  * ::XF_PACKET_MAX_LEN]) and CRC are right.
  *
  * How. A *candidate* is a header pair followed by a valid length. The parser
- * tracks up to ::XF_PARSER_SLOTS candidates at once, each with its own
- * running CRC, in the order in which they end, and checks each when its last
- * byte arrives: the first intact one is returned at once, and the others,
- * which overlap it, are dropped. So a frame behind noise, a truncated packet,
- * a false header or a bogus length comes out on time, and no byte costs more
- * than one CRC step per slot (a hard bound: docs/codec.md). A candidate that
- * arrives while every slot holds one that ends sooner is given up unchecked
- * (stats.given_up); docs/codec.md states the exact rule.
+ * tracks up to ::XF_PARSER_SLOTS candidates at once, in the order in which
+ * they end, with one running CRC for all of them, and checks each when its
+ * last byte arrives: the first intact one is returned at once, and the
+ * others, which overlap it, are dropped. So a frame behind noise, a
+ * truncated packet, a false header or a bogus length comes out on time. A
+ * candidate that arrives while every slot holds one that ends sooner is
+ * given up unchecked (stats.given_up); docs/codec.md states the exact rule.
  *
  * Counters only ever increase (the application may zero them):
  *
@@ -381,19 +380,15 @@ static int xf__open(xf_parser *p)
     return xf__admit(p, len);
 }
 
-/* Rotate the ring left by i0 (three reversals): a frame that wraps round
+/* Reverse r[i, j). Three reversals rotate the ring: a frame that wraps round
  * its end becomes contiguous at index 0. Rare: only after noise has left
  * the ring misaligned, at most once per XF_PARSER_RING bytes taken. */
-static void xf__rotate(uint8_t *r, unsigned i0)
+static void xf__reverse(uint8_t *r, unsigned i, unsigned j)
 {
-    unsigned a[3] = {0u, i0, 0u}, b[3] = {i0, XF_PARSER_RING, XF_PARSER_RING}, k;
-    for (k = 0; k < 3u; k++) {
-        unsigned i = a[k], j = b[k];
-        for (; i + 1u < j; i++) {
-            uint8_t t = r[i];
-            r[i] = r[--j];
-            r[j] = t;
-        }
+    for (; i + 1u < j; i++) {
+        uint8_t t = r[i];
+        r[i] = r[--j];
+        r[j] = t;
     }
 }
 
@@ -406,7 +401,9 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->head);
     p->stats.frames++;
     if (i0 + len > XF_PARSER_RING) {
-        xf__rotate(p->ring, i0);
+        xf__reverse(p->ring, 0, i0);
+        xf__reverse(p->ring, i0, XF_PARSER_RING);
+        xf__reverse(p->ring, 0, XF_PARSER_RING);
         i0 = 0;
     }
     frame->data = p->ring + i0;
