@@ -234,6 +234,40 @@ XF_API void xf_packet_put_header(uint8_t *buf, xf_direction dir, size_t len, uin
  */
 XF_API void xf_packet_put_tail(uint8_t *buf, size_t len, uint8_t order, const uint8_t *params, uint8_t params_len);
 
+/**
+ * A frame the streaming parser (xf_parser.h) returned. The bytes are in the parser or, when a
+ * whole packet arrived in one chunk, in the caller's own data; either way
+ * they stay valid until the next call on the parser, as long as the caller
+ * does not change its data meanwhile.
+ */
+typedef struct xf_frame {
+    const uint8_t *data; /**< the frame's first byte (its header) */
+    size_t len;          /**< the frame's length in bytes, CRC included (its length field) */
+} xf_frame;
+
+/**
+ * Decode a GCU frame the parser returned, without computing its CRC again
+ * (the parser has checked header, length and CRC; only the header and
+ * length are looked at again, cheaply). For bytes from anywhere else use
+ * xf_gcu_unpack(). @p pkt is written only on success.
+ * @param frame  the frame, as xf_parser_feed() gave it
+ * @param pkt    receives the decoded packet
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p frame, frame data or @p pkt),
+ *   ::XF_ERR_HEADER (a frame of the other direction), ::XF_ERR_LENGTH (the
+ *   length is out of range or disagrees with the length field)
+ */
+XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt);
+/**
+ * Decode a host frame the parser returned (GCU side: the simulator), as
+ * xf_frame_gcu() does for GCU frames. For bytes from anywhere else use
+ * xf_host_unpack(). @p pkt is written only on success.
+ * @param frame  the frame, as xf_parser_feed() gave it
+ * @param pkt    receives the decoded packet
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p frame, frame data or @p pkt),
+ *   ::XF_ERR_HEADER (a frame of the other direction), ::XF_ERR_LENGTH
+ */
+XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt);
+
 #if XF_EMIT_DEFINITIONS
 
 XF_API void xf_packet_put_header(uint8_t *buf, xf_direction dir, size_t len, uint8_t version)
@@ -530,6 +564,37 @@ XF_API xf_err xf_gcu_unpack(const uint8_t *buf, size_t len, xf_gcu_packet *pkt)
     err = xf_packet_check(buf, len, XF_DIR_GCU);
     if (err == XF_OK) {
         xf__gcu_fields(buf, len, pkt);
+    }
+    return err;
+}
+
+/* Header and length of a frame the parser returned, before decoding it. */
+static inline xf_err xf__frame_ok(const xf_frame *f, uint8_t h0, uint8_t h1)
+{
+    if (f == NULL || f->data == NULL) {
+        return XF_ERR_ARG;
+    }
+    if (f->len < XF_PACKET_MIN_LEN || f->len > XF_PACKET_MAX_LEN ||
+        ((size_t)f->data[2] | ((size_t)f->data[3] << 8)) != f->len) {
+        return XF_ERR_LENGTH;
+    }
+    return (f->data[0] == h0 && f->data[1] == h1) ? XF_OK : XF_ERR_HEADER;
+}
+
+XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt)
+{
+    xf_err err = (pkt == NULL) ? XF_ERR_ARG : xf__frame_ok(frame, XF_GCU_HEADER0, XF_GCU_HEADER1);
+    if (err == XF_OK) {
+        xf__gcu_fields(frame->data, frame->len, pkt);
+    }
+    return err;
+}
+
+XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt)
+{
+    xf_err err = (pkt == NULL) ? XF_ERR_ARG : xf__frame_ok(frame, XF_HOST_HEADER0, XF_HOST_HEADER1);
+    if (err == XF_OK) {
+        xf__host_fields(frame->data, frame->len, pkt);
     }
     return err;
 }

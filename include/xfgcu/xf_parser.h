@@ -57,17 +57,6 @@ typedef struct xf_parser_stats {
     uint32_t given_up;      /**< candidates given up unchecked: every slot held one that ends sooner */
 } xf_parser_stats;
 
-/**
- * A frame returned by the parser. The bytes are in the parser or, when a
- * whole packet arrived in one chunk, in the caller's own data; either way
- * they stay valid until the next call on the parser, as long as the caller
- * does not change its data meanwhile.
- */
-typedef struct xf_frame {
-    const uint8_t *data; /**< the frame's first byte (its header) */
-    size_t len;          /**< the frame's length in bytes, CRC included (its length field) */
-} xf_frame;
-
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
     uint8_t ring[XF_PARSER_RING];   /**< private: bytes held, each at ring index = stream position mod XF_PARSER_RING */
@@ -81,6 +70,7 @@ typedef struct xf_parser {
     uint8_t end;                    /**< private: ring index just past the last byte held */
     uint8_t n;                      /**< private: candidates pending */
     uint8_t h0;                     /**< private: first header byte of the direction parsed */
+    uint8_t h1;                     /**< private: its second header byte */
 } xf_parser;
 
 /**
@@ -178,29 +168,6 @@ typedef enum xf_parse_status {
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame);
 
 /**
- * Decode a GCU frame the parser returned, without computing its CRC again
- * (the parser has checked header, length and CRC; only the header and
- * length are looked at again, cheaply). For bytes from anywhere else use
- * xf_gcu_unpack(). @p pkt is written only on success.
- * @param frame  the frame, as xf_parser_feed() gave it
- * @param pkt    receives the decoded packet
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p frame, frame data or @p pkt),
- *   ::XF_ERR_HEADER (a frame of the other direction), ::XF_ERR_LENGTH (the
- *   length is out of range or disagrees with the length field)
- */
-XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt);
-/**
- * Decode a host frame the parser returned (GCU side: the simulator), as
- * xf_frame_gcu() does for GCU frames. For bytes from anywhere else use
- * xf_host_unpack(). @p pkt is written only on success.
- * @param frame  the frame, as xf_parser_feed() gave it
- * @param pkt    receives the decoded packet
- * @return ::XF_OK, ::XF_ERR_ARG (NULL @p frame, frame data or @p pkt),
- *   ::XF_ERR_HEADER (a frame of the other direction), ::XF_ERR_LENGTH
- */
-XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt);
-
-/**
  * The input has ended (end of file, link closed): drop the candidates that
  * can no longer complete; the bytes held count as skipped and the next byte
  * fed starts afresh. Every intact frame has already been returned by the
@@ -240,12 +207,8 @@ XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned lo
     }
     XF_MEMSET(p, 0, sizeof(*p));
     p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
+    p->h1 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
     return XF_OK;
-}
-
-static inline uint8_t xf__h1(const xf_parser *p)
-{
-    return (p->h0 == XF_GCU_HEADER0) ? XF_GCU_HEADER1 : XF_HOST_HEADER1;
 }
 
 static inline unsigned xf__held(const xf_parser *p) { return (unsigned)XF__IX(p->end - p->head); }
@@ -284,7 +247,7 @@ XF_API void xf_parser_reset(xf_parser *p)
 static inline unsigned xf__prefix(const xf_parser *p)
 {
     const uint8_t *r = p->ring;
-    unsigned held = xf__held(p), e = p->end, h0 = p->h0, h1 = xf__h1(p);
+    unsigned held = xf__held(p), e = p->end, h0 = p->h0, h1 = p->h1;
     if (held >= 3u && r[XF__IX(e - 3u)] == h0 && r[XF__IX(e - 2u)] == h1) {
         return 3u;
     }
@@ -369,7 +332,7 @@ static int xf__open(xf_parser *p)
 {
     const uint8_t *r = p->ring;
     unsigned s = XF__IX(p->end - 4u), len;
-    if (xf__held(p) < 4u || r[XF__IX(s + 1u)] != xf__h1(p)) {
+    if (xf__held(p) < 4u || r[XF__IX(s + 1u)] != p->h1) {
         return 0;
     }
     len = (unsigned)r[XF__IX(s + 2u)] | ((unsigned)r[XF__IX(s + 3u)] << 8);
@@ -413,20 +376,14 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     p->end = 0;
 }
 
-/* Is candidate 0, which ends with the byte just taken, intact? */
-static inline int xf__intact(const xf_parser *p)
-{
-    uint16_t w = p->want[0];
-    return p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u));
-}
-
 /* Candidates end with the byte just taken (next == end): check them in
  * order of start; the first intact one is returned (1), failed ones go (0;
  * *moved when one of them held the first byte held). */
 static int xf__ends(xf_parser *p, xf_frame *frame, int *moved)
 {
     while (p->n > 0u && xf__fin(p, 0) == p->end) {
-        if (xf__intact(p)) {
+        uint16_t w = p->want[0];
+        if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u))) {
             xf__emit(p, frame);
             return 1;
         }
@@ -495,15 +452,14 @@ static inline size_t xf__to_h0(const xf_parser *p, const uint8_t *d, size_t len)
 /* Nothing held, d starts with h0 and holds a whole intact packet with no
  * other header pair inside (so no candidate inside could end first or count
  * as an error): return it from d itself, with no copy. */
-static int xf__direct(xf_parser *p, const uint8_t *d, size_t avail, xf_frame *frame)
+static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
 {
     size_t len = d[2], i = 1;
     while ((i += xf__to_h0(p, d + i, len - 1u - i)) < len - 1u) {
-        if (d[++i] == xf__h1(p)) {
+        if (d[++i] == p->h1) {
             return 0; /* a header pair inside: the general path applies every rule */
         }
     }
-    (void)avail;
     if ((xf__crc_run(0, d, len) >> 16) != 0u) {
         return 0;
     }
@@ -525,21 +481,18 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
     if (len == 0u) {
         return 0;
     }
-    if (len < 4u || d[1] != xf__h1(p) || d[3] != 0u || !xf__len_ok(d[2])) {
+    if (len < 4u || d[1] != p->h1 || d[3] != 0u || !xf__len_ok(d[2])) {
         /* not a whole header in view: the h0 goes in byte by byte */
         (void)xf__byte(p, d[0], frame, 0u); /* the parser is empty: no candidate can end here */
         *i += 1u;
         return 0;
     }
-    if (d[2] <= len && xf__direct(p, d, len, frame)) {
+    if (d[2] <= len && xf__direct(p, d, frame)) {
         *i += d[2];
         return 1;
     }
     XF_ASSERT(p->end == 0u && p->n == 0u); /* empty: at ring index 0 */
-    p->ring[0] = d[0]; /* the running CRC starts at this candidate (xf__admit) */
-    p->ring[1] = d[1];
-    p->ring[2] = d[2];
-    p->ring[3] = 0;
+    XF_MEMCPY(p->ring, d, 4u);             /* the running CRC starts at this candidate (xf__admit) */
     p->end = 4;
     (void)xf__admit(p, d[2]);
     *i += 4u;
@@ -589,8 +542,7 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf
     while (i < len) {
         uint8_t b;
         if (p->end == p->head) {
-            int r = xf__idle(p, d, len, &i, frame);
-            if (r) {
+            if (xf__idle(p, d, len, &i, frame)) {
                 *used = i;
                 return 1;
             }
@@ -616,31 +568,22 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf
     return 0;
 }
 
-/* Everything but the one-byte case: out of line, so that the one-byte case
- * in xf_parser_feed() needs no stack frame. */
+/* Everything but the one-byte fast case, out of line so that the fast case
+ * in xf_parser_feed() needs no stack frame. One byte skips the main loop. */
 XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
-    size_t used = 0;
-    int found = xf__take(p, data, len, &used, frame);
+    size_t used = len;
+    int found = 0;
+    if (len != 1u) {
+        found = xf__take(p, data, len, &used, frame);
+    } else if (p->end == p->head && data[0] != p->h0) {
+        p->stats.bytes_skipped++; /* nothing held, and no header begins here */
+    } else {
+        found = xf__byte(p, data[0], frame, p->ring[XF__IX(p->end - 3u)] == p->h0);
+    }
     p->stats.bytes_in += (uint32_t)used;
     if (consumed != NULL) {
         *consumed = used;
-    }
-    return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
-}
-
-/* One byte, outside the fast case of xf_parser_feed(). */
-XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
-{
-    int found = 0;
-    p->stats.bytes_in++;
-    if (p->end == p->head && b != p->h0) {
-        p->stats.bytes_skipped++; /* nothing held, and no header begins here */
-    } else {
-        found = xf__byte(p, b, frame, p->ring[XF__IX(p->end - 3u)] == p->h0);
-    }
-    if (consumed != NULL) {
-        *consumed = 1;
     }
     return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
 }
@@ -653,7 +596,7 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
     if (len == 1u) {
         unsigned e = p->end, b = data[0];
         if (p->n == 0u || p->next == XF__IX(e + 1u) || p->ring[XF__IX(e - 3u)] == p->h0) {
-            return xf__feed1(p, (uint8_t)b, consumed, frame);
+            return xf__feed(p, data, 1u, consumed, frame);
         }
         /* A UART's byte inside candidates, ending none and completing no
          * header pair: store it, advance the CRC. */
@@ -676,36 +619,6 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame)
     }
     xf__clear(p);
     return XF_PARSE_MORE;
-}
-
-/* Header and length of a frame the parser returned, before decoding it. */
-static inline xf_err xf__frame_ok(const xf_frame *f, uint8_t h0, uint8_t h1)
-{
-    if (f == NULL || f->data == NULL) {
-        return XF_ERR_ARG;
-    }
-    if (f->len < XF__MIN || f->len > XF_PACKET_MAX_LEN || ((size_t)f->data[2] | ((size_t)f->data[3] << 8)) != f->len) {
-        return XF_ERR_LENGTH;
-    }
-    return (f->data[0] == h0 && f->data[1] == h1) ? XF_OK : XF_ERR_HEADER;
-}
-
-XF_API xf_err xf_frame_gcu(const xf_frame *frame, xf_gcu_packet *pkt)
-{
-    xf_err err = (pkt == NULL) ? XF_ERR_ARG : xf__frame_ok(frame, XF_GCU_HEADER0, XF_GCU_HEADER1);
-    if (err == XF_OK) {
-        xf__gcu_fields(frame->data, frame->len, pkt);
-    }
-    return err;
-}
-
-XF_API xf_err xf_frame_host(const xf_frame *frame, xf_host_packet *pkt)
-{
-    xf_err err = (pkt == NULL) ? XF_ERR_ARG : xf__frame_ok(frame, XF_HOST_HEADER0, XF_HOST_HEADER1);
-    if (err == XF_OK) {
-        xf__host_fields(frame->data, frame->len, pkt);
-    }
-    return err;
 }
 
 #endif /* XF_EMIT_DEFINITIONS */

@@ -19,8 +19,12 @@
  */
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #define XF_IMPLEMENTATION
+/* The codec's internal checks on, as a user debugging it would: they must
+ * compile warning-free in every configuration, and hold. */
+#define XF_ASSERT(cond) ((cond) ? (void)0 : abort())
 #include "xfgcu/xfgcu.h"
 
 /* XF_STATIC_ASSERT, at file scope as documented */
@@ -823,7 +827,11 @@ static size_t stream_frame_bytes;
 
 /* A 4096-byte GCU stream: noise with no header byte, false headers (a header
  * pair and the length 72, then garbage), and packets of 72, 73 and
- * XF_PACKET_MAX_LEN bytes carrying their sequence number in rel_angle_x. */
+ * XF_PACKET_MAX_LEN bytes carrying their sequence number in rel_angle_x.
+ * A false header right before a packet ends inside it, so with one slot
+ * (XF_PARSER_SLOTS=1) it would crowd the packet out, as documented: that
+ * build gets no false headers. */
+#define FALSE_HEADERS (XF_PARSER_SLOTS >= 2)
 static void build_stream(void)
 {
     uint32_t rng = 0x12345678u;
@@ -839,7 +847,7 @@ static void build_stream(void)
         rng = rng * 1103515245u + 12345u;
         noise = (size_t)((rng >> 16) % 23u);
         plen = (seq % 5 == 4) ? (uint8_t)XF_PARAMS_MAX : (uint8_t)(seq % 2);
-        if (seq % 4 == 1) {
+        if (FALSE_HEADERS && seq % 4 == 1) {
             noise += 4u; /* room for a false header */
         }
         if (pos + noise + XF_PACKET_MIN_LEN + plen > sizeof(stream) || stream_frames == MAX_FRAMES) {
@@ -852,7 +860,7 @@ static void build_stream(void)
                 stream[pos + k] = 0x8Bu;
             }
         }
-        if (seq % 4 == 1) {
+        if (FALSE_HEADERS && seq % 4 == 1) {
             stream[pos + noise - 4u] = XF_GCU_HEADER0;
             stream[pos + noise - 3u] = XF_GCU_HEADER1;
             stream[pos + noise - 2u] = 72u;
@@ -972,7 +980,7 @@ static void run_stream(void (*feed)(xf_parser *, unsigned *, size_t *), const ch
     CHECK(bytes == stream_frame_bytes);
     CHECK(p.stats.bytes_in == STREAM_LEN);
     CHECK(p.stats.bytes_in == bytes + p.stats.bytes_skipped + xf_parser_pending(&p));
-    CHECK(p.stats.crc_errors > 0u); /* the false headers */
+    CHECK(p.stats.crc_errors > 0u || !FALSE_HEADERS); /* the false headers */
     CHECK(xf_parser_flush(&p, &f) == XF_PARSE_MORE);
 }
 
