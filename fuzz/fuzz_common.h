@@ -274,16 +274,15 @@ static inline void fz_same_counts(const fz_run *R, const pr_counts *c)
 {
     const xf_parser_stats *st = &R->p.stats;
     if (st->bytes_in != c->bytes_in || st->frames != c->frames || st->crc_errors != c->crc_errors ||
-        st->length_errors != c->length_errors || st->bytes_skipped != c->bytes_skipped ||
-        st->given_up != c->given_up || xf_parser_pending(&R->p) != c->pending) {
+        st->length_errors != c->length_errors || st->bytes_skipped != c->bytes_skipped || st->given_up != c->given_up ||
+        xf_parser_pending(&R->p) != c->pending) {
         fprintf(stderr,
                 "after %zu bytes: parser in %u frames %u crc %u length %u skipped %u given_up %u pending %zu\n"
                 "                 model  in %u frames %u crc %u length %u skipped %u given_up %u pending %u\n",
                 R->fed, (unsigned)st->bytes_in, (unsigned)st->frames, (unsigned)st->crc_errors,
                 (unsigned)st->length_errors, (unsigned)st->bytes_skipped, (unsigned)st->given_up,
                 xf_parser_pending(&R->p), (unsigned)c->bytes_in, (unsigned)c->frames, (unsigned)c->crc_errors,
-                (unsigned)c->length_errors, (unsigned)c->bytes_skipped, (unsigned)c->given_up,
-                (unsigned)c->pending);
+                (unsigned)c->length_errors, (unsigned)c->bytes_skipped, (unsigned)c->given_up, (unsigned)c->pending);
         FZ_CHECK(0 && "the parser's counters are the reference model's");
     }
 }
@@ -295,8 +294,7 @@ static inline void fz_after_call(fz_run *R, const pr_counts *want)
     R->prev = R->p.stats;
     FZ_CHECK(R->p.stats.bytes_in == (uint32_t)R->fed);
     FZ_CHECK(R->p.stats.frames == (uint32_t)R->nframes);
-    FZ_CHECK(R->p.stats.bytes_in ==
-             (uint32_t)(R->frame_bytes + R->p.stats.bytes_skipped + xf_parser_pending(&R->p)));
+    FZ_CHECK(R->p.stats.bytes_in == (uint32_t)(R->frame_bytes + R->p.stats.bytes_skipped + xf_parser_pending(&R->p)));
     FZ_CHECK(xf_parser_pending(&R->p) < XF_PACKET_MAX_LEN);
     fz_same_counts(R, want);
 }
@@ -335,8 +333,8 @@ static inline void fz_take_frame(fz_run *R, const xf_frame *f, const uint8_t *d,
  * frames found are stored in out (capacity n / 72 + 1); *res gets what the
  * run found.
  */
-static inline void fz_feed_checked(const uint8_t *s, size_t n, xf_direction dir, fz_plan *plan, int end,
-                                   pr_frame *out, fz_result *res)
+static inline void fz_feed_checked(const uint8_t *s, size_t n, xf_direction dir, fz_plan *plan, int end, pr_frame *out,
+                                   fz_result *res)
 {
     fz_run R;
     pr_model model;

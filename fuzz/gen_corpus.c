@@ -343,8 +343,9 @@ static void gen_regressions(const char *dir)
     int i, plan;
     static const char *plans[2] = {"00 01", "02 03 40 FF"}; /* byte by byte; 3, 64, then the rest */
     static const char *names[2][6] = {
-        {"sem-frame-inside-long-claim-bytewise", "sem-false-later-than-frame-bytewise", "sem-false-inside-frame-bytewise",
-         "sem-false-sooner-loses-frame-bytewise", "sem-truncated-then-real-bytewise", "sem-same-end-bytewise"},
+        {"sem-frame-inside-long-claim-bytewise", "sem-false-later-than-frame-bytewise",
+         "sem-false-inside-frame-bytewise", "sem-false-sooner-loses-frame-bytewise", "sem-truncated-then-real-bytewise",
+         "sem-same-end-bytewise"},
         {"sem-frame-inside-long-claim-chunks", "sem-false-later-than-frame-chunks", "sem-false-inside-frame-chunks",
          "sem-false-sooner-loses-frame-chunks", "sem-truncated-then-real-chunks", "sem-same-end-chunks"},
     };
