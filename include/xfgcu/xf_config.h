@@ -46,7 +46,7 @@
 /**
  * CRC-16 table of xf_crc.h: 0 (default) the vendor's 16-entry nibble table
  * (two lookups per byte); 1 a 256-entry byte table (one lookup per byte, more
- * flash). The parser's memo tables grow with it. Must be 0 or 1.
+ * flash). Must be 0 or 1.
  */
 #ifndef XF_CRC_TABLE_256
 #define XF_CRC_TABLE_256 0
