@@ -612,6 +612,7 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
     return xf__feed(p, data, len, consumed, frame);
 }
 
+/* cppcheck-suppress constParameter ; frame stays writable: a parser that holds frames back may fill it */
 XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame)
 {
     if (p == NULL || frame == NULL) {
