@@ -499,15 +499,24 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
     return 0;
 }
 
-/* Which of the last four bytes held are h0: bit j for the byte j + 1 back
- * (bytes before the first held may set bits: xf__open checks what it is
- * told). */
-static inline unsigned xf__near(const xf_parser *p)
+/* Inside candidates, the bytes that end none and complete no header pair:
+ * stored and CRC'd with the state in locals. Returns how many. */
+static size_t xf__quiet(xf_parser *p, const uint8_t *d, size_t len)
 {
-    const uint8_t *r = p->ring;
-    unsigned e = p->end, h0 = p->h0;
-    return (unsigned)(r[XF__IX(e - 1u)] == h0) | ((unsigned)(r[XF__IX(e - 2u)] == h0) << 1) |
-           ((unsigned)(r[XF__IX(e - 3u)] == h0) << 2) | ((unsigned)(r[XF__IX(e - 4u)] == h0) << 3);
+    const uint32_t *t = xf__crc_table();
+    uint8_t *r = p->ring;
+    unsigned e = p->end, next = p->next, h0 = p->h0;
+    uint32_t c = (uint32_t)p->crc << 16;
+    size_t i = 0;
+    for (; i < len && XF__IX(e + 1u) != next && r[XF__IX(e - 3u)] != h0; i++) {
+        uint8_t b = d[i];
+        r[e] = b;
+        c = xf__crc_step(c, t, b);
+        e = XF__IX(e + 1u);
+    }
+    p->end = (uint8_t)e;
+    p->crc = (uint16_t)(c >> 16);
+    return i;
 }
 
 /* Inside candidates, no h0 among the last three bytes nor at d[*i]: the
@@ -533,36 +542,39 @@ static int xf__bulk(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
 }
 
 /* The main loop: take bytes until a frame is complete (1) or all are taken
- * (0). Runs between header bytes go in bulk, the bytes near one singly;
- * `near` follows which of the last four bytes are h0. */
+ * (0). Runs between header bytes go in bulk, the bytes near one singly. */
 static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf_frame *frame)
 {
+    const uint8_t h0 = p->h0;
     size_t i = 0;
-    unsigned near = xf__near(p);
     while (i < len) {
-        uint8_t b;
         if (p->end == p->head) {
             if (xf__idle(p, d, len, &i, frame)) {
                 *used = i;
                 return 1;
             }
-            near = xf__near(p);
             continue;
         }
-        if (p->n > 0u && (near & 7u) == 0u && d[i] != p->h0) {
-            if (xf__bulk(p, d, len, &i, frame)) {
-                *used = i;
-                return 1;
+        if (p->n > 0u) {
+            const uint8_t *r = p->ring;
+            unsigned e = p->end;
+            if (d[i] != h0 && r[XF__IX(e - 1u)] != h0 && r[XF__IX(e - 2u)] != h0 && r[XF__IX(e - 3u)] != h0) {
+                if (xf__bulk(p, d, len, &i, frame)) {
+                    *used = i;
+                    return 1;
+                }
+                continue;
             }
-            near = 0;
-            continue;
+            i += xf__quiet(p, d + i, len - i);
+            if (i == len) {
+                break;
+            }
         }
-        b = d[i++];
-        near = ((near << 1) | (unsigned)(b == p->h0)) & 15u;
-        if (xf__byte(p, b, frame, near & 8u)) {
-            *used = i;
+        if (xf__byte(p, d[i], frame, p->ring[XF__IX(p->end - 3u)] == h0)) {
+            *used = i + 1u;
             return 1;
         }
+        i++;
     }
     *used = len;
     return 0;
