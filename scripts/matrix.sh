@@ -92,7 +92,7 @@ codec_headers() { # the headers xfgcu.h includes, and the ones they include, onc
 mapfile -t hdrs < <(codec_headers)
 mapfile -t api < <(
   {
-    grep -hoE '^(XF_API|static inline|XF__HOT_INLINE)[^(]*[^A-Za-z0-9_]xf_[a-z0-9_]+\(' "${hdrs[@]}" |
+    grep -hoE '^(XF_API|static inline)[^(]*[^A-Za-z0-9_]xf_[a-z0-9_]+\(' "${hdrs[@]}" |
       grep -oE 'xf_[a-z0-9_]+\($'
     grep -hoE '^#[[:space:]]*define[[:space:]]+XF_[A-Za-z0-9_]+\(' "${hdrs[@]}" | grep -oE 'XF_[A-Za-z0-9_]+\($'
   } | tr -d '(' | grep -v -e '^xf__' -e '^XF__' | sort -u

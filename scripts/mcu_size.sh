@@ -52,6 +52,17 @@ print(f"  flash {flash} bytes; RAM {ram} bytes (the one xf_client, parser includ
 PY
 
 echo
+# The parser's share: its functions and tables as linked (xf_parser_*, the xf__ helpers of
+# xf_parser.h and xf_crc.h, the CRC tables), from the symbol sizes.
+parser=0
+while read -r _ size _ name; do
+  case "$name" in
+    xf_parser_* | xf__feed* | xf__take* | xf__byte* | xf__idle* | xf__bulk* | xf__quiet* | xf__admit* | \
+      xf__open* | xf__ends* | xf__settle* | xf__shift* | xf__reverse* | xf__emit* | xf__direct* | \
+      xf__run* | xf__prefix* | xf__to_h0* | xf__crc_*) parser=$((parser + 16#$size)) ;;
+  esac
+done < <(arm-none-eabi-nm -S "$elf" | awk 'NF == 4')
+echo "of which the parser (its functions and the CRC's, and their tables): $parser bytes"
 echo "riscv preset: codec and client for rv32imac, freestanding, no C library"
 cmake --preset riscv >/dev/null
 cmake --build --preset riscv >/dev/null

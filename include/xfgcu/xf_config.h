@@ -192,14 +192,12 @@
 #define XF_EMIT_DEFINITIONS 0
 #endif
 
-/* Internal: the parser's per-candidate check is inlined into its hot loop
- * even where the compiler's size heuristics would not (GCC, clang). */
+/* Internal: a function kept out of line (GCC, clang), so that its caller's
+ * fast path needs no stack frame (the parser's one-byte feed). */
 #if defined(__GNUC__)
-#define XF__HOT_INLINE __attribute__((always_inline)) static inline
-#define XF__COLD       __attribute__((noinline)) static
+#define XF__COLD __attribute__((noinline)) static
 #else
-#define XF__HOT_INLINE static inline
-#define XF__COLD       static
+#define XF__COLD static
 #endif
 
 /**

@@ -301,14 +301,14 @@ static int xf__admit(xf_parser *p, unsigned len)
 {
     unsigned left = len - 4u, k = p->n;
     uint32_t c = (uint32_t)((p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC) << 16;
-    int out = (k == XF_PARSER_SLOTS);
-    if (out) {
+    int moved = 0;
+    if (k == XF_PARSER_SLOTS) {
         p->stats.given_up++;
         if (left >= xf__left(p, k - 1u)) {
             return 0;
         }
         k--; /* the candidate that ends last makes room */
-        out = (p->at[k] == p->head);
+        moved = (p->at[k] == p->head);
     }
     c = xf__crc_step(xf__crc_step(c, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
     if (p->n == 0u) {
@@ -323,7 +323,7 @@ static int xf__admit(xf_parser *p, unsigned len)
     p->at[k] = XF__IX(p->end - 4u);
     p->next = (uint8_t)xf__fin(p, 0);
     XF_ASSERT(p->n <= XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left) && xf__len(p, k) == len);
-    return out;
+    return moved;
 }
 
 /* The byte just taken is the fourth of a header pair (h0 three bytes back):
