@@ -57,9 +57,9 @@ echo
 parser=0
 while read -r _ size _ name; do
   case "$name" in
-    xf_parser_* | xf__feed* | xf__take* | xf__byte* | xf__idle* | xf__bulk* | xf__quiet* | xf__admit* | \
+    xf_parser_* | xf__feed* | xf__take* | xf__byte* | xf__idle* | xf__plan* | xf__quiet* | xf__admit* | \
       xf__open* | xf__ends* | xf__settle* | xf__shift* | xf__reverse* | xf__emit* | xf__direct* | \
-      xf__run* | xf__prefix* | xf__to_h0* | xf__crc_*) parser=$((parser + 16#$size)) ;;
+      xf__sum* | xf__store* | xf__prefix* | xf__to_h0* | xf__crc_*) parser=$((parser + 16#$size)) ;;
   esac
 done < <(arm-none-eabi-nm -S "$elf" | awk 'NF == 4')
 echo "of which the parser (its functions and the CRC's, and their tables): $parser bytes"

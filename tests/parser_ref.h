@@ -26,9 +26,9 @@
  *       W is removed, given_up++, and the new one becomes pending; else the
  *       new one is not admitted, given_up++.
  *  - Held bytes (pending) = e - head, head = the earliest of the pending
- *    starts and of the positions s in [max(floor, e - 3), e) whose bytes
- *    s..e-1 begin a header pair (h0 | h0 h1 | h0 h1 x, any x); e when
- *    there is none.
+ *    starts and of the positions s in [max(floor, e - 3), e) that hold h0
+ *    (an h0 whose header is not complete: whatever follows it, it is held
+ *    until its fourth byte); e when there is none.
  *  - bytes_skipped = bytes_in - bytes of returned frames - pending.
  *  - A flush (end of input) drops every held byte: pending 0, counted
  *    skipped; nothing else changes (no frame, no given_up).
@@ -83,16 +83,8 @@ static inline uint16_t pr_crc(const uint8_t *d, size_t n)
     return (uint16_t)c;
 }
 
-/* Bytes s[k .. e) (1 to 3) begin a header pair: h0 | h0 h1 | h0 h1 x. Any x:
- * a bad length is counted as an error when the fourth byte arrives. */
-static inline int pr_header_prefix(const uint8_t *s, size_t k, size_t e, uint8_t h0, uint8_t h1)
-{
-    return s[k] == h0 && (k + 1u == e || s[k + 1u] == h1);
-}
-
 /* Held bytes after the first e bytes. */
-static inline size_t pr_held(const uint8_t *s, size_t e, size_t floor, const pr_frame *cand, size_t ncand, uint8_t h0,
-                             uint8_t h1)
+static inline size_t pr_held(const uint8_t *s, size_t e, size_t floor, const pr_frame *cand, size_t ncand, uint8_t h0)
 {
     size_t head = e, i, k = (e > 3u) ? e - 3u : 0u;
     for (i = 0; i < ncand; i++) {
@@ -101,7 +93,7 @@ static inline size_t pr_held(const uint8_t *s, size_t e, size_t floor, const pr_
         }
     }
     for (k = (k < floor) ? floor : k; k < e && k < head; k++) {
-        if (pr_header_prefix(s, k, e, h0, h1)) {
+        if (s[k] == h0) {
             head = k;
         }
     }
@@ -193,7 +185,7 @@ static inline int pr_run(const uint8_t *s, size_t n, xf_direction dir, unsigned 
                 }
             }
         }
-        c.pending = (uint32_t)pr_held(s, e, floor, cand, ncand, h0, h1);
+        c.pending = (uint32_t)pr_held(s, e, floor, cand, ncand, h0);
         c.bytes_skipped = (uint32_t)(e - frame_bytes - c.pending);
         m->at[e] = c;
     }

@@ -388,7 +388,8 @@ static void test_truncated_then_intact(void **state)
     pr_free(&m);
 }
 
-/* What is held at the end of the input: the earliest partial header. */
+/* What is held at the end of the input: from the earliest h0 whose fourth
+ * byte has not come, whatever follows it. */
 static void test_held_prefixes(void **state)
 {
     static const struct {
@@ -396,12 +397,14 @@ static void test_held_prefixes(void **state)
         unsigned max;
         uint32_t pending;
     } cases[] = {
-        /* h0 h1 x is held whatever x (its length error comes with the fourth byte) */
-        {"8A", 255, 1},         {"8A 5E", 255, 2},       {"8A 5E 48", 255, 3},    {"8A 5E 47", 255, 3},
-        {"8A 5E 55", 255, 3},   {"8A 5E 55", 84, 3},     {"8A 5E 00", 84, 3},     {"8A 8A", 255, 1},
-        {"8A 5E 8A", 255, 3},   {"8A 5E 48 00", 255, 4}, {"8A 5E 48 01", 255, 0}, {"8A 5E 55 00", 84, 0},
-        {"5E 48 00", 255, 0},   {"8A 11", 255, 0},       {"8A 11 22", 255, 0},    {"8A 5E FF 00", 255, 4},
-        {"8A 5E 8A 5E", 84, 2}, {"8A 5E 8A 5E", 255, 2}, {"8A 8A 5E", 255, 2},    {"11 8A 5E", 84, 2},
+        /* h0 and what follows it are held until its fourth byte, whatever they are (a length
+         * error comes with the fourth byte) */
+        {"8A", 255, 1},          {"8A 5E", 255, 2},       {"8A 5E 48", 255, 3},    {"8A 5E 47", 255, 3},
+        {"8A 5E 55", 255, 3},    {"8A 5E 55", 84, 3},     {"8A 5E 00", 84, 3},     {"8A 8A", 255, 2},
+        {"8A 5E 8A", 255, 3},    {"8A 5E 48 00", 255, 4}, {"8A 5E 48 01", 255, 0}, {"8A 5E 55 00", 84, 0},
+        {"5E 48 00", 255, 0},    {"8A 11", 255, 2},       {"8A 11 22", 255, 3},    {"8A 5E FF 00", 255, 4},
+        {"8A 5E 8A 5E", 84, 2},  {"8A 5E 8A 5E", 255, 2}, {"8A 8A 5E", 255, 3},    {"11 8A 5E", 84, 2},
+        {"8A 11 22 33", 255, 0}, {"8A 11 8A 33", 255, 2},
     };
     size_t i;
     (void)state;

@@ -63,14 +63,14 @@ typedef struct xf_parser {
     xf_parser_stats stats;          /**< counters, readable at any time; the application may zero them */
     uint16_t want[XF_PARSER_SLOTS]; /**< private: per candidate, what `crc` must be at its end, before the shift
                                        (docs/codec.md) */
-    uint16_t crc;                   /**< private: CRC of the bytes taken since the parser last had no candidate */
+    uint16_t crc;                   /**< private: CRC of the bytes from the first pending candidate's start to `sum` */
     uint8_t at[XF_PARSER_SLOTS];    /**< private: ring index of each candidate's first byte, soonest end first */
-    uint8_t next;                   /**< private: ring index just past the first candidate's last byte */
+    uint8_t next;                   /**< private: ring index just past the next byte that needs a look */
     uint8_t head;                   /**< private: ring index of the first byte held */
     uint8_t end;                    /**< private: ring index just past the last byte held */
     uint8_t n;                      /**< private: candidates pending */
     uint8_t h0;                     /**< private: first header byte of the direction parsed */
-    uint8_t h1;                     /**< private: its second header byte */
+    uint8_t sum;                    /**< private: ring index up to which `crc` runs */
 } xf_parser;
 
 /**
@@ -207,7 +207,7 @@ XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned lo
     }
     XF_MEMSET(p, 0, sizeof(*p));
     p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
-    p->h1 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1;
+    p->next = 1; /* nothing held: the first byte gets a look */
     return XF_OK;
 }
 
@@ -233,6 +233,7 @@ static inline void xf__clear(xf_parser *p)
     p->n = 0;
     p->head = 0;
     p->end = 0;
+    p->next = 1;
 }
 
 XF_API void xf_parser_reset(xf_parser *p)
@@ -242,23 +243,51 @@ XF_API void xf_parser_reset(xf_parser *p)
     }
 }
 
-/* How many of the last bytes held (0..3) begin a header pair: h0 | h0 h1 |
- * h0 h1 x (kept whatever x is, so that a bad length is counted at the fourth). */
+/* The second header byte of the direction parsed (h0 names it). */
+static inline unsigned xf__h1(const xf_parser *p)
+{
+    return (p->h0 == XF_GCU_HEADER0) ? XF_GCU_HEADER1 : XF_HOST_HEADER1;
+}
+
+/* How many of the last bytes held (0..3) run from the earliest h0 whose
+ * header is not complete yet (its fourth byte has not come). */
 static inline unsigned xf__prefix(const xf_parser *p)
 {
+    unsigned held = xf__held(p), k;
+    for (k = 3u; k > 0u; k--) {
+        if (held >= k && p->ring[XF__IX(p->end - k)] == p->h0) {
+            return k;
+        }
+    }
+    return 0;
+}
+
+/* Set next: just past the next byte that needs a look, the soonest of a
+ * candidate's last byte and the fourth byte of a header an h0 held begins;
+ * with nothing held, the next byte. Every byte before it, unless it is an
+ * h0, is only stored (the fast paths). */
+static void xf__plan(xf_parser *p)
+{
     const uint8_t *r = p->ring;
-    unsigned held = xf__held(p), e = p->end, h0 = p->h0, h1 = p->h1;
-    if (held >= 3u && r[XF__IX(e - 3u)] == h0 && r[XF__IX(e - 2u)] == h1) {
-        return 3u;
+    unsigned e = p->end, h0 = p->h0, stop;
+    if (p->n == 0u) {
+        unsigned held = xf__held(p); /* settled: an h0 and what follows it, or nothing */
+        XF_ASSERT(held == xf__prefix(p));
+        stop = (held > 0u) ? 4u - held : 1u;
+    } else {
+        /* candidates start 4 or more bytes back: the last three are held */
+        unsigned k = (r[XF__IX(e - 3u)] == h0)   ? 1u
+                     : (r[XF__IX(e - 2u)] == h0) ? 2u
+                     : (r[XF__IX(e - 1u)] == h0) ? 3u
+                                                 : 255u;
+        stop = xf__left(p, 0);
+        stop = (k < stop) ? k : stop;
     }
-    if (held >= 2u && r[XF__IX(e - 2u)] == h0 && r[XF__IX(e - 1u)] == h1) {
-        return 2u;
-    }
-    return (held >= 1u && r[XF__IX(e - 1u)] == h0) ? 1u : 0u;
+    p->next = XF__IX(e + stop);
 }
 
 /* Move head up to the first byte that can still begin a frame: the earliest
- * candidate's, or else a header pair's first bytes at the end. */
+ * candidate's, or else an h0 whose header is not complete yet. */
 static void xf__settle(xf_parser *p)
 {
     unsigned k, keep = 0;
@@ -278,6 +307,20 @@ static void xf__settle(xf_parser *p)
     p->head = XF__IX(p->end - keep);
 }
 
+/* Bring crc up to the last byte held: bytes are stored first and CRC'd
+ * only when a candidate needs it, four at a time (xf__crc_run). */
+static void xf__sum(xf_parser *p)
+{
+    unsigned s = p->sum, e = p->end;
+    uint32_t c = (uint32_t)p->crc << 16;
+    if (e < s) {
+        c = xf__crc_run(c, p->ring + s, XF_PARSER_RING - s);
+        s = 0;
+    }
+    p->crc = (uint16_t)(xf__crc_run(c, p->ring + s, e - s) >> 16);
+    p->sum = (uint8_t)e;
+}
+
 /* Drop candidate 0 (its end has come), keeping the others in order. */
 static void xf__shift(xf_parser *p)
 {
@@ -286,17 +329,16 @@ static void xf__shift(xf_parser *p)
         p->want[k] = p->want[k + 1u];
         p->at[k] = p->at[k + 1u];
     }
-    p->next = (p->n > 0u) ? (uint8_t)xf__fin(p, 0) : p->end;
 }
 
-/* A header pair and a valid length end with the byte just taken (and are
- * in `crc` already): a new candidate, placed in order of end (after those
- * that end with it: they started earlier). Its `want` is what the CRC of
- * everything before it contributes at its end: the frame is intact exactly
- * when the running CRC then equals want * x^(8 (len - 4)) (xf__crc_zeros);
- * with no other candidate the running CRC restarts at the candidate, and
- * want is 0. When every slot is taken, the candidate that ends last is
- * given up. 1 when a pending one was, and held the first byte held. */
+/* A header pair and a valid length end with the last byte held: a new
+ * candidate, placed in order of end (after those that end with it: they
+ * started earlier). Its `want` is what the CRC of everything before it
+ * contributes at its end: the frame is intact exactly when the running CRC
+ * then equals want * x^(8 (len - 4)) (xf__crc_zeros); with no other
+ * candidate the running CRC restarts at the candidate, and want is 0. When
+ * every slot is taken, the candidate that ends last is given up. 1 when a
+ * pending one was, and held the first byte held. */
 static int xf__admit(xf_parser *p, unsigned len)
 {
     unsigned left = len - 4u, k = p->n;
@@ -313,6 +355,9 @@ static int xf__admit(xf_parser *p, unsigned len)
     c = xf__crc_step(xf__crc_step(c, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
     if (p->n == 0u) {
         p->crc = (uint16_t)(c >> 16); /* the CRC of the stream before the candidate counts as 0 */
+        p->sum = p->end;
+    } else {
+        xf__sum(p);
     }
     p->n = (uint8_t)(k + 1u);
     for (; k > 0u && k < XF_PARSER_SLOTS && xf__left(p, k - 1u) > left; k--) {
@@ -321,18 +366,17 @@ static int xf__admit(xf_parser *p, unsigned len)
     }
     p->want[k] = (uint16_t)(p->crc ^ (c >> 16));
     p->at[k] = XF__IX(p->end - 4u);
-    p->next = (uint8_t)xf__fin(p, 0);
     XF_ASSERT(p->n <= XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left) && xf__len(p, k) == len);
     return moved;
 }
 
-/* The byte just taken is the fourth of a header pair (h0 three bytes back):
- * a candidate, or a length error. 1 when a pending candidate was given up. */
+/* The last byte held is the fourth after an h0 held: a candidate, a length
+ * error, or nothing. 1 when a pending candidate was given up. */
 static int xf__open(xf_parser *p)
 {
     const uint8_t *r = p->ring;
     unsigned s = XF__IX(p->end - 4u), len;
-    if (xf__held(p) < 4u || r[XF__IX(s + 1u)] != p->h1) {
+    if (xf__held(p) < 4u || r[s] != p->h0 || r[XF__IX(s + 1u)] != xf__h1(p)) {
         return 0;
     }
     len = (unsigned)r[XF__IX(s + 2u)] | ((unsigned)r[XF__IX(s + 3u)] << 8);
@@ -374,14 +418,19 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     p->n = 0;
     p->head = 0;
     p->end = 0;
+    p->next = 1;
 }
 
-/* Candidates end with the byte just taken (next == end): check them in
- * order of start; the first intact one is returned (1), failed ones go (0;
- * *moved when one of them held the first byte held). */
+/* Candidates that end with the last byte held, in order of start: the first
+ * intact one is returned (1), failed ones go (0; *moved when one of them
+ * held the first byte held). */
 static int xf__ends(xf_parser *p, xf_frame *frame, int *moved)
 {
-    while (p->n > 0u && xf__fin(p, 0) == p->end) {
+    if (p->n == 0u || xf__fin(p, 0) != p->end) {
+        return 0;
+    }
+    xf__sum(p);
+    do {
         uint16_t w = p->want[0];
         if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u))) {
             xf__emit(p, frame);
@@ -390,37 +439,39 @@ static int xf__ends(xf_parser *p, xf_frame *frame, int *moved)
         p->stats.crc_errors++;
         *moved |= (p->at[0] == p->head);
         xf__shift(p);
-    }
+    } while (p->n > 0u && xf__fin(p, 0) == p->end);
     return 0;
 }
 
-/* Take one byte; every rule applies to it, ends before headers (a frame
- * returned drops whatever its last bytes begin). h0_back: the byte three
- * before it is h0. 1 when it completes a frame. */
-static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame, unsigned h0_back)
+/* Take one byte that needs a look: an h0, or the byte before next. Every
+ * rule applies to the latter, ends before headers (a frame returned drops
+ * whatever its last bytes begin); an h0 before next only brings next to
+ * its own fourth byte. 1 when it completes a frame. */
+static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
 {
-    unsigned e = XF__IX(p->end + 1u);
     int moved = 0;
     p->ring[p->end] = b;
-    p->end = (uint8_t)e;
-    if (p->n != 0u) {
-        p->crc = (uint16_t)(xf__crc_step((uint32_t)p->crc << 16, xf__crc_table(), b) >> 16);
-        if (p->next == e && xf__ends(p, frame, &moved)) {
-            return 1;
+    p->end = XF__IX(p->end + 1u);
+    if (p->next != p->end) {
+        XF_ASSERT(b == p->h0 && p->head != p->end);
+        if (XF__IX(p->next - p->end) > 3u) {
+            p->next = XF__IX(p->end + 3u);
         }
+        return 0;
     }
-    if (h0_back != 0u) {
-        moved |= xf__open(p);
+    if (xf__ends(p, frame, &moved)) {
+        return 1;
     }
+    moved |= xf__open(p);
     if (moved || p->n == 0u) {
         xf__settle(p);
     }
+    xf__plan(p);
     return 0;
 }
 
-/* Take a run in which no header pair can end and no candidate ends before
- * the last byte: copy it, CRC it once per candidate. */
-static void xf__run(xf_parser *p, const uint8_t *d, size_t len)
+/* Store a run that holds no h0 and ends before next: nothing to look at. */
+static void xf__store(xf_parser *p, const uint8_t *d, size_t len)
 {
     unsigned e = p->end;
     size_t first = XF_PARSER_RING - e;
@@ -431,7 +482,6 @@ static void xf__run(xf_parser *p, const uint8_t *d, size_t len)
         XF_MEMCPY(p->ring, d + first, len - first);
     }
     p->end = XF__IX(e + len);
-    p->crc = (uint16_t)(xf__crc_run((uint32_t)p->crc << 16, d, len) >> 16);
 }
 
 /* Bytes of d before the first h0, at most len. */
@@ -449,6 +499,27 @@ static inline size_t xf__to_h0(const xf_parser *p, const uint8_t *d, size_t len)
     return (hit != NULL) ? (size_t)(hit - d) : len;
 }
 
+/* Store the bytes of d before the first h0, at most len (none of them needs
+ * a look); return how many. A short run in one loop, a long one through
+ * memchr and memcpy. */
+static size_t xf__quiet(xf_parser *p, const uint8_t *d, size_t len)
+{
+    size_t m = 0;
+    if (len < XF__SHORT) {
+        uint8_t *r = p->ring;
+        unsigned e = p->end, h0 = p->h0;
+        for (; m < len && d[m] != h0; m++) {
+            r[e] = d[m];
+            e = XF__IX(e + 1u);
+        }
+        p->end = (uint8_t)e;
+        return m;
+    }
+    m = xf__to_h0(p, d, len);
+    xf__store(p, d, m);
+    return m;
+}
+
 /* Nothing held, d starts with h0 and holds a whole intact packet with no
  * other header pair inside (so no candidate inside could end first or count
  * as an error): return it from d itself, with no copy. */
@@ -456,7 +527,7 @@ static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
 {
     size_t len = d[2], i = 1;
     while ((i += xf__to_h0(p, d + i, len - 1u - i)) < len - 1u) {
-        if (d[++i] == p->h1) {
+        if (d[++i] == xf__h1(p)) {
             return 0; /* a header pair inside: the general path applies every rule */
         }
     }
@@ -469,83 +540,49 @@ static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
     return 1;
 }
 
-/* Nothing held: skip to the next h0. A whole packet there is returned in
- * place (1, *i past it); a header opens its candidate at once. */
+/* Nothing held: skip to the next h0 and look at the header it begins when
+ * all of it is in view. A whole packet there is returned in place (1, *i
+ * past it); a valid header opens its candidate at once. */
 static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_frame *frame)
 {
     size_t k = xf__to_h0(p, d + *i, len - *i);
+    unsigned n;
     p->stats.bytes_skipped += (uint32_t)k;
     *i += k;
     d += *i;
     len -= *i;
-    if (len == 0u) {
+    if (len < 4u) {
+        if (len > 0u) {
+            (void)xf__byte(p, d[0], frame); /* the parser is empty: no candidate can end here */
+            *i += 1u;
+        }
         return 0;
     }
-    if (len < 4u || d[1] != p->h1 || d[3] != 0u || !xf__len_ok(d[2])) {
-        /* not a whole header in view: the h0 goes in byte by byte */
-        (void)xf__byte(p, d[0], frame, 0u); /* the parser is empty: no candidate can end here */
+    n = (unsigned)d[2] | ((unsigned)d[3] << 8);
+    if (d[1] != xf__h1(p) || !xf__len_ok(n)) {
+        p->stats.length_errors += (d[1] == xf__h1(p));
+        p->stats.bytes_skipped++; /* no header here; the next three bytes are searched */
         *i += 1u;
         return 0;
     }
-    if (d[2] <= len && xf__direct(p, d, frame)) {
-        *i += d[2];
+    if (n <= len && xf__direct(p, d, frame)) {
+        *i += n;
         return 1;
     }
     XF_ASSERT(p->end == 0u && p->n == 0u); /* empty: at ring index 0 */
     XF_MEMCPY(p->ring, d, 4u);             /* the running CRC starts at this candidate (xf__admit) */
     p->end = 4;
-    (void)xf__admit(p, d[2]);
+    (void)xf__admit(p, n);
+    xf__plan(p);
     *i += 4u;
     return 0;
 }
 
-/* Inside candidates, the bytes that end none and complete no header pair:
- * stored and CRC'd with the state in locals. Returns how many. */
-static size_t xf__quiet(xf_parser *p, const uint8_t *d, size_t len)
-{
-    const uint32_t *t = xf__crc_table();
-    uint8_t *r = p->ring;
-    unsigned e = p->end, next = p->next, h0 = p->h0;
-    uint32_t c = (uint32_t)p->crc << 16;
-    size_t i = 0;
-    for (; i < len && XF__IX(e + 1u) != next && r[XF__IX(e - 3u)] != h0; i++) {
-        uint8_t b = d[i];
-        r[e] = b;
-        c = xf__crc_step(c, t, b);
-        e = XF__IX(e + 1u);
-    }
-    p->end = (uint8_t)e;
-    p->crc = (uint16_t)(c >> 16);
-    return i;
-}
-
-/* Inside candidates, no h0 among the last three bytes nor at d[*i]: the
- * bytes up to the next h0 or the soonest end go in one run. 1 with a frame. */
-static int xf__bulk(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_frame *frame)
-{
-    size_t m = len - *i, left = (unsigned)XF__IX(p->next - p->end);
-    int moved = 0;
-    m = (m < left) ? m : left;
-    m = xf__to_h0(p, d + *i, m);
-    xf__run(p, d + *i, m);
-    *i += m;
-    if (p->next != p->end) {
-        return 0;
-    }
-    if (xf__ends(p, frame, &moved)) {
-        return 1;
-    }
-    if (moved || p->n == 0u) {
-        xf__settle(p);
-    }
-    return 0;
-}
-
 /* The main loop: take bytes until a frame is complete (1) or all are taken
- * (0). Runs between header bytes go in bulk, the bytes near one singly. */
+ * (0). Bytes before the next h0 and before next are only stored; each of
+ * the others gets a look of its own. */
 static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf_frame *frame)
 {
-    const uint8_t h0 = p->h0;
     size_t i = 0;
     while (i < len) {
         if (p->end == p->head) {
@@ -554,27 +591,14 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf
                 return 1;
             }
             continue;
+        } else {
+            size_t m = len - i, quiet = (unsigned)XF__IX(p->next - p->end) - 1u;
+            i += xf__quiet(p, d + i, (m < quiet) ? m : quiet);
         }
-        if (p->n > 0u) {
-            const uint8_t *r = p->ring;
-            unsigned e = p->end;
-            if (d[i] != h0 && r[XF__IX(e - 1u)] != h0 && r[XF__IX(e - 2u)] != h0 && r[XF__IX(e - 3u)] != h0) {
-                if (xf__bulk(p, d, len, &i, frame)) {
-                    *used = i;
-                    return 1;
-                }
-                continue;
-            }
-            i += xf__quiet(p, d + i, len - i);
-            if (i == len) {
-                break;
-            }
-        }
-        if (xf__byte(p, d[i], frame, p->ring[XF__IX(p->end - 3u)] == h0)) {
-            *used = i + 1u;
+        if (i < len && xf__byte(p, d[i++], frame)) {
+            *used = i;
             return 1;
         }
-        i++;
     }
     *used = len;
     return 0;
@@ -591,7 +615,7 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     } else if (p->end == p->head && data[0] != p->h0) {
         p->stats.bytes_skipped++; /* nothing held, and no header begins here */
     } else {
-        found = xf__byte(p, data[0], frame, p->ring[XF__IX(p->end - 3u)] == p->h0);
+        found = xf__byte(p, data[0], frame);
     }
     p->stats.bytes_in += (uint32_t)used;
     if (consumed != NULL) {
@@ -607,19 +631,16 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
     }
     if (len == 1u) {
         unsigned e = p->end, b = data[0];
-        if (p->n == 0u || p->next == XF__IX(e + 1u) || p->ring[XF__IX(e - 3u)] == p->h0) {
-            return xf__feed(p, data, 1u, consumed, frame);
+        if (p->next != XF__IX(e + 1u) && b != p->h0) {
+            /* A UART's byte that needs no look (xf__plan): store it. */
+            p->ring[e] = (uint8_t)b;
+            p->end = XF__IX(e + 1u);
+            p->stats.bytes_in++;
+            if (consumed != NULL) {
+                *consumed = 1;
+            }
+            return XF_PARSE_MORE;
         }
-        /* A UART's byte inside candidates, ending none and completing no
-         * header pair: store it, advance the CRC. */
-        p->ring[e] = (uint8_t)b;
-        p->end = XF__IX(e + 1u);
-        p->crc = (uint16_t)(xf__crc_step((uint32_t)p->crc << 16, xf__crc_table(), (uint8_t)b) >> 16);
-        p->stats.bytes_in++;
-        if (consumed != NULL) {
-            *consumed = 1;
-        }
-        return XF_PARSE_MORE;
     }
     return xf__feed(p, data, len, consumed, frame);
 }
