@@ -40,58 +40,43 @@ XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
 #include "xf_crc_tables.h" /* generated: scripts/gen_crc_tables.py */
 
 /*
- * Both loops keep the CRC in the top half of a 32-bit word, with the table
+ * The CRC lives in the top half of a 32-bit register, with the table
  * entries pre-shifted to match: the next index is then simply the top bits
- * (no mask), and one shift both advances the CRC and drops what leaves it:
- * fewer instructions per step (a nibble, or a byte with the big table) than
- * the textbook 16-bit forms, for tables twice as wide (instruction counts and
- * sizes: docs/performance.md). Four bytes per iteration cut the loop overhead.
+ * (no mask), and one shift both advances the CRC and drops what leaves it.
+ * Data goes in by XOR at the top, a byte or four at a time: four bytes fill
+ * the register, the two after the CRC's riding in its low half until they
+ * are folded (instruction counts and sizes: docs/performance.md).
  */
 #if XF_CRC_TABLE_256
+#define XF__CRC_BITS 8u /* bits folded per lookup */
 static inline const uint32_t *xf__crc_table(void) { return xf__crc_table256; }
+#else
+#define XF__CRC_BITS 4u /* the vendor's table: the CRC of each 4-bit value, times 2^16 */
+static inline const uint32_t *xf__crc_table(void) { return xf__crc_table16; }
+#endif
+
+/* Fold the top byte of c out through the table: one lookup, or two with
+ * the nibble table. */
+static inline uint32_t xf__crc_fold(uint32_t c, const uint32_t *table)
+{
+    c = (c << XF__CRC_BITS) ^ table[c >> (32u - XF__CRC_BITS)];
+#if !XF_CRC_TABLE_256
+    c = (c << 4) ^ table[c >> 28];
+#endif
+    return c;
+}
 
 /* One byte, the CRC in the top half of c. */
 static inline uint32_t xf__crc_step(uint32_t c, const uint32_t *table, uint8_t b)
 {
-    return (c << 8) ^ table[(c >> 24) ^ b];
+    return xf__crc_fold(c ^ ((uint32_t)b << 24), table);
 }
-#else
-/* The vendor's table: the CRC of each 4-bit value, times 2^16. */
-static inline const uint32_t *xf__crc_table(void) { return xf__crc_table16; }
 
-/* The vendor's routine for one byte, the CRC in the top half of c: the
- * byte goes into the CRC's high byte, then two shifts by four bits fold
- * each nibble that leaves back in through the table. */
-static inline uint32_t xf__crc_step(uint32_t c, const uint32_t *table, uint8_t b)
-{
-    c ^= (uint32_t)b << 24;
-    c = (c << 4) ^ table[c >> 28];
-    return (c << 4) ^ table[c >> 28];
-}
-#endif
-
-/* Four bytes at once: the CRC's register is 32 bits wide, so the next two
- * bytes ride in its low half while the two before them are folded out of the
- * top. One big-endian load and one XOR put four bytes in, where one byte at
- * a time takes a load, a shift and an XOR each (docs/performance.md). */
+/* Four bytes, read big-endian into the whole register. */
 static inline uint32_t xf__crc_word(uint32_t c, const uint32_t *table, const uint8_t *d)
 {
     c ^= ((uint32_t)d[0] << 24) | ((uint32_t)d[1] << 16) | ((uint32_t)d[2] << 8) | d[3];
-#if XF_CRC_TABLE_256
-    c = (c << 8) ^ table[c >> 24];
-    c = (c << 8) ^ table[c >> 24];
-    c = (c << 8) ^ table[c >> 24];
-    return (c << 8) ^ table[c >> 24];
-#else
-    c = (c << 4) ^ table[c >> 28];
-    c = (c << 4) ^ table[c >> 28];
-    c = (c << 4) ^ table[c >> 28];
-    c = (c << 4) ^ table[c >> 28];
-    c = (c << 4) ^ table[c >> 28];
-    c = (c << 4) ^ table[c >> 28];
-    c = (c << 4) ^ table[c >> 28];
-    return (c << 4) ^ table[c >> 28];
-#endif
+    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c, table), table), table), table);
 }
 
 /* len bytes into a CRC kept in the top half of c (the parser keeps each

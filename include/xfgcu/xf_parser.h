@@ -470,32 +470,10 @@ static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
     return 0;
 }
 
-/* Store a run that holds no h0 and ends before next: nothing to look at. */
-static void xf__store(xf_parser *p, const uint8_t *d, size_t len)
-{
-    unsigned e = p->end;
-    size_t first = XF_PARSER_RING - e;
-    if (len <= first) {
-        XF_MEMCPY(p->ring + e, d, len);
-    } else {
-        XF_MEMCPY(p->ring + e, d, first);
-        XF_MEMCPY(p->ring, d + first, len - first);
-    }
-    p->end = XF__IX(e + len);
-}
-
 /* Bytes of d before the first h0, at most len. */
 static inline size_t xf__to_h0(const xf_parser *p, const uint8_t *d, size_t len)
 {
-    const uint8_t *hit;
-    size_t i = 0;
-    if (len < XF__SHORT) {
-        while (i < len && d[i] != p->h0) {
-            i++;
-        }
-        return i;
-    }
-    hit = (const uint8_t *)XF_MEMCHR(d, p->h0, len);
+    const uint8_t *hit = (const uint8_t *)XF_MEMCHR(d, p->h0, len);
     return (hit != NULL) ? (size_t)(hit - d) : len;
 }
 
@@ -504,25 +482,31 @@ static inline size_t xf__to_h0(const xf_parser *p, const uint8_t *d, size_t len)
  * memchr and memcpy. */
 static size_t xf__quiet(xf_parser *p, const uint8_t *d, size_t len)
 {
-    size_t m = 0;
+    uint8_t *r = p->ring;
+    unsigned e = p->end, h0 = p->h0;
+    size_t m = 0, first = XF_PARSER_RING - e;
     if (len < XF__SHORT) {
-        uint8_t *r = p->ring;
-        unsigned e = p->end, h0 = p->h0;
         for (; m < len && d[m] != h0; m++) {
             r[e] = d[m];
             e = XF__IX(e + 1u);
         }
-        p->end = (uint8_t)e;
-        return m;
+    } else {
+        m = xf__to_h0(p, d, len);
+        XF_MEMCPY(r + e, d, (m < first) ? m : first);
+        if (m > first) {
+            XF_MEMCPY(r, d + first, m - first);
+        }
+        e = XF__IX(e + m);
     }
-    m = xf__to_h0(p, d, len);
-    xf__store(p, d, m);
+    p->end = (uint8_t)e;
     return m;
 }
 
-/* Nothing held, d starts with h0 and holds a whole intact packet with no
- * other header pair inside (so no candidate inside could end first or count
- * as an error): return it from d itself, with no copy. */
+/* Nothing held, d starts with a header and holds the whole packet with no
+ * other header pair inside, so no other candidate can begin or end before
+ * its end: intact, it is returned from d itself, with no copy (1); damaged,
+ * it is counted and skipped but for its last three bytes, which may begin a
+ * header (-1). Else the general path applies every rule (0). */
 static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
 {
     size_t len = d[2], i = 1;
@@ -532,7 +516,9 @@ static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
         }
     }
     if ((xf__crc_run(0, d, len) >> 16) != 0u) {
-        return 0;
+        p->stats.crc_errors++;
+        p->stats.bytes_skipped += (uint32_t)len - 3u;
+        return -1;
     }
     frame->data = d;
     frame->len = len;
@@ -551,23 +537,19 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
     *i += k;
     d += *i;
     len -= *i;
-    if (len < 4u) {
-        if (len > 0u) {
-            (void)xf__byte(p, d[0], frame); /* the parser is empty: no candidate can end here */
-            *i += 1u;
-        }
+    if (len == 0u) {
         return 0;
     }
-    n = (unsigned)d[2] | ((unsigned)d[3] << 8);
-    if (d[1] != xf__h1(p) || !xf__len_ok(n)) {
-        p->stats.length_errors += (d[1] == xf__h1(p));
-        p->stats.bytes_skipped++; /* no header here; the next three bytes are searched */
+    n = (len < 4u) ? 0u : (unsigned)d[2] | ((unsigned)d[3] << 8);
+    if (!xf__len_ok(n) || d[1] != xf__h1(p)) {
+        (void)xf__byte(p, d[0], frame); /* no whole header in view: every rule applies from here */
         *i += 1u;
         return 0;
     }
-    if (n <= len && xf__direct(p, d, frame)) {
-        *i += n;
-        return 1;
+    k = (n <= len) ? (size_t)(xf__direct(p, d, frame) + 2) : 2u; /* 1, 2 or 3: damaged, general, whole */
+    if (k != 2u) {
+        *i += (k == 3u) ? n : n - 3u;
+        return k == 3u;
     }
     XF_ASSERT(p->end == 0u && p->n == 0u); /* empty: at ring index 0 */
     XF_MEMCPY(p->ring, d, 4u);             /* the running CRC starts at this candidate (xf__admit) */
