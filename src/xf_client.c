@@ -725,19 +725,27 @@ xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16
 xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
 {
     xf_command cmd;
+    xf_err err;
     if (c == NULL) {
         return XF_ERR_ARG;
     }
     xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
     if (c->stream_on) {
         cmd.cameras = c->stream[0]; /* external_track's parameters start with KK */
+    }
+    /* Queue the exit before touching the stream: a refused one (queue full)
+     * must leave the stream on, so that calling again sends the exit to the
+     * stream's cameras, not to camera 1. Nothing is sent before the next
+     * step, so the guard set after the submit still applies to the exit. */
+    err = xf_client_submit(c, &cmd, id, NULL); /* value 0: exit */
+    if (err == XF_OK && c->stream_on) {
         /* The stream's replies (same order, with their own state) may still
          * be in flight: the exit's result must be its own. */
         c->guard_order = XF_ORDER_EXTERNAL_TRACK;
         c->guard_open = 1;
+        c->stream_on = 0;
     }
-    c->stream_on = 0;
-    return xf_client_submit(c, &cmd, id, NULL); /* value 0: exit */
+    return err;
 }
 
 /* ---- state --------------------------------------------------------------------- */

@@ -642,11 +642,15 @@ xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16
  * like any command's. The exit starts only once a reply of another order
  * has come back, so that a late reply to the stream is not taken for its
  * own. Never blocks.
+ *
+ * On failure nothing changes: the stream (if on) keeps running and nothing
+ * is queued, so calling again (once the queue has room) sends the same exit
+ * to the same cameras.
  * @param c   the client
- * @param id  receives the exit command's id (may be NULL)
+ * @param id  receives the exit command's id (may be NULL; left alone on
+ *   failure)
  * @return as xf_client_submit(): ::XF_OK, ::XF_ERR_ARG (NULL @p c),
- *   ::XF_ERR_BUSY (queue full: the stream is stopped all the same, but no
- *   exit is queued; call again)
+ *   ::XF_ERR_BUSY (queue full: nothing changed; call again)
  */
 xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id);
 
