@@ -173,7 +173,7 @@ static inline int pr_run(const uint8_t *s, size_t n, xf_direction dir, unsigned 
                 cand[ncand++] = nc;
             } else {
                 size_t w = 0; /* the greatest (end, start): the latest of those with the greatest end */
-                for (i = 1; i < ncand; i++) {
+                for (i = 1; i < ncand && i < K; i++) { /* (ncand == K here; the bound is for gcc) */
                     if (cand[i].start + cand[i].len >= cand[w].start + cand[w].len) {
                         w = i;
                     }

@@ -268,22 +268,12 @@ static inline unsigned xf__prefix(const xf_parser *p)
  * h0, is only stored (the fast paths). */
 static void xf__plan(xf_parser *p)
 {
-    const uint8_t *r = p->ring;
-    unsigned e = p->end, h0 = p->h0, stop;
-    if (p->n == 0u) {
-        unsigned held = xf__held(p); /* settled: an h0 and what follows it, or nothing */
-        XF_ASSERT(held == xf__prefix(p));
-        stop = (held > 0u) ? 4u - held : 1u;
-    } else {
-        /* candidates start 4 or more bytes back: the last three are held */
-        unsigned k = (r[XF__IX(e - 3u)] == h0)   ? 1u
-                     : (r[XF__IX(e - 2u)] == h0) ? 2u
-                     : (r[XF__IX(e - 1u)] == h0) ? 3u
-                                                 : 255u;
+    unsigned k = xf__prefix(p), stop = (k > 0u) ? 4u - k : 1u;
+    XF_ASSERT(p->n > 0u || xf__held(p) == k); /* settled: an h0 and what follows it, or nothing */
+    if (p->n > 0u && (k == 0u || xf__left(p, 0) < stop)) {
         stop = xf__left(p, 0);
-        stop = (k < stop) ? k : stop;
     }
-    p->next = XF__IX(e + stop);
+    p->next = XF__IX(p->end + stop);
 }
 
 /* Move head up to the first byte that can still begin a frame: the earliest
