@@ -626,7 +626,20 @@ static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t 
     return XF_OK;
 }
 
+xf_support xf_client_supports(const xf_client *c, uint8_t order)
+{
+    if (c == NULL || !c->tele.have_sub) {
+        return XF_SUPPORT_UNKNOWN; /* the model comes with the sub frame */
+    }
+    return xf_gimbal_supports(c->tele.gimbal_code, order);
+}
+
 xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_field *bad_field)
+{
+    return xf_client_submit_opt(c, cmd, 0u, id, bad_field);
+}
+
+xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags, uint32_t *id, xf_field *bad_field)
 {
     xf_cmd_slot encoded, *slot;
     xf_err err;
@@ -639,6 +652,9 @@ xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_fi
     err = xf__slot_encode(&encoded, cmd, c->cfg.protocol_version, bad_field);
     if (err != XF_OK) {
         return err;
+    }
+    if (!(flags & XF_SUBMIT_ANY_MODEL) && xf_client_supports(c, cmd->order) == XF_SUPPORT_NO) {
+        return XF_ERR_UNSUPPORTED; /* the GCU's model would only refuse it (V2.0.6's support list) */
     }
     if (c->q_count >= XF_CLIENT_QUEUE) {
         return XF_ERR_BUSY;

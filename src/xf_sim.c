@@ -21,7 +21,7 @@ void xf_sim_config_init(xf_sim_config *cfg)
     }
     memset(cfg, 0, sizeof(*cfg));
     cfg->version = XF_PROTOCOL_V1;
-    cfg->gimbal_code = 40;
+    cfg->gimbal_code = 58; /* Z-9B_V4(T): the one model of V2.0.6's support list with every order */
     cfg->hw_version = 3;
     cfg->fw_version = 12;
     cfg->slew_dps = 120.0f;
@@ -301,6 +301,9 @@ static uint8_t xf__execute(xf_sim *s, const xf_host_packet *p)
     }
     if (s->fail_state[p->order] != 0u) {
         return s->fail_state[p->order];
+    }
+    if (xf_gimbal_supports(s->cfg.gimbal_code, p->order) == XF_SUPPORT_NO) {
+        return XF_STATE_FAILURE; /* the model has no such function (V2.0.6's support list) */
     }
     switch (p->order) {
     case XF_ORDER_CALIBRATION:

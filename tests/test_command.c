@@ -864,6 +864,70 @@ static void test_feedback_state_inverse(void **state)
     }
 }
 
+/* V2.0.6's support list (appendix 8) as the vendor lays it out: one row per order, one column
+ * per model, 'Y' where the order is marked supported; typed from the vendor's table apart from
+ * the header's per-model masks, so that each checks the other. */
+static void test_gimbal_supports(void **state)
+{
+    static const uint8_t codes[20] = {0, 2, 25, 26, 31, 40, 41, 44, 45, 49, 50, 52, 53, 55, 57, 58, 59, 60, 61, 62};
+    static const struct {
+        uint8_t order;
+        const char *marks; /* one per code above */
+    } rows[] = {
+        {XF_ORDER_TRACK, "Y-Y-YYYYYYYYYYYYYY--"},
+        {XF_ORDER_OSD_COORDINATE, "--------YYYYY-YYYYYY"},
+        {XF_ORDER_AUTO_FLIP, "--------YYYYY-YYYYYY"},
+        {XF_ORDER_TIME_ZONE, "--------YYYYY-YYYYYY"},
+        {XF_ORDER_ZOOM_TO, "-----YYYYYYYYYYYYYYY"},
+        {XF_ORDER_FOCUS, "YYYYYYYYY---YYYYYYYY"},
+        {XF_ORDER_PALETTE, "----Y-Y-Y--YY-YYYYYY"},
+        {XF_ORDER_NIGHT_VISION, "YYYYYYYYY---YYYYYYYY"},
+        {XF_ORDER_AREA_TEMP, "--------Y---Y--Y--Y-"},
+        {XF_ORDER_TEMP_ALARM, "--------Y---Y--Y--Y-"},
+        {XF_ORDER_ISOTHERM, "--------Y---Y--Y--Y-"},
+        {XF_ORDER_SPOT_TEMP, "--------Y---Y--Y--Y-"},
+        {XF_ORDER_OSD, "-----YY-YYYYYYYYYYYY"},
+        {XF_ORDER_PIP, "----YYY-Y--YYYYYYYYY"},
+        {XF_ORDER_TARGET_DETECTION, "--------YYYYY-YYYY--"},
+        {XF_ORDER_DIGITAL_ZOOM, "--------Y---Y-YYYYYY"},
+        {XF_ORDER_LIGHTING, "----YY-Y-------YY---"},
+        {XF_ORDER_RANGING, "--YYY-Y-Y---YYYYYYYY"},
+    };
+    static const uint8_t older[] = {3, 21, 22, 24, 27, 30}; /* only in V2.0.4's list: no claim */
+    size_t m, k, i;
+    (void)state;
+    for (k = 0; k < ARRAY_LEN(rows); k++) {
+        assert_int_equal(strlen(rows[k].marks), ARRAY_LEN(codes));
+        for (m = 0; m < ARRAY_LEN(codes); m++) {
+            xf_support want = (rows[k].marks[m] == 'Y') ? XF_SUPPORT_YES : XF_SUPPORT_NO;
+            if (xf_gimbal_supports(codes[m], rows[k].order) != want) {
+                print_error("model %u, order 0x%02X: expected %d\n", codes[m], rows[k].order, (int)want);
+                fail();
+            }
+        }
+    }
+    /* every other order of V2.0.6 is supported by every model; external_track is not in V2.0.6 */
+    for (i = 0; i < XF_ORDER_COUNT; i++) {
+        uint8_t order = xf_order_at(i)->order;
+        int listed = 0;
+        for (k = 0; k < ARRAY_LEN(rows); k++) {
+            listed |= (rows[k].order == order);
+        }
+        for (m = 0; m < ARRAY_LEN(codes) && !listed; m++) {
+            assert_int_equal(xf_gimbal_supports(codes[m], order),
+                             (order == XF_ORDER_EXTERNAL_TRACK) ? XF_SUPPORT_UNKNOWN : XF_SUPPORT_YES);
+        }
+        for (m = 0; m < ARRAY_LEN(older); m++) {
+            assert_int_equal(xf_gimbal_supports(older[m], order), XF_SUPPORT_UNKNOWN);
+            assert_non_null(xf_gimbal_model(older[m])); /* still named */
+        }
+    }
+    assert_int_equal(xf_gimbal_supports(99, XF_ORDER_TRACK), XF_SUPPORT_UNKNOWN); /* no such model */
+    assert_int_equal(xf_gimbal_supports(58, 0x02), XF_SUPPORT_UNKNOWN);           /* no such order */
+    assert_int_equal(xf_gimbal_supports(0, XF_ORDER_PALETTE), XF_SUPPORT_NO);
+    assert_string_equal(xf_gimbal_model(31), "Z-9B_V3"); /* V2.0.6's name */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -873,6 +937,7 @@ int main(void)
         cmocka_unit_test(test_version_aware_decode),     cmocka_unit_test(test_command_errors),
         cmocka_unit_test(test_field_accessors),          cmocka_unit_test(test_feedback_every_order),
         cmocka_unit_test(test_feedback_from_packet),     cmocka_unit_test(test_feedback_state_inverse),
+        cmocka_unit_test(test_gimbal_supports),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -579,10 +579,42 @@ void xf_client_clear_control(xf_client *c);
  *   ::XF_F_NONE on any other result (xf_command_check()); may be NULL
  * @return ::XF_OK, ::XF_ERR_ARG (NULL @p c or @p cmd), ::XF_ERR_RANGE
  *   (*bad_field names the member) or ::XF_ERR_NOT_FOUND (an order the
- *   protocol does not define), from xf_command_check(); ::XF_ERR_BUSY (queue
- *   full: ::XF_CLIENT_QUEUE commands)
+ *   protocol does not define), from xf_command_check(); ::XF_ERR_UNSUPPORTED
+ *   (the GCU's model does not support the order: xf_client_submit_opt());
+ *   ::XF_ERR_BUSY (queue full: ::XF_CLIENT_QUEUE commands)
  */
 xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_field *bad_field);
+
+/** xf_client_submit_opt() flag: queue the command even if the GCU's model does not support it. */
+#define XF_SUBMIT_ANY_MODEL 0x01u
+
+/**
+ * xf_client_submit() with options. It refuses an order that the model the
+ * GCU reports (sub frame byte 40) does not support by V2.0.6's support list
+ * (xf_client_supports() says ::XF_SUPPORT_NO) with ::XF_ERR_UNSUPPORTED and
+ * queues nothing; with ::XF_SUBMIT_ANY_MODEL in @p flags it queues it all
+ * the same (the application insists: a firmware may do more than the list
+ * says). Before the first sub frame the model is unknown and nothing is
+ * refused for it.
+ * @param c          the client
+ * @param cmd        the command (copied)
+ * @param flags      0, or ::XF_SUBMIT_ANY_MODEL
+ * @param id         receives the command's id, never 0 (may be NULL)
+ * @param bad_field  as for xf_client_submit()
+ * @return what xf_client_submit() returns, and ::XF_ERR_UNSUPPORTED (the
+ *   GCU's model does not support the order: nothing queued)
+ */
+xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags, uint32_t *id, xf_field *bad_field);
+
+/**
+ * What V2.0.6's support list says of @p order on the GCU's model
+ * (xf_gimbal_supports() on the code of the last sub frame).
+ * @param c      the client
+ * @param order  the order byte
+ * @return ::XF_SUPPORT_YES, ::XF_SUPPORT_NO, or ::XF_SUPPORT_UNKNOWN (no sub
+ *   frame yet, a model or an order the list does not have, NULL @p c)
+ */
+xf_support xf_client_supports(const xf_client *c, uint8_t order);
 
 /**
  * Status of command @p id; *result (may be NULL) gets its result once finished.

@@ -172,6 +172,31 @@ XF_API size_t xf_field_size(xf_field f);
 XF_API size_t xf_order_params_len(uint8_t order);
 
 /**
+ * Whether a gimbal model supports an order, as the vendor's V2.0.6 support
+ * list (its appendix 8) says: xf_gimbal_supports().
+ */
+typedef enum xf_support {
+    XF_SUPPORT_UNKNOWN = 0, /**< the list does not know the model (or the order): nothing is claimed */
+    XF_SUPPORT_NO = 1,      /**< the list marks the order as not supported by the model */
+    XF_SUPPORT_YES = 2      /**< supported: marked so, or an order the list leaves out (every model has those) */
+} xf_support;
+
+/**
+ * What V2.0.6's support list says of @p order on the model with
+ * @p gimbal_code (GCU sub frame byte 40, xf_gimbal_model()). The list marks
+ * 18 orders for each of its 20 models (docs/protocol.md §11.8); an order it
+ * leaves out is one every model supports. ::XF_SUPPORT_UNKNOWN for a code
+ * the list does not have (the models only the older V2.0.4 lists, unknown
+ * codes), for external_track (which V2.0.6 dropped) and for a byte that is
+ * no order. The client refuses an order the GCU's model does not support
+ * unless told to insist (xf_client_submit_opt()).
+ * @param gimbal_code  the model code the GCU reports
+ * @param order        the order byte (::xf_order)
+ * @return ::XF_SUPPORT_YES, ::XF_SUPPORT_NO or ::XF_SUPPORT_UNKNOWN
+ */
+XF_API xf_support xf_gimbal_supports(uint8_t gimbal_code, uint8_t order);
+
+/**
  * Zero @p cmd and set its order and the spec's default camera mask
  * (xf_order_info.default_cameras; 0 for an order without a mask or an
  * unknown order). Does nothing for a NULL @p cmd.
@@ -761,6 +786,72 @@ XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed
         }
         return XF_STATE_FAILURE;
     }
+}
+
+/* V2.0.6's support list (appendix 8): its 18 orders, in its order, and per
+ * model a mask with bit k set when the model supports order k. Each comment
+ * repeats the row as the vendor marks it, one column per order. */
+#define XF__SUPPORT_ORDERS 18u
+#define XF__SUPPORT_MODELS 20u
+static const uint8_t xf__support_orders[XF__SUPPORT_ORDERS] = {XF_ORDER_TRACK,
+                                                               XF_ORDER_OSD_COORDINATE,
+                                                               XF_ORDER_AUTO_FLIP,
+                                                               XF_ORDER_TIME_ZONE,
+                                                               XF_ORDER_ZOOM_TO,
+                                                               XF_ORDER_FOCUS,
+                                                               XF_ORDER_PALETTE,
+                                                               XF_ORDER_NIGHT_VISION,
+                                                               XF_ORDER_AREA_TEMP,
+                                                               XF_ORDER_TEMP_ALARM,
+                                                               XF_ORDER_ISOTHERM,
+                                                               XF_ORDER_SPOT_TEMP,
+                                                               XF_ORDER_OSD,
+                                                               XF_ORDER_PIP,
+                                                               XF_ORDER_TARGET_DETECTION,
+                                                               XF_ORDER_DIGITAL_ZOOM,
+                                                               XF_ORDER_LIGHTING,
+                                                               XF_ORDER_RANGING};
+static const uint8_t xf__support_codes[XF__SUPPORT_MODELS] = {0,  2,  25, 26, 31, 40, 41, 44, 45, 49,
+                                                              50, 52, 53, 55, 57, 58, 59, 60, 61, 62};
+static const uint32_t xf__support_masks[XF__SUPPORT_MODELS] = {
+    0x000A1u, /*  0 Z-6A         Y----Y-Y---------- */
+    0x000A0u, /*  2 Z-6C         -----Y-Y---------- */
+    0x200A1u, /* 25 Z-8RB        Y----Y-Y---------Y */
+    0x200A0u, /* 26 Z-8RC        -----Y-Y---------Y */
+    0x320E1u, /* 31 Z-9B_V3      Y----YYY-----Y--YY */
+    0x130B1u, /* 40 D-80AI       Y---YY-Y----YY--Y- */
+    0x230F1u, /* 41 D-90AI       Y---YYYY----YY---Y */
+    0x100B1u, /* 44 D-80Pro      Y---YY-Y--------Y- */
+    0x2FFFFu, /* 45 D-90Pro(TA)  YYYYYYYYYYYYYYYY-Y */
+    0x0501Fu, /* 49 Z-1Pro       YYYYY-------Y-Y--- */
+    0x0501Fu, /* 50 Z-1Mini      YYYYY-------Y-Y--- */
+    0x0705Fu, /* 52 Z-2Mini      YYYYY-Y-----YYY--- */
+    0x2FFFFu, /* 53 D-125AI(T)   YYYYYYYYYYYYYYYY-Y */
+    0x230B1u, /* 55 D-90DE       Y---YY-Y----YY---Y */
+    0x2F0FFu, /* 57 D-125AI(V)   YYYYYYYY----YYYY-Y */
+    0x3FFFFu, /* 58 Z-9B_V4(T)   YYYYYYYYYYYYYYYYYY */
+    0x3F0FFu, /* 59 Z-9B_V4(V)   YYYYYYYY----YYYYYY */
+    0x2F0FFu, /* 60 D-90Pro(VA)  YYYYYYYY----YYYY-Y */
+    0x2BFFEu, /* 61 D-90Pro(T)   -YYYYYYYYYYYYY-Y-Y */
+    0x2B0FEu, /* 62 D-90Pro(V)   -YYYYYYY----YY-Y-Y */
+};
+
+XF_API xf_support xf_gimbal_supports(uint8_t gimbal_code, uint8_t order)
+{
+    unsigned m = 0, k = 0;
+    while (m < XF__SUPPORT_MODELS && xf__support_codes[m] != gimbal_code) {
+        m++;
+    }
+    if (m == XF__SUPPORT_MODELS || order == XF_ORDER_EXTERNAL_TRACK || xf_order_lookup(order) == NULL) {
+        return XF_SUPPORT_UNKNOWN;
+    }
+    while (k < XF__SUPPORT_ORDERS && xf__support_orders[k] != order) {
+        k++;
+    }
+    if (k == XF__SUPPORT_ORDERS) {
+        return XF_SUPPORT_YES; /* the list's rule: an order it leaves out is supported by every model */
+    }
+    return ((xf__support_masks[m] >> k) & 1u) ? XF_SUPPORT_YES : XF_SUPPORT_NO;
 }
 
 #endif /* XF_EMIT_DEFINITIONS */

@@ -13,7 +13,8 @@
  *   value outside its type). ::XF_ERR_NO_SPACE: the output buffer is too
  *   small. ::XF_ERR_RANGE: a value is outside its field's range (the member
  *   at fault is named where there is one: `bad_field`, an ::xf_field).
- *   ::XF_ERR_UNSUPPORTED: a valid request this build or link cannot do.
+ *   ::XF_ERR_UNSUPPORTED: a valid request this build, link or gimbal model
+ *   cannot do.
  *   ::XF_ERR_CONFIG: the caller and the library were built with other layout
  *   options (xf_config.h).
  * - **The input.** ::XF_ERR_HEADER, ::XF_ERR_LENGTH, ::XF_ERR_CRC,
@@ -57,7 +58,7 @@ typedef enum xf_err {
     XF_ERR_ARG = -2,         /**< invalid argument (NULL pointer, bad enum): a bug in the caller */
     XF_ERR_NO_SPACE = -3,    /**< the output buffer is too small */
     XF_ERR_RANGE = -4,       /**< a value is outside its field's range; the field is named */
-    XF_ERR_UNSUPPORTED = -5, /**< valid, but not supported by this build or link */
+    XF_ERR_UNSUPPORTED = -5, /**< valid, but not supported by this build, link or gimbal model */
     XF_ERR_CONFIG = -6,      /**< the library was built with other layout options than the caller (xf_config.h) */
     /* the input */
     XF_ERR_HEADER = -10,    /**< the two header bytes are wrong for the direction */

@@ -252,7 +252,7 @@ XF_API const char *xf_gimbal_model(uint8_t gimbal_code)
     case 26: return "Z-8RC";
     case 27: return "Z-8LA";
     case 30: return "Z-9A";
-    case 31: return "Z-9B";
+    case 31: return "Z-9B_V3"; /* "Z-9B" in V2.0.4 */
     case 40: return "D-80AI";
     case 41: return "D-90AI";
     case 44: return "D-80Pro";

@@ -38,7 +38,8 @@ XF_BEGIN_DECLS
 /** A simulator's configuration; start from xf_sim_config_init(). */
 typedef struct xf_sim_config {
     uint8_t version;     /**< version byte of replies: 1 or 2; default 1 */
-    uint8_t gimbal_code; /**< default 40 (D-80AI) */
+    uint8_t gimbal_code; /**< model code reported; default 58 (Z-9B_V4(T), which has every order); an order the
+                            model does not support (xf_gimbal_supports()) fails */
     /** @var xf_sim_config::hw_version
      *  hardware version reported, default 3 */
     uint8_t hw_version, fw_version; /**< firmware version reported, default 12 */

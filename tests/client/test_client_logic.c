@@ -860,8 +860,8 @@ static void test_telemetry_and_ages(void **state)
     assert_true(r->now - h->last_rx_ms <= 20u);
     assert_int_equal(t->version, 1);
     assert_int_equal(t->gimbal_mode, XF_MODE_HEAD_LOCK);
-    assert_int_equal(t->gimbal_code, 40);
-    assert_string_equal(xf_gimbal_model(t->gimbal_code), "D-80AI");
+    assert_int_equal(t->gimbal_code, 58);
+    assert_string_equal(xf_gimbal_model(t->gimbal_code), "Z-9B_V4(T)");
     assert_int_equal(t->hw_version, 3);
     assert_int_equal(t->fw_version, 12);
     assert_int_equal(t->zoom_cam1, 10); /* 1.0x in 0.1 x */
@@ -915,7 +915,7 @@ static void test_telemetry_and_ages(void **state)
     assert_int_equal(t->target_offset_y, 999);
     assert_int_equal(t->pod_status, XF_POD_TRACKING_OK | XF_POD_UPWARD_MOUNT);
     assert_int_equal(t->sub_ms, sub_seen);
-    assert_int_equal(t->gimbal_code, 40); /* sub values kept from the last sub frame */
+    assert_int_equal(t->gimbal_code, 58); /* sub values kept from the last sub frame */
     /* a ranging sub frame: every sub field, V2 ones too */
     p.version = 2;
     p.sub.sub_header = XF_SUB_HEADER;
@@ -2203,6 +2203,49 @@ static void test_tap_own_clock(void **state)
     ct_rig_free(r);
 }
 
+/* The GCU's model decides what goes: an order its model does not have (V2.0.6's support list)
+ * is refused, nothing queued, unless the application insists; before the first sub frame the
+ * model is unknown and nothing is refused. The simulated Z-6A (code 0) has focus, not palette. */
+static void test_submit_model_support(void **state)
+{
+    xf_sim_config sc;
+    ct_rig *r;
+    xf_command palette, focus;
+    xf_cmd_result res;
+    uint32_t id = 0;
+    (void)state;
+    xf_sim_config_init(&sc);
+    sc.gimbal_code = 0;
+    r = ct_rig_new(NULL, &sc);
+    xf_command_init(&palette, XF_ORDER_PALETTE);
+    palette.value = 1;
+    xf_command_init(&focus, XF_ORDER_FOCUS);
+    assert_int_equal(xf_client_supports(&r->c, XF_ORDER_PALETTE), XF_SUPPORT_UNKNOWN);
+    assert_xf(xf_client_submit(&r->c, &palette, &id, NULL), XF_OK); /* no sub frame yet: it goes */
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_FAILED);    /* and the model fails it */
+    assert_int_equal(r->s.stats.executed[XF_ORDER_PALETTE], 1);
+    assert_int_equal(xf_client_telemetry(&r->c)->have_sub, 1);
+    assert_int_equal(xf_client_supports(&r->c, XF_ORDER_PALETTE), XF_SUPPORT_NO);
+    assert_int_equal(xf_client_supports(&r->c, XF_ORDER_FOCUS), XF_SUPPORT_YES);
+    assert_int_equal(xf_client_supports(&r->c, XF_ORDER_EXTERNAL_TRACK), XF_SUPPORT_UNKNOWN);
+    assert_int_equal(xf_client_supports(NULL, XF_ORDER_FOCUS), XF_SUPPORT_UNKNOWN);
+    /* refused: id untouched, nothing queued, nothing sent */
+    id = 77;
+    assert_xf(xf_client_submit(&r->c, &palette, &id, NULL), XF_ERR_UNSUPPORTED);
+    assert_int_equal(id, 77);
+    assert_int_equal(r->c.q_count, 0);
+    ct_run(r, 200);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_PALETTE], 1);
+    /* insisting sends it; the GCU answers as its model does */
+    assert_xf(xf_client_submit_opt(&r->c, &palette, XF_SUBMIT_ANY_MODEL, &id, NULL), XF_OK);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_FAILED);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_PALETTE], 2);
+    /* a supported order goes as always, with or without the flag */
+    assert_xf(xf_client_submit_opt(&r->c, &focus, 0u, &id, NULL), XF_OK);
+    assert_status(ct_run_cmd(r, id, 1000, &res), XF_CMD_OK);
+    ct_rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2236,6 +2279,7 @@ int main(void)
         cmocka_unit_test(test_wire_agrees_with_the_codec),
         cmocka_unit_test(test_protocol_v2_rates),
         cmocka_unit_test(test_protocol_v2_orders),
+        cmocka_unit_test(test_submit_model_support),
         cmocka_unit_test(test_carrier_only_while_fresh),
         cmocka_unit_test(test_gnss_only_while_fresh),
         cmocka_unit_test(test_watchdog_zeroes_rates),

@@ -249,7 +249,7 @@ static void test_telemetry_ages(void **state)
     assert_true(tel->have_main && tel->have_sub);
     assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) < 60u);
     assert_true(xf_ms_since(now(), tel->sub_ms) < 60u);
-    assert_string_equal(xf_gimbal_model(tel->gimbal_code), "D-80AI");
+    assert_string_equal(xf_gimbal_model(tel->gimbal_code), "Z-9B_V4(T)");
     assert_int_equal(tel->gimbal_mode, XF_MODE_HEAD_LOCK);
     t->sim.fault.silent = 1;
     pump(t, 30);

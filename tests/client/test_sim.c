@@ -85,7 +85,7 @@ static void test_init(void **state)
     (void)state;
     xf_sim_config_init(&cfg);
     assert_int_equal(cfg.version, 1);
-    assert_int_equal(cfg.gimbal_code, 40);
+    assert_int_equal(cfg.gimbal_code, 58);
     cfg.version = 3;
     assert_xf(xf_sim_init(&s, &cfg), XF_ERR_RANGE);
     cfg.version = 0;
@@ -482,7 +482,7 @@ static void test_unknown_sub_request(void **state)
     }
     send_order(f, 1, XF_ORDER_NULL, NULL);
     assert_int_equal(f->out[XF_OFF_SUB], XF_SUB_HEADER);
-    assert_int_equal(f->out[XF_OFF_SUB + 3], 40);
+    assert_int_equal(f->out[XF_OFF_SUB + 3], 58); /* the default model code */
     free(f);
 }
 
@@ -582,6 +582,43 @@ static void test_orthoview_slew(void **state)
     free(f);
 }
 
+/* The model code picks the orders: one its model lacks (V2.0.6's support list) fails, the
+ * same order on a model that has it succeeds. */
+static void test_model_orders(void **state)
+{
+    static const struct {
+        uint8_t code, order, state;
+    } cases[] = {
+        {0, XF_ORDER_PALETTE, XF_STATE_FAILURE},  /* Z-6A: no palette */
+        {41, XF_ORDER_PALETTE, XF_STATE_SUCCESS}, /* D-90AI: palette */
+        {0, XF_ORDER_FOCUS, XF_STATE_SUCCESS},    /* Z-6A: focus */
+        {49, XF_ORDER_FOCUS, XF_STATE_FAILURE},   /* Z-1Pro: no focus */
+        {3, XF_ORDER_FOCUS, XF_STATE_SUCCESS},    /* a V2.0.4 model: the list does not know it */
+        {58, XF_ORDER_SPOT_TEMP, XF_STATE_SUCCESS},
+        {59, XF_ORDER_SPOT_TEMP, XF_STATE_FAILURE}, /* Z-9B_V4(V): no thermometry */
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+        xf_sim_config cfg;
+        sim_fx *f;
+        xf_command cmd;
+        xf_gcu_packet r;
+        xf_sim_config_init(&cfg);
+        cfg.version = 2;
+        cfg.gimbal_code = cases[i].code;
+        f = fx_new(&cfg);
+        valid_command(&cmd, cases[i].order);
+        send_cmd(f, 2, &cmd, &r);
+        assert_int_equal(f->out_len, 73);
+        if (r.params[0] != cases[i].state) {
+            print_error("model %u, %s: state %u\n", cases[i].code, xf_order_name(cases[i].order), r.params[0]);
+            fail();
+        }
+        free(f);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -589,6 +626,7 @@ int main(void)
         cmocka_unit_test(test_reply_lengths),
         cmocka_unit_test(test_answers_only_correct_packets),
         cmocka_unit_test(test_once_rule),
+        cmocka_unit_test(test_model_orders),
         cmocka_unit_test(test_every_order_gets_feedback),
         cmocka_unit_test(test_configured_failures),
         cmocka_unit_test(test_feedback_after),

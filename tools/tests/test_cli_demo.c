@@ -19,7 +19,7 @@
 static void test_demo(void **state)
 {
     static const char *const needles[] = {
-        "simulated GCU  D-80AI on tcp 127.0.0.1:",
+        "simulated GCU  Z-9B_V4(T) on tcp 127.0.0.1:",
         "[ 1] connect",
         "< first reply after ",
         "head_lock: ok",

@@ -155,6 +155,24 @@ static void test_send_v2(void **state)
     tool_result_free(&r);
 }
 
+/* An order the GCU's model lacks (V2.0.6's support list) is not sent without --force; with it,
+ * the GCU (a simulated Z-6A, code 0: focus, no palette) answers failed. */
+static void test_send_model_support(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    tool_result r;
+    sim_start(s, SIM_TCP, "--model", "0", "--verbose", NULL);
+    r = run_on(s, "send", "palette", "--mode", "1", NULL);
+    assert_failure(&r, 1, "send palette: the GCU's model Z-6A (code 0) does not support it", "--force", NULL);
+    tool_result_free(&r);
+    r = run_on(s, "send", "palette", "--mode", "1", "--force", NULL);
+    expect(&r, 1, "failed cameras 0x01\n");
+    tool_result_free(&r);
+    r = run_on(s, "send", "--force", "focus", NULL);
+    expect(&r, 0, "ok\n");
+    tool_result_free(&r);
+}
+
 /* ---- no GCU -------------------------------------------------------------------------- */
 
 /* A local port that refuses connections (bound, not listening) or swallows datagrams, held while in use. */
@@ -436,6 +454,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_send_failed_mask, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_calibration, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_v2, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_model_support, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_no_gcu),
         cmocka_unit_test_setup_teardown(test_sim_port_taken, sim_setup_tcp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_monitor_json, sim_setup_tcp, sim_teardown),

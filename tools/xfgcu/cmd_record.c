@@ -99,8 +99,9 @@ static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_comm
     if (r->file == NULL) {
         return cli_fail("record: missing FILE (where the capture goes)");
     }
-    return (r->spec != NULL) ? cmdargs_parse(r->spec, "record", argc - a.index, argv + a.index, &version, NULL, cmd)
-                             : XFGCU_EXIT_OK;
+    return (r->spec != NULL)
+               ? cmdargs_parse(r->spec, "record", argc - a.index, argv + a.index, &version, NULL, NULL, cmd)
+               : XFGCU_EXIT_OK;
 }
 
 /* ---- callbacks ------------------------------------------------------------------------ */

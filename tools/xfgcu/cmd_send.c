@@ -18,7 +18,7 @@
 
 void help_send(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol 1|2]\n"
+    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol 1|2] [--force]\n"
           "       xfgcu send COMMAND --help\n\n"
           "Run one command on the GCU the way the protocol wants: null packets, then the command in\n"
           "every packet until a reply carries its execution state, then null packets again.\n"
@@ -29,6 +29,8 @@ void help_send(FILE *out)
           "  operating                calibration in progress (then the final state)\n"
           "  timeout                  no execution state within --timeout ms (exit 3)\n"
           "  link lost                the link went down before the answer (exit 3)\n\n"
+          "An order that the model the GCU reports does not have (by the vendor's V2.0.6 support list)\n"
+          "is not sent: one line on stderr says so (exit 1); --force sends it all the same.\n\n"
           "commands (the same names and arguments as `xfgcu encode`):\n",
           out);
     cmdargs_list(out);
@@ -49,13 +51,14 @@ static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_
     fflush(stdout);
 }
 
-static int run_send(const cli_link *link, const xf_command *cmd, const char *name)
+static int run_send(const cli_link *link, const xf_command *cmd, const char *name, int force)
 {
     online *o = online_new();
     xf_cmd_result r;
     char text[64], what[64];
     int rc = (o != NULL) ? online_open(o, link, "send", NULL) : XFGCU_EXIT_USAGE;
     if (rc == XFGCU_EXIT_OK) {
+        o->submit_flags = force ? XF_SUBMIT_ANY_MODEL : 0u;
         rc = online_run(o, cmd, &r, on_operating, NULL);
     }
     if (rc == XFGCU_EXIT_OK) {
@@ -85,5 +88,5 @@ int cmd_send(const cli_link *link, int argc, char **argv)
     }
     with_version.protocol = l.version;
     cli_signals_init();
-    return run_send(&with_version, &l.cmd, cmdargs_name(l.spec));
+    return run_send(&with_version, &l.cmd, cmdargs_name(l.spec), l.force);
 }

@@ -37,6 +37,8 @@ void help_sim(FILE *out)
           "  --bind ADDR           address to listen on for --tcp and --udp (default 127.0.0.1)\n\n"
           "behaviour:\n"
           "  --protocol 1|2        version of the replies (default 1; V0.2 adds thermal and camera status)\n"
+          "  --model CODE          the model code it reports, 0..255 (default 58, Z-9B_V4(T), which has\n"
+          "                        every order); orders the model lacks (V2.0.6's support list) fail\n"
           "  --fail ORDER=STATE    executions of ORDER answer STATE: shutter=1, zoom-in=0x02 (camera 2\n"
           "                        failed), 0x20=1; repeatable\n"
           "  --drop PERMILLE       drop this share of replies at random, 0..1000\n"
@@ -56,6 +58,8 @@ typedef struct sim_args {
     const char *serial, *bind, *link;
     long baud;
     uint8_t version;
+    long model;
+    int has_model;
     uint8_t fail[256];
     long drop, delay, calibration_ms;
     int has_baud, has_drop, has_delay, has_calibration;
@@ -72,6 +76,7 @@ enum {
     O_BAUD,
     O_BIND,
     O_PROTOCOL,
+    O_MODEL,
     O_FAIL,
     O_DROP,
     O_DELAY,
@@ -90,6 +95,7 @@ static const struct option sim_options[] = {
     {"baud", required_argument, NULL, O_BAUD},
     {"bind", required_argument, NULL, O_BIND},
     {"protocol", required_argument, NULL, O_PROTOCOL},
+    {"model", required_argument, NULL, O_MODEL},
     {"fail", required_argument, NULL, O_FAIL},
     {"drop", required_argument, NULL, O_DROP},
     {"delay", required_argument, NULL, O_DELAY},
@@ -152,6 +158,7 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_BAUD: return cli_value_baud(a, &s->baud, &s->has_baud);
     case O_BIND: return cli_value_text(a, "ADDR", &s->bind);
     case O_PROTOCOL: return cli_value_protocol(a, &s->version);
+    case O_MODEL: return cli_value_long(a, 0, 255, "a model code 0..255", &s->model, &s->has_model);
     case O_FAIL: return take_fail(s, a->value);
     case O_DROP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->drop, &s->has_drop);
     case O_DELAY: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->delay, &s->has_delay);
@@ -248,6 +255,9 @@ static int start_sim(sim_run *s, const sim_args *a)
     int k;
     xf_sim_config_init(&sc);
     sc.version = a->version;
+    if (a->has_model) {
+        sc.gimbal_code = (uint8_t)a->model;
+    }
     if (a->has_calibration) {
         sc.calibration_ms = (uint32_t)a->calibration_ms;
     }

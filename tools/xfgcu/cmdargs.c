@@ -751,6 +751,7 @@ static int take_cameras(parse_state *st, const char *text)
 #define ID_PROTOCOL 'p'
 #define ID_HELP     'h'
 #define ID_JSON     'j'
+#define ID_FORCE    'f'
 
 static int take_option(parse_state *st, const cli_args *a, int id)
 {
@@ -859,14 +860,16 @@ static int check_with_codec(const parse_state *st, uint8_t version)
                        bad != XF_F_NONE ? xf_field_name(bad) : "");
 }
 
-/* The command's options for getopt_long(), with --cameras where the order takes a mask, and
- * --protocol and --help when @p line (encode and send take them after COMMAND too). */
-static void command_options(const cmd_spec *spec, int line, struct option *opts)
+/* The command's options for getopt_long(), with --cameras where the order takes a mask,
+ * --protocol and --help when @p line (encode and send take them after COMMAND too), and
+ * --force when @p force (send's). */
+static void command_options(const cmd_spec *spec, int line, int force, struct option *opts)
 {
     static const struct option extra[] = {{"cameras", required_argument, NULL, ID_CAMERAS},
                                           {"protocol", required_argument, NULL, ID_PROTOCOL},
                                           {"help", no_argument, NULL, ID_HELP},
-                                          {NULL, 0, NULL, 0}};
+                                          {NULL, 0, NULL, 0},
+                                          {"force", no_argument, NULL, ID_FORCE}};
     size_t i, n = 0;
     for (i = 0; i < spec->extra->nopts; i++) {
         const opt_spec *o = &spec->extra->opts[i];
@@ -881,13 +884,16 @@ static void command_options(const cmd_spec *spec, int line, struct option *opts)
     for (i = 1; line && i < 3u; i++) {
         opts[n++] = extra[i];
     }
+    if (force) {
+        opts[n++] = extra[4];
+    }
     opts[n] = extra[3];
 }
 
 /* The first pass over the arguments of encode and send: --protocol (the last one wins) and
  * --help, wherever they are; nothing else is checked when --help is there. */
 static int take_line_options(const parse_state *st, int argc, char **argv, const struct option *opts, uint8_t *version,
-                             int *help)
+                             int *help, int *force)
 {
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
@@ -898,15 +904,17 @@ static int take_line_options(const parse_state *st, int argc, char **argv, const
             rc = cli_value_protocol(&a, version);
         } else if (id == ID_HELP) {
             *help = 1;
+        } else if (id == ID_FORCE && force != NULL) { /* only offered with a place for it */
+            *force = 1;
         }
     }
     return rc;
 }
 
-int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help,
+int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
                   xf_command *cmd)
 {
-    struct option opts[MAX_OPTS + 4];
+    struct option opts[MAX_OPTS + 5];
     parse_state st;
     cli_args a;
     char hint[64];
@@ -915,9 +923,9 @@ int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, 
     st.spec = spec;
     snprintf(st.where, sizeof(st.where), "%s %s", who, spec->name);
     snprintf(hint, sizeof(hint), "send %s", spec->name);
-    command_options(spec, help != NULL, opts);
+    command_options(spec, help != NULL, force != NULL, opts);
     if (help != NULL) {
-        rc = take_line_options(&st, argc, argv, opts, version, help);
+        rc = take_line_options(&st, argc, argv, opts, version, help, force);
         if (rc != XFGCU_EXIT_OK || *help) {
             return rc;
         }
@@ -969,7 +977,7 @@ static int command_of_line(cmd_line *l, const char *who, int argc, char **argv)
     if ((l->spec = cmdargs_find(argv[0])) == NULL) {
         return cli_fail("%s: unknown command '%s' (see 'xfgcu %s --help')", who, argv[0], who);
     }
-    return cmdargs_parse(l->spec, who, argc, argv, &l->version, &l->help, &l->cmd);
+    return cmdargs_parse(l->spec, who, argc, argv, &l->version, &l->help, l->with_force ? &l->force : NULL, &l->cmd);
 }
 
 int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json, void (*help)(FILE *out), int argc,
@@ -978,18 +986,21 @@ int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json,
     static const struct option opts[] = {{"protocol", required_argument, NULL, ID_PROTOCOL},
                                          {"help", no_argument, NULL, ID_HELP},
                                          {"json", required_argument, NULL, ID_JSON},
-                                         {NULL, 0, NULL, 0}};
-    struct option without_json[3] = {opts[0], opts[1], opts[3]};
+                                         {NULL, 0, NULL, 0},
+                                         {"force", no_argument, NULL, ID_FORCE}};
+    struct option with_force[4] = {opts[0], opts[1], opts[4], opts[3]}; /* send: --force, no --json */
     cli_args a;
     int id, rest, rc = XFGCU_EXIT_OK;
     memset(l, 0, sizeof(*l));
     l->version = version;
-    cli_args_init(&a, argc, argv, CLI_STOP, with_json ? opts : without_json, who);
+    l->with_force = !with_json;
+    cli_args_init(&a, argc, argv, CLI_STOP, with_json ? opts : with_force, who);
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         switch (id) {
         case CLI_BAD: rc = XFGCU_EXIT_USAGE; break;
         case ID_PROTOCOL: rc = cli_value_protocol(&a, &l->version); break;
         case ID_HELP: l->help = 1; break;
+        case ID_FORCE: l->force = 1; break;
         default: rc = take_json(&a, &l->json); break;
         }
     }

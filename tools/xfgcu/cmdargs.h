@@ -26,9 +26,10 @@ const char *cmdargs_name(const cmd_spec *spec);
  * and check them for protocol *@p version. @p who prefixes messages
  * ("encode"). With @p help (encode, send), --protocol (into *@p version) and
  * --help are taken too, wherever they are; when --help is there, *@p help is
- * set and nothing else is parsed. Prints any error. @return an exit code.
+ * set and nothing else is parsed. With @p force (send), --force sets
+ * *@p force. Prints any error. @return an exit code.
  */
-int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help,
+int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
                   xf_command *cmd);
 
 /** Usage and option details of one command. */
@@ -41,6 +42,8 @@ typedef struct cmd_line {
     uint8_t version;      /* the last --protocol, else the default */
     int help;             /* --help given (the command's arguments are then not parsed) */
     const char *json;     /* encode's --json OBJECT, or NULL */
+    int with_force;       /* send: --force is one of its options */
+    int force;            /* send's --force: an order the GCU's model lacks goes all the same */
     const cmd_spec *spec; /* COMMAND, or NULL */
     xf_command cmd;       /* its arguments, parsed (unless help) */
 } cmd_line;

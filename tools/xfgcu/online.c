@@ -298,9 +298,17 @@ int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_p
     uint32_t id = 0, since = 0;
     int reported = 0;
     xf_field bad = XF_F_NONE;
-    xf_err err = xf_client_submit(&o->client, cmd, &id, &bad);
+    xf_err err = xf_client_submit_opt(&o->client, cmd, o->submit_flags, &id, &bad);
     memset(result, 0, sizeof(*result));
     result->order = cmd->order;
+    if (err == XF_ERR_UNSUPPORTED) {
+        const xf_telemetry *t = xf_client_telemetry(&o->client);
+        const char *model = xf_gimbal_model(t->gimbal_code);
+        return cli_report(XFGCU_EXIT_FAILED, NULL,
+                          "%s %s: the GCU's model %s (code %u) does not support it, by V2.0.6's support list; "
+                          "--force sends it all the same",
+                          o->context, xf_order_name(cmd->order), model != NULL ? model : "?", (unsigned)t->gimbal_code);
+    }
     if (err != XF_OK) {
         return cli_fail("%s %s: %s%s%s", o->context, xf_order_name(cmd->order), xf_strerror(err),
                         bad != XF_F_NONE ? ": " : "", bad != XF_F_NONE ? xf_field_name(bad) : "");

@@ -64,7 +64,8 @@ typedef struct online {
     xf_tap tap;
     xf_hal hal; /* what the client uses: raw, or tapped */
     xf_client client;
-    uint32_t up_ms; /* how long the first reply took */
+    uint32_t up_ms;        /* how long the first reply took */
+    unsigned submit_flags; /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
 } online;
 
 /** The link options name a link? Prints the usage error if not. @return an exit code. */
