@@ -626,6 +626,22 @@ static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t 
     return XF_OK;
 }
 
+uint8_t xf_client_gcu_version(const xf_client *c)
+{
+    if (c == NULL) {
+        return 0;
+    }
+    return c->tele.have_main ? c->tele.version : c->cfg.protocol_version;
+}
+
+xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
+{
+    xf_command cmd;
+    xf_command_init(&cmd, XF_ORDER_OSD);
+    cmd.value = xf_osd_value(show, xf_client_gcu_version(c));
+    return (c == NULL) ? XF_ERR_ARG : xf_client_submit(c, &cmd, id, NULL);
+}
+
 xf_support xf_client_supports(const xf_client *c, uint8_t order)
 {
     if (c == NULL || !c->tele.have_sub) {
@@ -649,7 +665,7 @@ xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags,
         }
         return XF_ERR_ARG;
     }
-    err = xf__slot_encode(&encoded, cmd, c->cfg.protocol_version, bad_field);
+    err = xf__slot_encode(&encoded, cmd, xf_client_gcu_version(c), bad_field);
     if (err != XF_OK) {
         return err;
     }
@@ -730,7 +746,7 @@ xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16
     cmd.dx = dx;
     cmd.dy = dy;
     cmd.value = 2; /* start / keep tracking */
-    err = xf__slot_encode(&encoded, &cmd, c->cfg.protocol_version, NULL);
+    err = xf__slot_encode(&encoded, &cmd, xf_client_gcu_version(c), NULL);
     if (err == XF_OK) { /* a refused call leaves a running stream as it was */
         XF_MEMCPY(c->stream, encoded.params, sizeof(c->stream));
         c->stream_on = 1;

@@ -261,7 +261,9 @@ static uint8_t xf__camera_order(xf_sim *s, const xf_command *c)
         }
         break;
     case XF_ORDER_RANGING: xf__set_bit16(&s->pod_status, XF_POD_RANGING_ON, c->value == 2u); break;
-    case XF_ORDER_OSD: xf__set_bit16(&s->camera_status, XF_CAMERA_OSD_ON, c->value == 0u); break;
+    case XF_ORDER_OSD: /* the meaning of TT follows the version the simulator speaks */
+        xf__set_bit16(&s->camera_status, XF_CAMERA_OSD_ON, c->value == xf_osd_value(1, s->cfg.version));
+        break;
     case XF_ORDER_PIP: {
         uint16_t pip = (uint16_t)(c->value != 0u ? c->value : ((s->camera_status & XF_CAMERA_PIP_MASK) % 4u) + 1u);
         s->camera_status = (uint16_t)((s->camera_status & (uint16_t)~XF_CAMERA_PIP_MASK) | pip);

@@ -864,6 +864,17 @@ static void test_feedback_state_inverse(void **state)
     }
 }
 
+/* OSD 0x73: V0.1 (V2.0.4) 0 = shown, 1 = hidden; V0.2 (V2.0.6) 0 = off, 1 = on. */
+static void test_osd_value(void **state)
+{
+    (void)state;
+    assert_int_equal(xf_osd_value(1, XF_PROTOCOL_V1), 0);
+    assert_int_equal(xf_osd_value(0, XF_PROTOCOL_V1), 1);
+    assert_int_equal(xf_osd_value(1, XF_PROTOCOL_V2), 1);
+    assert_int_equal(xf_osd_value(0, XF_PROTOCOL_V2), 0);
+    assert_int_equal(xf_osd_value(7, 3), 1); /* any nonzero shows; a later version as V0.2 */
+}
+
 /* V2.0.6's support list (appendix 8) as the vendor lays it out: one row per order, one column
  * per model, 'Y' where the order is marked supported; typed from the vendor's table apart from
  * the header's per-model masks, so that each checks the other. */
@@ -937,7 +948,7 @@ int main(void)
         cmocka_unit_test(test_version_aware_decode),     cmocka_unit_test(test_command_errors),
         cmocka_unit_test(test_field_accessors),          cmocka_unit_test(test_feedback_every_order),
         cmocka_unit_test(test_feedback_from_packet),     cmocka_unit_test(test_feedback_state_inverse),
-        cmocka_unit_test(test_gimbal_supports),
+        cmocka_unit_test(test_gimbal_supports),          cmocka_unit_test(test_osd_value),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

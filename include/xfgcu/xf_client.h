@@ -563,7 +563,8 @@ void xf_client_clear_control(xf_client *c);
  * Queue @p cmd (checked against the protocol version). *id (may be NULL)
  * identifies it for xf_client_command_status and the result callback.
  *
- * The command is checked and encoded now, for cfg.protocol_version, and
+ * The command is checked and encoded now, for the version the GCU speaks
+ * (xf_client_gcu_version(): cfg.protocol_version until it answers), and
  * runs when the commands before it have finished: it is sent in every
  * packet until a reply carries its execution state, then a null packet
  * follows. A command of the same order as the last one waits until a reply
@@ -584,6 +585,28 @@ void xf_client_clear_control(xf_client *c);
  *   ::XF_ERR_BUSY (queue full: ::XF_CLIENT_QUEUE commands)
  */
 xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_field *bad_field);
+
+/**
+ * The protocol version whose meaning the client follows: the one the GCU
+ * speaks (the version byte of its replies) once it has answered, before
+ * that cfg.protocol_version. Commands are checked and encoded for it
+ * (ranges such as palette and picture-in-picture); the version byte the
+ * client sends stays cfg.protocol_version.
+ * @param c  the client
+ * @return 1 or 2 (what the GCU sends), or 0 for a NULL @p c
+ */
+uint8_t xf_client_gcu_version(const xf_client *c);
+
+/**
+ * Show or hide the on-screen display: an ::XF_ORDER_OSD command with the
+ * value that means it in the GCU's version (xf_osd_value(); the meaning was
+ * inverted between V0.1 and V0.2), queued as xf_client_submit() queues.
+ * @param c     the client
+ * @param show  nonzero to show the OSD, 0 to hide it
+ * @param id    receives the command's id (may be NULL)
+ * @return as xf_client_submit()
+ */
+xf_err xf_client_osd(xf_client *c, int show, uint32_t *id);
 
 /** xf_client_submit_opt() flag: queue the command even if the GCU's model does not support it. */
 #define XF_SUBMIT_ANY_MODEL 0x01u

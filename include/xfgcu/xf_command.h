@@ -172,6 +172,17 @@ XF_API size_t xf_field_size(xf_field f);
 XF_API size_t xf_order_params_len(uint8_t order);
 
 /**
+ * The `value` (TT) of an ::XF_ORDER_OSD command that shows or hides the
+ * on-screen display, for the protocol version the GCU speaks: its meaning
+ * was inverted (docs/protocol.md §11.4). V0.1 (V2.0.4): 0 shows, 1 hides;
+ * V0.2 (V2.0.6): 0 = off, 1 = on.
+ * @param show     nonzero to show the OSD, 0 to hide it
+ * @param version  the protocol version the GCU speaks (1 or 2; above 2 as 2)
+ * @return 0 or 1
+ */
+XF_API uint8_t xf_osd_value(int show, uint8_t version);
+
+/**
  * Whether a gimbal model supports an order, as the vendor's V2.0.6 support
  * list (its appendix 8) says: xf_gimbal_supports().
  */
@@ -835,6 +846,11 @@ static const uint32_t xf__support_masks[XF__SUPPORT_MODELS] = {
     0x2BFFEu, /* 61 D-90Pro(T)   -YYYYYYYYYYYYY-Y-Y */
     0x2B0FEu, /* 62 D-90Pro(V)   -YYYYYYY----YY-Y-Y */
 };
+
+XF_API uint8_t xf_osd_value(int show, uint8_t version)
+{
+    return (uint8_t)((version >= XF_PROTOCOL_V2) == (show != 0)); /* V0.2: 1 = on; V0.1: 0 = shown */
+}
 
 XF_API xf_support xf_gimbal_supports(uint8_t gimbal_code, uint8_t order)
 {

@@ -2246,6 +2246,46 @@ static void test_submit_model_support(void **state)
     ct_rig_free(r);
 }
 
+/* The GCU's version decides meaning: commands are checked for the version it speaks once it has
+ * answered (palette 0..100 in V0.1, 0..10 in V0.2), and the OSD helper sends the value that
+ * means show or hide in it (inverted in V0.2). The version byte sent stays the configured one. */
+static void test_gcu_version_decides(void **state)
+{
+    static const uint8_t versions[] = {1, 2};
+    size_t v;
+    (void)state;
+    for (v = 0; v < 2u; v++) {
+        xf_sim_config sc;
+        ct_rig *r;
+        xf_command palette;
+        xf_field bad = XF_F_NONE;
+        uint32_t id = 0;
+        xf_sim_config_init(&sc);
+        sc.version = versions[v];
+        r = ct_rig_new(NULL, &sc); /* the client's configured version is 1 */
+        assert_int_equal(xf_client_gcu_version(&r->c), 1);
+        assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+        assert_int_equal(xf_client_gcu_version(&r->c), versions[v]);
+        xf_command_init(&palette, XF_ORDER_PALETTE);
+        palette.value = 50;
+        assert_xf(xf_client_submit(&r->c, &palette, &id, &bad), versions[v] == 2 ? XF_ERR_RANGE : XF_OK);
+        assert_int_equal(bad, versions[v] == 2 ? XF_F_VALUE : XF_F_NONE);
+        if (versions[v] == 1) {
+            assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+        }
+        assert_xf(xf_client_osd(&r->c, 0, &id), XF_OK);
+        assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+        assert_int_equal(r->s.camera_status & XF_CAMERA_OSD_ON, 0); /* hidden, whatever the version */
+        assert_int_equal(r->s.host.version, 1);
+        assert_xf(xf_client_osd(&r->c, 1, &id), XF_OK);
+        assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+        assert_int_equal(r->s.camera_status & XF_CAMERA_OSD_ON, XF_CAMERA_OSD_ON);
+        ct_rig_free(r);
+    }
+    assert_int_equal(xf_client_gcu_version(NULL), 0);
+    assert_xf(xf_client_osd(NULL, 1, NULL), XF_ERR_ARG);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2280,6 +2320,7 @@ int main(void)
         cmocka_unit_test(test_protocol_v2_rates),
         cmocka_unit_test(test_protocol_v2_orders),
         cmocka_unit_test(test_submit_model_support),
+        cmocka_unit_test(test_gcu_version_decides),
         cmocka_unit_test(test_carrier_only_while_fresh),
         cmocka_unit_test(test_gnss_only_while_fresh),
         cmocka_unit_test(test_watchdog_zeroes_rates),

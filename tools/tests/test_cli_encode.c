@@ -97,6 +97,9 @@ static const named_case cases[] = {
     {{"night-vision", "--mode", "off"}, 1, 0x2B, 2, {0x01, 0x00}},
     {{"osd", "--hide"}, 1, 0x73, 1, {0x01}},
     {{"osd", "--show"}, 1, 0x73, 1, {0x00}},
+    /* V0.2 inverted the meaning: 1 = on (docs/protocol.md §11.4) */
+    {{"--protocol", "2", "osd", "--hide"}, 2, 0x73, 1, {0x00}},
+    {{"osd", "--show", "--protocol", "2"}, 2, 0x73, 1, {0x01}},
     {{"pip", "--mode", "0"}, 1, 0x74, 1, {0x00}},
     {{"pip", "--mode", "3", "--protocol", "2"}, 2, 0x74, 1, {0x03}},
     {{"lighting", "--level", "128"}, 1, 0x80, 1, {0x80}},

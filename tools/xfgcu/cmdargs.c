@@ -980,6 +980,13 @@ static int command_of_line(cmd_line *l, const char *who, int argc, char **argv)
     return cmdargs_parse(l->spec, who, argc, argv, &l->version, &l->help, l->with_force ? &l->force : NULL, &l->cmd);
 }
 
+void cmdargs_for_version(xf_command *cmd, uint8_t version)
+{
+    if (cmd->order == XF_ORDER_OSD) {
+        cmd->value = xf_osd_value(cmd->value == 0u, version);
+    }
+}
+
 int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json, void (*help)(FILE *out), int argc,
                    char **argv)
 {

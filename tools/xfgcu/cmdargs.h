@@ -53,6 +53,13 @@ typedef struct cmd_line {
  * @p version as the default of --protocol. With --help, prints the help of
  * COMMAND, or @p help without one. Prints any error. @return an exit code.
  */
+/**
+ * The switches of osd (--show, --hide) are parsed with V0.1's values (0
+ * shows); give @p cmd the value that means the same for a GCU that speaks
+ * @p version (xf_osd_value()). Other commands are left alone.
+ */
+void cmdargs_for_version(xf_command *cmd, uint8_t version);
+
 int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json, void (*help)(FILE *out), int argc,
                    char **argv);
 

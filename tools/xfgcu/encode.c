@@ -88,12 +88,14 @@ static int encode_lines(uint8_t version)
 static int encode_named(const cmd_line *l)
 {
     xf_host_packet pkt;
+    xf_command cmd = l->cmd;
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = 0;
     xf_field bad = XF_F_NONE;
     xf_err err;
+    cmdargs_for_version(&cmd, l->version); /* --protocol N: N's meaning */
     xf_host_packet_init(&pkt, l->version); /* no carrier data; sub_request = 0x01 */
-    err = xf_host_set_command(&pkt, &l->cmd, &bad);
+    err = xf_host_set_command(&pkt, &cmd, &bad);
     if (err == XF_OK) {
         err = xf_host_pack(&pkt, buf, sizeof(buf), &len);
     }
