@@ -6,9 +6,9 @@
 #include "xfgcu/xf_mem.h"
 #include "xfgcu/xf_units.h"
 
-#define XF_CTRL_NONE      0u
-#define XF_CTRL_RATES     1u
-#define XF_CTRL_ANGLES    2u
+#define XF__CTRL_NONE     0u
+#define XF__CTRL_RATES    1u
+#define XF__CTRL_ANGLES   2u
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 
 /* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
@@ -249,11 +249,24 @@ static void xf__tele_read(xf_telemetry *t, const uint8_t *buf, size_t from, size
     }
 }
 
+/* A setpoint that was on the wire is dropped when the mode that read it
+ * changes: the next mode may read the same bytes as something else (after
+ * click-to-aim, head lock reads angles as rates). */
+static void xf__drop_ctrl(xf_client *c)
+{
+    c->ctrl_kind = XF__CTRL_NONE;
+    c->ctrl_dropped = 1;
+    c->ctrl_mode = 0;
+}
+
 static void xf__update_telemetry(xf_client *c, const uint8_t *buf)
 {
     xf_telemetry *t = &c->tele;
     t->have_main = 1;
     xf__tele_read(t, buf, 0, XF__TELE_MAIN_FIELDS);
+    if (c->ctrl_kind != XF__CTRL_NONE && c->ctrl_mode != 0u && t->gimbal_mode != c->ctrl_mode) {
+        xf__drop_ctrl(c);
+    }
     if (buf[XF_OFF_GCU_SUB_HEADER] == XF_SUB_HEADER) {
         t->have_sub = 1;
         xf__tele_read(t, buf, XF__TELE_MAIN_FIELDS, sizeof(xf__tele_fields) / sizeof(xf__tele_fields[0]));
@@ -399,15 +412,61 @@ static void xf__put_gnss(const xf_client *c, uint8_t *buf)
     xf__put_le(buf + XF_OFF_HOST_RELATIVE_HEIGHT, (uint32_t)g->relative_height_mm, 4);
 }
 
+/* The kind of control quantities a mode reads (docs/protocol.md §11.1). */
+static uint8_t xf__mode_reads(uint8_t mode)
+{
+    switch (mode) {
+    case XF_MODE_ANGLE_CONTROL:
+    case XF_MODE_EULER:
+    case XF_MODE_FPV: return XF__CTRL_ANGLES;
+    case XF_MODE_HEAD_LOCK:
+    case XF_MODE_HEAD_FOLLOW:
+    case XF_MODE_ORTHOVIEW:
+    case XF_MODE_GAZE: return XF__CTRL_RATES;
+    default: return XF__CTRL_NONE; /* track, and modes the client does not know */
+    }
+}
+
+/* Orders during which the control quantities must be invalid (§11.2):
+ * neutral, track and click-to-aim say so; gaze-geo turns into gaze lock on
+ * any valid non-zero quantity. */
+static int xf__order_holds_ctrl(uint8_t order)
+{
+    return order == XF_ORDER_NEUTRAL || order == XF_ORDER_TRACK || order == XF_ORDER_CLICK_TO_AIM ||
+           order == XF_ORDER_GAZE_GEO;
+}
+
+xf_ctrl_status xf_client_control_status(const xf_client *c)
+{
+    uint8_t reads;
+    if (c == NULL || c->ctrl_kind == XF__CTRL_NONE) {
+        return (c != NULL && c->ctrl_dropped) ? XF_CTRL_DROPPED : XF_CTRL_NOT_SET;
+    }
+    if (c->active && xf__order_holds_ctrl(c->queue[c->q_head].order)) {
+        return XF_CTRL_COMMAND;
+    }
+    if (!c->tele.have_main) {
+        return XF_CTRL_NO_MODE;
+    }
+    reads = xf__mode_reads(c->tele.gimbal_mode);
+    if (reads == XF__CTRL_NONE) {
+        return XF_CTRL_NOT_READ;
+    }
+    return (reads == c->ctrl_kind) ? XF_CTRL_SENT : XF_CTRL_WRONG_KIND;
+}
+
+/* The control quantities, with ctrl_valid, only when xf_client_control_status() says they are
+ * read as what the application set; else zeros with ctrl_valid clear. */
 static void xf__put_control(xf_client *c, uint8_t *buf)
 {
     int16_t v[3] = {0, 0, 0};
     size_t i;
-    if (c->ctrl_kind == XF_CTRL_NONE) {
+    if (xf_client_control_status(c) != XF_CTRL_SENT) {
         return;
     }
+    c->ctrl_mode = c->tele.gimbal_mode; /* the mode that reads it: a change drops it */
     buf[XF_OFF_HOST_STATUS] |= XF_STATUS_CTRL_VALID;
-    if (c->ctrl_kind == XF_CTRL_ANGLES) {
+    if (c->ctrl_kind == XF__CTRL_ANGLES) {
         /* Roll and yaw go round: 240 deg is -120 deg, not a clamped 180. */
         v[0] = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[0], -180.0f));
         v[1] = xf_ctrl_angle_raw(c->ctrl[1]);
@@ -449,6 +508,9 @@ static uint8_t xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
         c->operating = 0;
         c->packets = 0;
         c->started_ms = c->now_ms;
+        if (xf__order_holds_ctrl(cmd->order) && c->ctrl_kind != XF__CTRL_NONE) {
+            xf__drop_ctrl(c); /* what was set before it must not be read after it */
+        }
     }
     if (c->active) { /* checked and encoded at submit */
         *params = cmd->params;
@@ -477,8 +539,8 @@ static xf_err xf__send(xf_client *c)
     buf[XF_OFF_HOST_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
     xf__put_carrier(c, buf);
     xf__put_gnss(c, buf);
+    order = xf__next_order(c, &params, &n); /* first: a command that starts here decides the control */
     xf__put_control(c, buf);
-    order = xf__next_order(c, &params, &n);
     len = XF_PACKET_MIN_LEN + n;
     /* header, order, parameters and CRC as the codec's packer writes them */
     xf_packet_put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
@@ -579,34 +641,37 @@ void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms)
     }
 }
 
-static void xf__set_ctrl(xf_client *c, uint8_t kind, float a, float b, float d, uint32_t now_ms)
+static xf_ctrl_status xf__set_ctrl(xf_client *c, uint8_t kind, float a, float b, float d, uint32_t now_ms)
 {
+    if (kind != c->ctrl_kind) {
+        c->ctrl_mode = 0; /* a new kind has not been read in any mode yet */
+    }
     c->ctrl_kind = kind;
+    c->ctrl_dropped = 0;
     c->ctrl[0] = a;
     c->ctrl[1] = b;
     c->ctrl[2] = d;
     c->ctrl_ms = now_ms;
     c->health.watchdog_active = 0;
+    return xf_client_control_status(c);
 }
 
-void xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms)
+xf_ctrl_status xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms)
 {
-    if (c != NULL) {
-        xf__set_ctrl(c, XF_CTRL_RATES, roll_dps, pitch_dps, yaw_dps, now_ms);
-    }
+    return (c != NULL) ? xf__set_ctrl(c, XF__CTRL_RATES, roll_dps, pitch_dps, yaw_dps, now_ms) : XF_CTRL_NOT_SET;
 }
 
-void xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms)
+xf_ctrl_status xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms)
 {
-    if (c != NULL) {
-        xf__set_ctrl(c, XF_CTRL_ANGLES, roll_deg, pitch_deg, yaw_deg, now_ms);
-    }
+    return (c != NULL) ? xf__set_ctrl(c, XF__CTRL_ANGLES, roll_deg, pitch_deg, yaw_deg, now_ms) : XF_CTRL_NOT_SET;
 }
 
 void xf_client_clear_control(xf_client *c)
 {
     if (c != NULL) {
-        c->ctrl_kind = XF_CTRL_NONE;
+        c->ctrl_kind = XF__CTRL_NONE;
+        c->ctrl_dropped = 0;
+        c->ctrl_mode = 0;
         c->health.watchdog_active = 0;
     }
 }

@@ -290,6 +290,7 @@ static uint8_t xf__click_to_aim(xf_sim *s, const xf_command *c)
     s->tgt[1] = xf__clampf(s->pitch - ((float)c->y0 / 10000.0f - 0.5f) * vfov, -90.0f, 90.0f);
     s->tgt[2] = s->yaw + ((float)c->x0 / 10000.0f - 0.5f) * fov;
     s->have_tgt = 1;
+    s->mode = XF_MODE_HEAD_LOCK; /* V2.0.6: the gimbal aims, then it is in head lock */
     return XF_STATE_SUCCESS;
 }
 

@@ -1,7 +1,8 @@
 /*
  * test_packet.c - xf_packet.h: every field at its spec offset, both
  * directions, both protocol versions, pack and unpack; the vendor's
- * appendix-1 packet; every error path of pack, unpack and check.
+ * appendix-1 packet; every error path of pack, unpack and check; the byte
+ * order of the pod status word (xf_protocol.h).
  *
  * Expected bytes come from test_fields.h (the spec's layout) and
  * test_util.h (a bitwise CRC), never from the codec.
@@ -737,6 +738,182 @@ static void test_mode_names(void **state)
     assert_null(xf_mode_name(0xFF));
 }
 
+/* ---- the byte order of the pod status word (docs/protocol.md §11.7) ------------------------- */
+
+/* The flags the documents name, from the XF_POD_* constants, not from the mask. */
+static const uint16_t pod_named[] = {XF_POD_TRACKING_OK,     XF_POD_TARGET_VALID, XF_POD_RANGING_ON,
+                                     XF_POD_NIGHT_VISION_ON, XF_POD_LIGHTING_ON,  XF_POD_UPWARD_MOUNT};
+
+static int pod_word_defined(unsigned w)
+{
+    size_t i;
+    for (i = 0; i < ARRAY_LEN(pod_named); i++) {
+        w &= ~(unsigned)pod_named[i];
+    }
+    return w == 0u;
+}
+
+/* The pod status word of a GCU packet whose bytes 6 and 7 are @p b6 @p b7, as the codec unpacks it. */
+static uint16_t pod_word(uint8_t b6, uint8_t b7)
+{
+    xf_gcu_packet p;
+    uint8_t buf[XF_PACKET_MIN_LEN];
+    size_t n = 0;
+    uint16_t crc;
+    memset(&p, 0, sizeof(p));
+    p.version = XF_PROTOCOL_V2;
+    assert_err(xf_gcu_pack(&p, buf, sizeof(buf), &n), XF_OK);
+    buf[XF_OFF_GCU_POD_STATUS] = b6;
+    buf[XF_OFF_GCU_POD_STATUS + 1u] = b7;
+    crc = ref_crc16(buf, n - 2u);
+    buf[n - 2u] = (uint8_t)(crc >> 8); /* the CRC is big-endian */
+    buf[n - 1u] = (uint8_t)(crc & 0xFFu);
+    assert_err(xf_gcu_unpack(buf, n, &p), XF_OK);
+    return p.main.pod_status;
+}
+
+static void test_pod_reserved_mask(void **state)
+{
+    unsigned bit;
+    (void)state;
+    assert_int_equal(XF_POD_RESERVED_MASK, 0xE87E); /* bits 15-13, 11, 6-1 */
+    for (bit = 0; bit < 16u; bit++) {
+        int reserved = (XF_POD_RESERVED_MASK & (1u << bit)) != 0u;
+        if (reserved == pod_word_defined(1u << bit)) {
+            print_error("bit %u: reserved %d, but the XF_POD_* flags say otherwise\n", bit, reserved);
+            fail();
+        }
+    }
+}
+
+/* V2.0.6's decoded reply (docs/protocol.md §2.4): bytes 6-7 are 01 80 in head follow, explained as
+ * "ranging on, range and target coordinates valid": the big-endian reading. */
+static void test_pod_order_vendor_example(void **state)
+{
+    static const uint8_t reply[73] = {0x8A, 0x5E, 0x49, 0x00, 0x02, 0x12, 0x01, 0x80, 0x0C, 0xFE, 0xF4, 0x01, 0xDD,
+                                      0xFC, 0x20, 0x00, 0x4A, 0x18, 0xFF, 0xFF, 0xA5, 0x03, 0x47, 0x18, 0xFF, 0xFF,
+                                      0x01, 0x00, 0xFE, 0xFF, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x01, 0x1F,
+                                      0x32, 0x29, 0x00, 0x00, 0x06, 0x17, 0x00, 0x00, 0x24, 0xF2, 0xDF, 0x65, 0x16,
+                                      0xEE, 0xAA, 0x16, 0xA3, 0xA0, 0x00, 0x00, 0x2B, 0x01, 0x14, 0x00, 0x00, 0x00,
+                                      0x00, 0x08, 0x00, 0x00, 0x20, 0x00, 0xEC, 0x85};
+    xf_gcu_packet p;
+    (void)state;
+    assert_err(xf_packet_check(reply, sizeof(reply), XF_DIR_GCU), XF_OK);
+    assert_err(xf_gcu_unpack(reply, sizeof(reply), &p), XF_OK);
+    assert_int_equal(p.main.gimbal_mode, XF_MODE_HEAD_FOLLOW);
+    assert_int_equal(p.main.pod_status, 0x8001); /* the codec keeps the little-endian wire integer */
+    assert_int_equal(xf_pod_status_order(p.main.pod_status), XF_POD_ORDER_BE);
+    assert_int_equal(xf_pod_flags(p.main.pod_status, XF_POD_ORDER_BE), XF_POD_RANGING_ON | XF_POD_TARGET_VALID);
+    assert_int_equal(xf_pod_flags(p.main.pod_status, XF_POD_ORDER_LE), 0x8001); /* bit 15: reserved */
+}
+
+/* A word only the documented order makes sense of: 01 10 = tracking succeeded, mounted upside down. */
+static void test_pod_order_plain_le(void **state)
+{
+    uint16_t w = pod_word(0x01, 0x10);
+    (void)state;
+    assert_int_equal(w, 0x1001);
+    assert_int_equal(xf_pod_status_order(w), XF_POD_ORDER_LE);
+    assert_int_equal(xf_pod_flags(w, XF_POD_ORDER_LE), XF_POD_TRACKING_OK | XF_POD_UPWARD_MOUNT);
+    assert_int_equal(xf_pod_flags(w, XF_POD_ORDER_BE), 0x0110); /* bit 4: reserved */
+    /* every flag alone, in either order */
+    assert_int_equal(xf_pod_status_order(pod_word(0x80, 0x00)), XF_POD_ORDER_LE);
+    assert_int_equal(xf_pod_status_order(pod_word(0x00, 0x80)), XF_POD_ORDER_BE);
+    assert_int_equal(xf_pod_status_order(pod_word(0x00, 0x06)), XF_POD_ORDER_LE); /* night vision, light */
+    assert_int_equal(xf_pod_status_order(pod_word(0x06, 0x00)), XF_POD_ORDER_BE);
+    assert_int_equal(xf_pod_flags(pod_word(0x06, 0x00), XF_POD_ORDER_BE), XF_POD_NIGHT_VISION_ON | XF_POD_LIGHTING_ON);
+}
+
+/* Each reserved bit alone, in the little-endian reading (word 1 << bit) and in the big-endian one
+ * (its bytes swapped): the other reading decides when it lands on a named flag, nothing does when
+ * it lands on a reserved bit too. */
+static void test_pod_order_each_reserved_bit(void **state)
+{
+    static const struct {
+        unsigned bit;
+        xf_pod_order other; /* where the other reading puts it */
+    } cases[] = {
+        {1, XF_POD_ORDER_BE},         /* other reading: bit 9, night vision */
+        {2, XF_POD_ORDER_BE},         /* bit 10, lighting */
+        {3, XF_POD_ORDER_UNDECIDED},  /* bit 11, reserved */
+        {4, XF_POD_ORDER_BE},         /* bit 12, upward mount */
+        {5, XF_POD_ORDER_UNDECIDED},  /* bit 13 */
+        {6, XF_POD_ORDER_UNDECIDED},  /* bit 14 */
+        {11, XF_POD_ORDER_UNDECIDED}, /* bit 3 */
+        {13, XF_POD_ORDER_UNDECIDED}, /* bit 5 */
+        {14, XF_POD_ORDER_UNDECIDED}, /* bit 6 */
+        {15, XF_POD_ORDER_BE},        /* bit 7, target valid */
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < ARRAY_LEN(cases); i++) {
+        unsigned b = cases[i].bit;
+        uint8_t lo = (uint8_t)((1u << b) & 0xFFu), hi = (uint8_t)((1u << b) >> 8);
+        xf_pod_order mirrored = (cases[i].other == XF_POD_ORDER_BE) ? XF_POD_ORDER_LE : XF_POD_ORDER_UNDECIDED;
+        /* reserved bit b in the little-endian reading */
+        if (xf_pod_status_order(pod_word(lo, hi)) != cases[i].other) {
+            print_error("reserved bit %u, little-endian reading: order %d, expected %d\n", b,
+                        (int)xf_pod_status_order(pod_word(lo, hi)), (int)cases[i].other);
+            fail();
+        }
+        /* the same bit in the big-endian reading */
+        if (xf_pod_status_order(pod_word(hi, lo)) != mirrored) {
+            print_error("reserved bit %u, big-endian reading: order %d, expected %d\n", b,
+                        (int)xf_pod_status_order(pod_word(hi, lo)), (int)mirrored);
+            fail();
+        }
+        /* read the way it decides, the word is the named flag */
+        if (cases[i].other == XF_POD_ORDER_BE) {
+            assert_int_equal(xf_pod_flags(pod_word(lo, hi), XF_POD_ORDER_BE), 1u << (b ^ 8u));
+            assert_true(pod_word_defined(1u << (b ^ 8u)));
+        }
+    }
+}
+
+/* Undecided: both readings are words the documents define (each byte 00 or 01), or neither is. */
+static void test_pod_order_undecided(void **state)
+{
+    static const uint8_t both[][2] = {{0x00, 0x00}, {0x01, 0x00}, {0x00, 0x01}, {0x01, 0x01}};
+    static const uint8_t neither[][2] = {{0xFF, 0xFF}, {0x02, 0x02}, {0x08, 0x08}, {0x81, 0x81}, {0x7E, 0xE8}};
+    size_t i;
+    (void)state;
+    for (i = 0; i < ARRAY_LEN(both); i++) {
+        assert_int_equal(xf_pod_status_order(pod_word(both[i][0], both[i][1])), XF_POD_ORDER_UNDECIDED);
+    }
+    for (i = 0; i < ARRAY_LEN(neither); i++) {
+        assert_int_equal(xf_pod_status_order(pod_word(neither[i][0], neither[i][1])), XF_POD_ORDER_UNDECIDED);
+    }
+    /* 01 00 means tracking in one order and ranging in the other: the caller's default decides */
+    assert_int_equal(xf_pod_flags(pod_word(0x01, 0x00), XF_POD_ORDER_UNDECIDED), XF_POD_TRACKING_OK);
+    assert_int_equal(xf_pod_flags(pod_word(0x01, 0x00), XF_POD_ORDER_LE), XF_POD_TRACKING_OK);
+    assert_int_equal(xf_pod_flags(pod_word(0x01, 0x00), XF_POD_ORDER_BE), XF_POD_RANGING_ON);
+}
+
+/* Every word against the definition, written here from bytes and the named flags. */
+static void test_pod_order_every_word(void **state)
+{
+    unsigned w, clean_both = 0;
+    (void)state;
+    for (w = 0; w < 0x10000u; w++) {
+        unsigned b6 = w & 0xFFu, b7 = w >> 8;
+        unsigned be = (b6 << 8) | b7; /* byte 6 the high byte */
+        int le_ok = pod_word_defined(w), be_ok = pod_word_defined(be);
+        xf_pod_order want = (le_ok && !be_ok)   ? XF_POD_ORDER_LE
+                            : (be_ok && !le_ok) ? XF_POD_ORDER_BE
+                                                : XF_POD_ORDER_UNDECIDED;
+        xf_pod_order got = xf_pod_status_order((uint16_t)w);
+        clean_both += (unsigned)(le_ok && be_ok);
+        if (got != want || xf_pod_flags((uint16_t)w, XF_POD_ORDER_LE) != w ||
+            xf_pod_flags((uint16_t)w, XF_POD_ORDER_UNDECIDED) != w ||
+            xf_pod_flags((uint16_t)w, XF_POD_ORDER_BE) != be) {
+            print_error("word 0x%04X: order %d (expected %d), flags LE 0x%04X BE 0x%04X\n", w, (int)got, (int)want,
+                        xf_pod_flags((uint16_t)w, XF_POD_ORDER_LE), xf_pod_flags((uint16_t)w, XF_POD_ORDER_BE));
+            fail();
+        }
+    }
+    assert_int_equal(clean_both, 4); /* 00 00, 01 00, 00 01, 01 01 */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -748,6 +925,9 @@ int main(void)
         cmocka_unit_test(test_host_packet_init),        cmocka_unit_test(test_pack_errors),
         cmocka_unit_test(test_unpack_errors),           cmocka_unit_test(test_strerror_distinct),
         cmocka_unit_test(test_gimbal_model_names),      cmocka_unit_test(test_mode_names),
+        cmocka_unit_test(test_pod_reserved_mask),       cmocka_unit_test(test_pod_order_vendor_example),
+        cmocka_unit_test(test_pod_order_plain_le),      cmocka_unit_test(test_pod_order_each_reserved_bit),
+        cmocka_unit_test(test_pod_order_undecided),     cmocka_unit_test(test_pod_order_every_word),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -379,6 +379,8 @@ typedef struct xf_client {
      *  private: carrier state was set */
     uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
     uint8_t ctrl_kind;               /**< private: 0 none, 1 rates, 2 angles */
+    uint8_t ctrl_mode;               /**< private: the reported mode that last read the setpoint (0: none yet) */
+    uint8_t ctrl_dropped;            /**< private: the setpoint was dropped (xf_client_control_status()) */
     /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
     uint8_t stream_on; /**< private: the external-track stream is on */
     uint8_t stream[6]; /**< private: the stream's encoded parameters */
@@ -519,9 +521,53 @@ void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now
  */
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
 /**
+ * Whether the control quantities the application set are on the wire, and
+ * if not, why: xf_client_control_status(), and what xf_client_set_rates()
+ * and xf_client_set_angles() return.
+ *
+ * The rule (V2.0.6, docs/protocol.md §11.1 and §11.2). A packet carries the
+ * quantities, with ctrl_valid set, only when the mode the GCU last reported
+ * reads the kind the application set:
+ *
+ * | mode the GCU reports                                         | reads  |
+ * |--------------------------------------------------------------|--------|
+ * | angle control 0x10, Euler 0x14, FPV 0x1C                     | angles |
+ * | head lock 0x11, head follow 0x12, orthoview 0x13, gaze 0x16  | rates  |
+ * | track 0x17, any other mode, no reply yet                     | none   |
+ *
+ * and never while a neutral, track, click-to-aim or gaze-geo command runs
+ * (the quantities must be invalid then; after click-to-aim the gimbal is in
+ * head lock, and a valid non-zero quantity turns gaze-geo into gaze lock).
+ * Otherwise the packet carries zeros with ctrl_valid clear. A setpoint is
+ * dropped, and must be set again, when the mode that read it changes, and
+ * when one of those four commands starts: the next mode may read the same
+ * bytes as something else. A setpoint held because the mode reads the other
+ * kind is kept, and goes out once a mode that reads it is reported ("set
+ * the angles, then switch to Euler").
+ */
+typedef enum xf_ctrl_status {
+    XF_CTRL_SENT = 0,       /**< on the wire, ctrl_valid set (zero rates when the watchdog has tripped) */
+    XF_CTRL_NOT_SET = 1,    /**< no setpoint: none set, or xf_client_clear_control() */
+    XF_CTRL_NO_MODE = 2,    /**< held: no reply yet, so the mode that would read it is unknown */
+    XF_CTRL_WRONG_KIND = 3, /**< held: the reported mode reads the other kind (rates, angles) */
+    XF_CTRL_NOT_READ = 4,   /**< held: the reported mode reads no control quantities (track) */
+    XF_CTRL_COMMAND = 5,    /**< held: a neutral, track, click-to-aim or gaze-geo command runs */
+    XF_CTRL_DROPPED = 6     /**< dropped: the mode that read it changed, or one of those commands started */
+} xf_ctrl_status;
+
+/**
+ * Where the application's setpoint stands (xf_ctrl_status): on the wire,
+ * held and why, dropped, or none.
+ * @param c  the client
+ * @return the status; ::XF_CTRL_NOT_SET for a NULL @p c
+ */
+xf_ctrl_status xf_client_control_status(const xf_client *c);
+
+/**
  * Desired angular velocities (deg/s), scaled by the zoom the GCU reports. Subject to the watchdog.
  *
- * Sent with ctrl_valid in every packet from now on, each converted with
+ * Sent with ctrl_valid in every packet whose mode reads rates
+ * (::xf_ctrl_status), each converted with
  * xf_ctrl_rate_raw() using camera 1's zoom from the telemetry (1 until a
  * sub frame arrived), clamped to [-1500, 1500] raw. When they are older
  * than rate_watchdog_ms, zero rates are sent instead (still valid, so the
@@ -533,22 +579,26 @@ void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
  * @param pitch_dps  pitch rate, deg/s
  * @param yaw_dps    yaw rate, deg/s
  * @param now_ms     the time, on xf_client_step()'s clock (starts the watchdog)
+ * @return where the setpoint stands now (::XF_CTRL_SENT: the next packet
+ *   carries it); ::XF_CTRL_NOT_SET for a NULL @p c
  */
-void xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms);
+xf_ctrl_status xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps, float yaw_dps, uint32_t now_ms);
 /**
  * Desired angles (deg): Euler or relative to the carrier, as the mode says. Roll and yaw are wrapped into [-180, 180),
  * pitch is clamped to [-180, 180].
  *
- * Sent with ctrl_valid in every packet from now on, until replaced; not
- * subject to the rate watchdog. Replaces any rates. Which axes a mode reads:
+ * Sent with ctrl_valid in every packet whose mode reads angles
+ * (::xf_ctrl_status), until replaced or dropped; not subject to the rate
+ * watchdog. Replaces any rates. Which axes a mode reads:
  * docs/protocol.md §11. Does nothing for a NULL @p c.
  * @param c          the client
  * @param roll_deg   roll, deg
  * @param pitch_deg  pitch, deg
  * @param yaw_deg    yaw, deg
  * @param now_ms     the time, on xf_client_step()'s clock
+ * @return as xf_client_set_rates()
  */
-void xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms);
+xf_ctrl_status xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms);
 /**
  * No control quantities: packets carry zeros with ctrl_valid clear (the
  * gimbal holds; needed during neutral, track and click-to-aim,

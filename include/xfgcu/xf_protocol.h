@@ -5,8 +5,8 @@
  *
  * Headers, sizes and byte offsets (docs/protocol.md §2-§6), protocol
  * versions, orders (§7, §10), gimbal modes and status bits, camera masks,
- * feedback states, and the gimbal model names. xf_gimbal_model() keeps no
- * state and never blocks.
+ * feedback states, the gimbal model names, and the byte order of the pod
+ * status word (§11.7). The functions keep no state and never block.
  */
 #ifndef XF_PROTOCOL_H
 #define XF_PROTOCOL_H
@@ -127,13 +127,16 @@ typedef enum xf_direction {
  * a null packet between them.
  */
 typedef enum xf_order {
-    XF_ORDER_NULL = 0x00,             /**< no command; separates two commands of the same order */
-    XF_ORDER_CALIBRATION = 0x01,      /**< calibrate (keep the gimbal still); answers "operating" until done */
-    XF_ORDER_NEUTRAL = 0x03,          /**< back to neutral, keeping the mode (head lock, head follow, orthoview) */
-    XF_ORDER_OSD_COORDINATE = 0x06,   /**< V0.2: OSD shows carrier (TT 0) or target (TT 1) coordinates */
-    XF_ORDER_AUTO_FLIP = 0x07,        /**< V0.2: image auto-flip on (TT 0) or off (TT 1) */
-    XF_ORDER_TIME_ZONE = 0x08,        /**< V0.2: time zone, hours from UTC */
-    XF_ORDER_ANGLE_CONTROL = 0x10,    /**< mode: angle control, "FPV" in V2.0.4; control quantities are angles */
+    XF_ORDER_NULL = 0x00,           /**< no command; separates two commands of the same order */
+    XF_ORDER_CALIBRATION = 0x01,    /**< calibrate (keep the gimbal still); answers "operating" until done */
+    XF_ORDER_NEUTRAL = 0x03,        /**< back to neutral, keeping the mode (head lock, head follow, orthoview) */
+    XF_ORDER_OSD_COORDINATE = 0x06, /**< V0.2: OSD shows carrier (TT 0) or target (TT 1) coordinates */
+    XF_ORDER_AUTO_FLIP = 0x07,      /**< V0.2: image auto-flip on (TT 0) or off (TT 1) */
+    XF_ORDER_TIME_ZONE = 0x08,      /**< V0.2: time zone, hours from UTC */
+    /** mode: angle control (V2.0.6): roll and pitch control quantities are Euler angles, yaw is an angle
+     * relative to the carrier. V2.0.4 called 0x10 "FPV", with all three relative to the carrier (V0.2's FPV
+     * is 0x1C). docs/protocol.md §11.1 */
+    XF_ORDER_ANGLE_CONTROL = 0x10,
     XF_ORDER_HEAD_LOCK = 0x11,        /**< mode: head lock; control quantities are rates, at 0 the attitude holds */
     XF_ORDER_HEAD_FOLLOW = 0x12,      /**< mode: head follow; pitch and yaw rates, yaw follows the carrier */
     XF_ORDER_ORTHOVIEW = 0x13,        /**< mode: orthoview, pitch locked at -90 deg */
@@ -170,7 +173,7 @@ typedef enum xf_order {
 /* ---- GCU main frame: gimbal_mode (5) ----------------------------------- */
 /** The gimbal's mode as the GCU reports it in byte 5 (docs/protocol.md §5); xf_mode_name() names it. */
 typedef enum xf_mode {
-    XF_MODE_ANGLE_CONTROL = 0x10, /**< angle control, "FPV" in V2.0.4 */
+    XF_MODE_ANGLE_CONTROL = 0x10, /**< angle control: roll, pitch Euler angles, yaw relative ("FPV" in V2.0.4) */
     XF_MODE_HEAD_LOCK = 0x11,     /**< head lock */
     XF_MODE_HEAD_FOLLOW = 0x12,   /**< head follow */
     XF_MODE_ORTHOVIEW = 0x13,     /**< orthoview (looking straight down) */
@@ -187,6 +190,23 @@ typedef enum xf_mode {
 #define XF_POD_NIGHT_VISION_ON 0x0200u /**< bit 9: night vision on */
 #define XF_POD_LIGHTING_ON     0x0400u /**< bit 10: fill light on */
 #define XF_POD_UPWARD_MOUNT    0x1000u /**< bit 12: powered on facing up (0: facing down) */
+/** The bits of `pod_status` no document defines (15-13, 11, 6-1): a word read in
+ * the GCU's byte order has them clear, which is how xf_pod_status_order() tells
+ * the order (docs/protocol.md §11.7). */
+#define XF_POD_RESERVED_MASK 0xE87Eu
+
+/**
+ * Byte order of the pod status word, GCU bytes 6-7 (docs/protocol.md §11.7).
+ * Both vendor documents say little-endian, like every field; V2.0.6's own
+ * worked example reads its bytes `01 80` big-endian. The codec keeps the
+ * word as the wire gives it read little-endian (xf_gcu_main.pod_status);
+ * these values say how to read the flags out of it.
+ */
+typedef enum xf_pod_order {
+    XF_POD_ORDER_UNDECIDED = 0, /**< the word itself does not tell (xf_pod_status_order()) */
+    XF_POD_ORDER_LE = 1,        /**< little-endian, as documented: byte 6 holds bits 0-7 */
+    XF_POD_ORDER_BE = 2         /**< big-endian, as V2.0.6's example: byte 6 holds bits 8-15 */
+} xf_pod_order;
 
 /* ---- GCU sub frame, V0.2 ----------------------------------------------- */
 #define XF_THERMAL_LOW_TEMP_ALARM    0x01u /**< `thermal_status` bit 0: low-temperature alarm */
@@ -237,7 +257,54 @@ typedef enum xf_mode {
  */
 XF_API const char *xf_gimbal_model(uint8_t gimbal_code);
 
+/**
+ * Which byte order of a pod status word leaves the reserved bits
+ * (::XF_POD_RESERVED_MASK) clear: the one reading that gives a word the
+ * documents define is taken to be the GCU's. It looks at this one word:
+ * the bytes of one reply, nothing remembered.
+ * @param pod_status  the word as the codec unpacks it (xf_gcu_main.pod_status:
+ *   byte 6 + 256 x byte 7, the little-endian reading)
+ * @return ::XF_POD_ORDER_LE when only the little-endian reading has the
+ *   reserved bits clear, ::XF_POD_ORDER_BE when only the big-endian one has;
+ *   ::XF_POD_ORDER_UNDECIDED when both have (each byte is 0x00 or 0x01: 00 00,
+ *   01 00, 00 01, 01 01; of these, 01 00 and 00 01 mean different flags in the
+ *   two orders) or when neither has (both readings set a reserved bit: the
+ *   word is one no document describes, damaged or from an unknown firmware,
+ *   and says nothing about the order)
+ */
+XF_API xf_pod_order xf_pod_status_order(uint16_t pod_status);
+/**
+ * The pod status flags (`XF_POD_*` bits) of a word read in a byte order.
+ * `xf_pod_flags(w, xf_pod_status_order(w))` is the robust reading of
+ * docs/protocol.md §11.7, with the documented little-endian order where the
+ * word does not tell.
+ * @param pod_status  the word as the codec unpacks it (little-endian reading)
+ * @param order       ::XF_POD_ORDER_BE swaps the two bytes; any other value
+ *   (::XF_POD_ORDER_LE, ::XF_POD_ORDER_UNDECIDED) keeps the word as it is
+ * @return the word in that order, reserved bits included (test them with
+ *   ::XF_POD_RESERVED_MASK)
+ */
+XF_API uint16_t xf_pod_flags(uint16_t pod_status, xf_pod_order order);
+
 #if XF_EMIT_DEFINITIONS
+XF_API xf_pod_order xf_pod_status_order(uint16_t pod_status)
+{
+    int le_clean = (pod_status & XF_POD_RESERVED_MASK) == 0u;
+    int be_clean = (xf_pod_flags(pod_status, XF_POD_ORDER_BE) & XF_POD_RESERVED_MASK) == 0u;
+    if (le_clean == be_clean) {
+        return XF_POD_ORDER_UNDECIDED; /* both fit, or neither: no evidence either way */
+    }
+    return le_clean ? XF_POD_ORDER_LE : XF_POD_ORDER_BE;
+}
+
+XF_API uint16_t xf_pod_flags(uint16_t pod_status, xf_pod_order order)
+{
+    if (order != XF_POD_ORDER_BE) {
+        return pod_status;
+    }
+    return (uint16_t)(((unsigned)pod_status >> 8) | (((unsigned)pod_status & 0xFFu) << 8));
+}
+
 XF_API const char *xf_gimbal_model(uint8_t gimbal_code)
 {
     /* V2.0.4 codes, then those added by the V0.2 documents (31 renamed there). */

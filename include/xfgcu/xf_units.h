@@ -1,7 +1,7 @@
 /**
  * @file
  * @brief Physical units to and from raw wire integers, GNSS time, and the
- * camera-axis transform of vendor appendix 3 (docs/protocol.md §8).
+ * vendor's camera-axis transform (docs/protocol.md §8).
  *
  * Saturation policy: every conversion to a raw value returns the nearest
  * value inside the field's documented range (rounding half away from zero);
@@ -202,9 +202,21 @@ XF_API xf_err xf_gnss_to_unix_ms(int16_t week, uint32_t ms, int leap_seconds, in
 XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *week, uint32_t *ms);
 
 /**
- * Vendor appendix 3: the camera's absolute X/Y/Z-axis angles (deg, rotation
- * order Z-Y-X) to the reported Euler angles: roll = Y, pitch = -X,
- * yaw = Z + 90 wrapped into [0, 360).
+ * The vendor's camera-axis rule (appendix 3 of V2.0.4, appendix 4 of
+ * V2.0.6; docs/protocol.md §8): the camera's absolute X/Y/Z-axis angles
+ * (deg, rotation order Z-Y-X) to the Euler angles the GCU reports:
+ * roll = Y, pitch = -X, yaw = Z + 90 wrapped into [0, 360).
+ *
+ * The input is in no packet. The GCU reports the absolute Euler angles
+ * themselves (xf_gcu_main.cam_roll, cam_pitch, cam_yaw) and the camera's
+ * axis angles relative to the carrier (rel_angle_x, rel_angle_y,
+ * rel_angle_z); the relative angles are not absolute axis angles and are
+ * not this function's input. Absolute axis angles come from outside the
+ * protocol: an attitude sensor fixed to the camera, or the carrier's
+ * attitude (its INS) combined with the relative angles in the frames, the
+ * mounting and the Z-Y-X order of docs/protocol.md §8, a rotation the
+ * library does not compute; or a model of a gimbal that states what its
+ * GCU would report.
  * @param ax     X-axis angle, deg
  * @param ay     Y-axis angle, deg
  * @param az     Z-axis angle, deg
@@ -214,8 +226,10 @@ XF_API xf_err xf_unix_ms_to_gnss(int64_t unix_ms, int leap_seconds, int16_t *wee
  */
 XF_API void xf_axes_to_euler(float ax, float ay, float az, float *roll, float *pitch, float *yaw);
 /**
- * Inverse of xf_axes_to_euler(): X = -pitch, Y = roll, Z = yaw - 90 wrapped
- * into [-180, 180).
+ * Inverse of xf_axes_to_euler(): from the Euler angles the GCU reports
+ * (cam_roll, cam_pitch, cam_yaw, converted with xf_cdeg()) to the camera's
+ * absolute axis angles they stand for: X = -pitch, Y = roll, Z = yaw - 90
+ * wrapped into [-180, 180).
  * @param roll   roll, deg
  * @param pitch  pitch, deg
  * @param yaw    yaw, deg

@@ -405,6 +405,32 @@ static inline int ct_run_link(ct_rig *r, xf_link_state want, uint32_t max_ms)
     return xf_client_link(&r->c) == want;
 }
 
+/* A command for every order, valid for protocol V2. */
+static inline void ct_valid_command(xf_command *cmd, uint8_t order)
+{
+    xf_command_init(cmd, order);
+    switch (order) {
+    case XF_ORDER_ZOOM_TO: cmd->zoom = 5000; break;
+    case XF_ORDER_TRACK:
+    case XF_ORDER_AREA_TEMP:
+        cmd->value = 1;
+        cmd->x0 = 1000;
+        cmd->y0 = 1000;
+        cmd->x1 = 2000;
+        cmd->y1 = 2000;
+        break;
+    case XF_ORDER_EXTERNAL_TRACK: cmd->value = 2; break;
+    case XF_ORDER_RANGING: cmd->value = 2; break;
+    case XF_ORDER_TEMP_ALARM:
+    case XF_ORDER_ISOTHERM:
+        cmd->value = 1;
+        cmd->temp_high = 500;
+        cmd->temp_low = 100;
+        break;
+    default: break;
+    }
+}
+
 /* Submit a command with default parameters for @p order; returns its id. */
 static inline uint32_t ct_submit(ct_rig *r, uint8_t order)
 {

@@ -1712,7 +1712,7 @@ typedef struct cb_probe {
     uint32_t resubmit_max;   /* ... at most this many times (a sweep that never ends fails, not hangs) */
     uint32_t resubmit_below; /* ... only commands with an id below this (0: any) */
     int read_state;          /* check what the state readers give in every callback */
-    int set_inputs;          /* on the first telemetry: set angles and start the external-track stream */
+    int set_inputs;          /* on the first telemetry: set rates and start the external-track stream */
     /* observations */
     size_t calls[CB_KINDS];
     size_t step_tries, step_not_busy, step_changed;
@@ -1822,7 +1822,7 @@ static void probe_on_telemetry(void *user, const xf_telemetry *t)
         probe_try_step(p);
     }
     if (p->set_inputs && p->calls[CB_TELEMETRY] == 1u) {
-        xf_client_set_angles(c, 0.0f, -20.0f, 30.0f, p->r->now);
+        (void)xf_client_set_rates(c, 0.0f, -20.0f, 30.0f, p->r->now); /* the simulator is in head lock */
         probe_bad(p, xf_client_external_track(c, XF_CAM1, 100, -100) == XF_OK, "external track in on_telemetry");
     }
 }
@@ -2137,17 +2137,24 @@ static void test_cb_read_state(void **state)
     ct_rig_free(r);
 }
 
-/* The inputs set from a callback go out from the next packet. */
+/* The inputs set from a callback go out from the next packet: the rates in head lock, until the
+ * external track the callback started puts the gimbal in track mode, which reads none (they are
+ * dropped then, docs/protocol.md §11.2). */
 static void test_cb_set_inputs(void **state)
 {
     ct_rig *r = probe_rig(NULL);
     (void)state;
     g_probe.set_inputs = 1;
     assert_true(ct_run_link(r, XF_LINK_UP, 1000)); /* the first telemetry sets them */
-    ct_run(r, 100);
+    assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_SENT);
+    ct_run(r, 20); /* the next packet */
     assert_int_equal(r->s.host.main.status & XF_STATUS_CTRL_VALID, XF_STATUS_CTRL_VALID);
-    assert_int_equal(r->s.host.main.pitch_ctrl, -2000);
-    assert_int_equal(r->s.host.main.yaw_ctrl, 3000);
+    assert_int_equal(r->s.host.main.pitch_ctrl, -200);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 300);
+    ct_run(r, 100);
+    assert_int_equal(xf_client_telemetry(&r->c)->gimbal_mode, XF_MODE_TRACK);
+    assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED);
+    assert_int_equal(r->s.host.main.status & XF_STATUS_CTRL_VALID, 0);
     assert_true(sent_count(&r->log, XF_ORDER_EXTERNAL_TRACK, 0) >= 4u);
     assert_probe_clean(&g_probe);
     ct_rig_free(r);
@@ -2286,6 +2293,154 @@ static void test_gcu_version_decides(void **state)
     assert_xf(xf_client_osd(NULL, 1, NULL), XF_ERR_ARG);
 }
 
+/* ---- which control quantities go out (xf_ctrl_status) ---------------------------------- */
+
+#define CR_NO_REPLY 0x00u /* a "mode" for no reply at all */
+
+/* What a mode reads, typed from the rule's table (docs/protocol.md §11.1): 'a' angles, 'r' rates,
+ * '-' none. */
+static char cr_reads(uint8_t mode)
+{
+    switch (mode) {
+    case 0x10:
+    case 0x14:
+    case 0x1C: return 'a';
+    case 0x11:
+    case 0x12:
+    case 0x13:
+    case 0x16: return 'r';
+    default: return '-';
+    }
+}
+
+/* One case: the GCU reports @p mode, the application sets @p kind ('-', 'r', 'a'), then submits
+ * @p order; the packet that carries the order must carry the setpoint exactly when the rule says. */
+static void cr_case(uint8_t mode, char kind, uint8_t order)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_host_packet last;
+    xf_command cmd;
+    xf_ctrl_status st = XF_CTRL_NOT_SET;
+    int holds = order == XF_ORDER_NEUTRAL || order == XF_ORDER_TRACK || order == XF_ORDER_CLICK_TO_AIM ||
+                order == XF_ORDER_GAZE_GEO;
+    int want = kind != '-' && !holds && cr_reads(mode) == kind;
+    size_t n;
+    r->sim_on = 0; /* the test is the GCU */
+    if (mode != CR_NO_REPLY) {
+        xf_gcu_packet g;
+        memset(&g, 0, sizeof(g));
+        g.version = 2;
+        g.main.gimbal_mode = mode;
+        ct_gcu_reply(r, &g);
+    }
+    ct_run(r, 5);
+    if (kind == 'r') {
+        st = xf_client_set_rates(&r->c, 1.0f, 10.0f, -20.0f, r->now);
+    } else if (kind == 'a') {
+        st = xf_client_set_angles(&r->c, 5.0f, -45.0f, 30.0f, r->now);
+    }
+    assert_int_equal(st == XF_CTRL_SENT, kind != '-' && cr_reads(mode) == kind);
+    (void)ct_drain_host(r, NULL);
+    if (order != XF_ORDER_NULL) {
+        ct_valid_command(&cmd, order);
+        assert_xf(xf_client_submit(&r->c, &cmd, NULL, NULL), XF_OK);
+    }
+    ct_run(r, 25); /* one packet */
+    n = ct_drain_host(r, &last);
+    if (n != 1u || last.order != order || ((last.main.status & XF_STATUS_CTRL_VALID) != 0u) != want) {
+        print_error("mode 0x%02X, setpoint '%c', order %s: %u packets, order 0x%02X, ctrl_valid %d (want %d)\n", mode,
+                    kind, xf_order_name(order), (unsigned)n, last.order,
+                    (last.main.status & XF_STATUS_CTRL_VALID) != 0u, want);
+        fail();
+    }
+    if (!want) {
+        assert_int_equal(last.main.roll_ctrl | last.main.pitch_ctrl | last.main.yaw_ctrl, 0);
+        assert_true(xf_client_control_status(&r->c) != XF_CTRL_SENT);
+    } else {
+        assert_int_equal(last.main.pitch_ctrl, kind == 'a' ? -4500 : 100);
+        assert_int_equal(last.main.yaw_ctrl, kind == 'a' ? 3000 : -200);
+        assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_SENT);
+    }
+    if (holds && kind != '-') {
+        assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED); /* set before it: gone */
+    }
+    ct_rig_free(r);
+}
+
+/* Every reported mode x every setpoint kind x every order, on the packets actually sent. */
+static void test_control_rule_every_case(void **state)
+{
+    static const uint8_t modes[] = {0x10, 0x11, 0x12, 0x13, 0x14, 0x16, 0x17, 0x1C, 0x42, CR_NO_REPLY};
+    static const char kinds[] = {'-', 'r', 'a'};
+    size_t m, k, i;
+    (void)state;
+    for (m = 0; m < sizeof(modes); m++) {
+        for (k = 0; k < sizeof(kinds); k++) {
+            for (i = 0; i < XF_ORDER_COUNT; i++) {
+                cr_case(modes[m], kinds[k], xf_order_at(i)->order);
+            }
+        }
+    }
+}
+
+/* The audit's case: Euler with angles (0, -45, 0), then click-to-aim. Its packets carry no
+ * angles, and when the gimbal ends in head lock the angles are dropped, not read as rates; so are
+ * rates set in head lock when a command switches to Euler. Angles set in head lock wait, and go
+ * out once Euler is reported. */
+static void test_control_mode_changes(void **state)
+{
+    ct_rig *r = rig_up(NULL, NULL);
+    const xf_host_main *m = &r->s.host.main;
+    xf_command aim;
+    uint32_t id;
+    (void)state;
+    id = ct_submit(r, XF_ORDER_EULER);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 60);
+    assert_int_equal(xf_client_set_angles(&r->c, 0.0f, -45.0f, 0.0f, r->now), XF_CTRL_SENT);
+    ct_run(r, 40);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, XF_STATUS_CTRL_VALID);
+    assert_int_equal(m->pitch_ctrl, -4500);
+    ct_valid_command(&aim, XF_ORDER_CLICK_TO_AIM);
+    assert_xf(xf_client_submit(&r->c, &aim, &id, NULL), XF_OK);
+    ct_run(r, 21);
+    assert_int_equal(r->s.host.order, XF_ORDER_CLICK_TO_AIM);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, 0);
+    assert_int_equal(m->pitch_ctrl, 0);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 200);
+    assert_int_equal(xf_client_telemetry(&r->c)->gimbal_mode, XF_MODE_HEAD_LOCK);
+    assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, 0);
+    /* rates in head lock, then a switch to Euler: dropped when the mode changes */
+    assert_int_equal(xf_client_set_rates(&r->c, 0.0f, 10.0f, 0.0f, r->now), XF_CTRL_SENT);
+    ct_run(r, 40);
+    assert_int_equal(m->pitch_ctrl, 100);
+    id = ct_submit(r, XF_ORDER_EULER);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 60);
+    assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, 0);
+    /* angles set in head lock wait for Euler */
+    id = ct_submit(r, XF_ORDER_HEAD_LOCK);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 60);
+    assert_int_equal(xf_client_set_angles(&r->c, 0.0f, -30.0f, 0.0f, r->now), XF_CTRL_WRONG_KIND);
+    ct_run(r, 40);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, 0);
+    id = ct_submit(r, XF_ORDER_EULER);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_run(r, 60);
+    assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_SENT);
+    assert_int_equal(m->status & XF_STATUS_CTRL_VALID, XF_STATUS_CTRL_VALID);
+    assert_int_equal(m->pitch_ctrl, -3000);
+    xf_client_clear_control(&r->c);
+    assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_NOT_SET);
+    assert_int_equal(xf_client_control_status(NULL), XF_CTRL_NOT_SET);
+    assert_int_equal(xf_client_set_rates(NULL, 0.0f, 0.0f, 0.0f, 0u), XF_CTRL_NOT_SET);
+    ct_rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2321,6 +2476,8 @@ int main(void)
         cmocka_unit_test(test_protocol_v2_orders),
         cmocka_unit_test(test_submit_model_support),
         cmocka_unit_test(test_gcu_version_decides),
+        cmocka_unit_test(test_control_rule_every_case),
+        cmocka_unit_test(test_control_mode_changes),
         cmocka_unit_test(test_carrier_only_while_fresh),
         cmocka_unit_test(test_gnss_only_while_fresh),
         cmocka_unit_test(test_watchdog_zeroes_rates),

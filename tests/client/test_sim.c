@@ -237,32 +237,6 @@ static void test_once_rule(void **state)
     free(f);
 }
 
-/* A command for every order, valid for protocol V2. */
-static void valid_command(xf_command *cmd, uint8_t order)
-{
-    xf_command_init(cmd, order);
-    switch (order) {
-    case XF_ORDER_ZOOM_TO: cmd->zoom = 5000; break;
-    case XF_ORDER_TRACK:
-    case XF_ORDER_AREA_TEMP:
-        cmd->value = 1;
-        cmd->x0 = 1000;
-        cmd->y0 = 1000;
-        cmd->x1 = 2000;
-        cmd->y1 = 2000;
-        break;
-    case XF_ORDER_EXTERNAL_TRACK: cmd->value = 2; break;
-    case XF_ORDER_RANGING: cmd->value = 2; break;
-    case XF_ORDER_TEMP_ALARM:
-    case XF_ORDER_ISOTHERM:
-        cmd->value = 1;
-        cmd->temp_high = 500;
-        cmd->temp_low = 100;
-        break;
-    default: break;
-    }
-}
-
 /* Every order gets its feedback: the order in byte 69, a state in byte 70. */
 static void test_every_order_gets_feedback(void **state)
 {
@@ -285,7 +259,7 @@ static void test_every_order_gets_feedback(void **state)
             free(f);
             continue;
         }
-        valid_command(&cmd, info->order);
+        ct_valid_command(&cmd, info->order);
         assert_xf(xf_command_check(&cmd, 2, NULL), XF_OK);
         send_cmd(f, 2, &cmd, &r);
         if (f->out_len != 73u) {
@@ -608,7 +582,7 @@ static void test_model_orders(void **state)
         cfg.version = 2;
         cfg.gimbal_code = cases[i].code;
         f = fx_new(&cfg);
-        valid_command(&cmd, cases[i].order);
+        ct_valid_command(&cmd, cases[i].order);
         send_cmd(f, 2, &cmd, &r);
         assert_int_equal(f->out_len, 73);
         if (r.params[0] != cases[i].state) {

@@ -192,6 +192,11 @@ static void test_protocol(void)
     CHECK(same_str(xf_gimbal_model(62), "D-90Pro(V)"));
     CHECK(xf_gimbal_model(1) == NULL);
     CHECK(xf_gimbal_model(255) == NULL);
+    CHECK(xf_pod_status_order(0x8001u) == XF_POD_ORDER_BE); /* V2.0.6's example, bytes 01 80 */
+    CHECK(xf_pod_status_order(0x1001u) == XF_POD_ORDER_LE);
+    CHECK(xf_pod_status_order(0x0001u) == XF_POD_ORDER_UNDECIDED);
+    CHECK(xf_pod_flags(0x8001u, XF_POD_ORDER_BE) == (XF_POD_RANGING_ON | XF_POD_TARGET_VALID));
+    CHECK(xf_pod_flags(0x8001u, XF_POD_ORDER_LE) == 0x8001u);
 }
 
 /* ---- xf_packet.h -------------------------------------------------------- */

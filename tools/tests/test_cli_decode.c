@@ -1,7 +1,7 @@
 /*
  * test_cli_decode.c - `xfgcu decode`: the vendor's worked example, both
  * directions and versions, every argument layout, faults of hex and of
- * packets, and noisy streams on stdin.
+ * packets, noisy streams on stdin, and the byte order of pod_status.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -263,6 +263,148 @@ static void test_host_command_extra(void **state)
     tool_result_free(&r);
 }
 
+/* ---- the byte order of pod_status (docs/protocol.md §11.7) ------------------------------ */
+
+/* V2.0.6's decoded GCU reply (docs/protocol.md §2.4): bytes 6-7 are 01 80 in head follow. */
+#define V206_REPLY_HEX                                                                                                 \
+    "8A 5E 49 00 02 12 01 80 0C FE F4 01 DD FC 20 00 4A 18 FF FF A5 03 47 18 FF FF 01 00 FE FF 00 00 00 00 00 00 00 "  \
+    "01 1F 32 29 00 00 06 17 00 00 24 F2 DF 65 16 EE AA 16 A3 A0 00 00 2B 01 14 00 00 00 00 08 00 00 20 00 EC 85"
+
+/* A GCU packet whose bytes 6 and 7 are @p b6 @p b7, as hex. */
+static void pod_packet_hex(uint8_t b6, uint8_t b7, char *hex)
+{
+    uint8_t pkt[XF_PACKET_MAX_LEN];
+    size_t len = gcu_packet(2, XF_ORDER_NULL, NULL, 0, pkt);
+    pkt[XF_OFF_GCU_POD_STATUS] = b6;
+    pkt[XF_OFF_GCU_POD_STATUS + 1u] = b7;
+    seal_packet(pkt, len);
+    hex_plain(pkt, len, hex);
+}
+
+/* The pod keys of decode --json for @p hex with @p option ("--pod-order=..." or NULL), checked
+ * whole, in order, right after pod_status: raw word, order, flags. */
+static void expect_pod(const char *hex, const char *option, const char *want)
+{
+    tool_result r = (option != NULL) ? run_tool(NULL, "decode", "--json", option, hex, NULL)
+                                     : run_tool(NULL, "decode", "--json", hex, NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(r.err_len, 0);
+    if (strstr(r.out, want) == NULL) {
+        print_error("expected %s\nin %s", want, r.out);
+        fail();
+    }
+    json_decref(parse_line(r.out)); /* and the line is JSON */
+    tool_result_free(&r);
+}
+
+static void test_pod_order_json(void **state)
+{
+    char hex[2 * XF_PACKET_MAX_LEN + 1];
+    tool_result r;
+    json_t *o, *flags;
+    (void)state;
+    /* the vendor's example: only the big-endian reading leaves the reserved bits clear */
+    r = run_tool(NULL, "decode", "--json", V206_REPLY_HEX, NULL);
+    assert_int_equal(r.status, 0);
+    o = parse_line(r.out);
+    assert_int_equal(int_key(o, "pod_status"), 0x8001); /* the raw little-endian wire integer */
+    assert_string_equal(str_key(o, "pod_status_order"), "be");
+    flags = json_object_get(o, "pod_flags");
+    assert_true(json_is_array(flags));
+    assert_int_equal(json_array_size(flags), 2);
+    assert_string_equal(json_string_value(json_array_get(flags, 0)), "target_valid");
+    assert_string_equal(json_string_value(json_array_get(flags, 1)), "ranging_on");
+    json_decref(o);
+    tool_result_free(&r);
+    expect_pod(V206_REPLY_HEX, NULL,
+               "\"pod_status\":32769,\"pod_status_order\":\"be\",\"pod_flags\":[\"target_valid\",\"ranging_on\"],");
+
+    /* only the little-endian reading fits: 01 10, tracking and mounted upside down */
+    pod_packet_hex(0x01, 0x10, hex);
+    expect_pod(hex, NULL,
+               "\"pod_status\":4097,\"pod_status_order\":\"le\",\"pod_flags\":[\"tracking_ok\",\"upward_mount\"],");
+    /* 80 01: the same two flags as the vendor's example, sent little-endian */
+    pod_packet_hex(0x80, 0x01, hex);
+    expect_pod(hex, NULL,
+               "\"pod_status\":384,\"pod_status_order\":\"le\",\"pod_flags\":[\"target_valid\",\"ranging_on\"],");
+    /* every flag, big-endian: 17 81 */
+    pod_packet_hex(0x17, 0x81, hex);
+    expect_pod(hex, NULL,
+               "\"pod_status\":33047,\"pod_status_order\":\"be\",\"pod_flags\":[\"tracking_ok\",\"target_valid\","
+               "\"ranging_on\",\"night_vision_on\",\"lighting_on\",\"upward_mount\"],");
+    /* undecided, both readings fit (01 00: tracking, or ranging): the documented order */
+    pod_packet_hex(0x01, 0x00, hex);
+    expect_pod(hex, NULL, "\"pod_status\":1,\"pod_status_order\":\"le\",\"pod_flags\":[\"tracking_ok\"],");
+    pod_packet_hex(0x00, 0x01, hex);
+    expect_pod(hex, NULL, "\"pod_status\":256,\"pod_status_order\":\"le\",\"pod_flags\":[\"ranging_on\"],");
+    pod_packet_hex(0x00, 0x00, hex);
+    expect_pod(hex, NULL, "\"pod_status\":0,\"pod_status_order\":\"le\",\"pod_flags\":[],");
+    /* undecided, neither fits (02 08: bits 1 and 11, or 3 and 9): the documented order, named bits only */
+    pod_packet_hex(0x02, 0x08, hex);
+    expect_pod(hex, NULL, "\"pod_status\":2050,\"pod_status_order\":\"le\",\"pod_flags\":[],");
+
+    /* host packets have no pod status */
+    r = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, NULL);
+    assert_null(strstr(r.out, "pod_"));
+    tool_result_free(&r);
+}
+
+static void test_pod_order_option(void **state)
+{
+    char hex[2 * XF_PACKET_MAX_LEN + 1], *input;
+    tool_result r;
+    (void)state;
+    /* forced, either way, whatever the data says; pod_status itself never changes */
+    expect_pod(V206_REPLY_HEX, "--pod-order=le",
+               "\"pod_status\":32769,\"pod_status_order\":\"le\",\"pod_flags\":[\"tracking_ok\"],");
+    expect_pod(V206_REPLY_HEX, "--pod-order=be",
+               "\"pod_status\":32769,\"pod_status_order\":\"be\",\"pod_flags\":[\"target_valid\",\"ranging_on\"],");
+    expect_pod(V206_REPLY_HEX, "--pod-order=auto",
+               "\"pod_status\":32769,\"pod_status_order\":\"be\",\"pod_flags\":[\"target_valid\",\"ranging_on\"],");
+    pod_packet_hex(0x01, 0x00, hex);
+    expect_pod(hex, "--pod-order=be", "\"pod_status\":1,\"pod_status_order\":\"be\",\"pod_flags\":[\"ranging_on\"],");
+    pod_packet_hex(0x01, 0x10, hex); /* big-endian 0x0110: ranging, and reserved bit 4 (not named) */
+    expect_pod(hex, "--pod-order=be",
+               "\"pod_status\":4097,\"pod_status_order\":\"be\",\"pod_flags\":[\"ranging_on\"],");
+
+    /* the value as the next argument, and on stdin */
+    r = run_tool(V206_REPLY_HEX, "decode", "--pod-order", "le", "--json", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "\"pod_status_order\":\"le\",\"pod_flags\":[\"tracking_ok\"]"));
+    tool_result_free(&r);
+
+    /* the table reads the flags the same way, and says when it reads them big-endian */
+    r = run_tool(NULL, "decode", V206_REPLY_HEX, NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "0x8001       target_valid ranging_on (read big-endian"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "decode", "--pod-order", "le", V206_REPLY_HEX, NULL);
+    assert_non_null(strstr(r.out, "0x8001       tracking_ok reserved bits 0x8000 (read little-endian: --pod-order)"));
+    tool_result_free(&r);
+    pod_packet_hex(0x01, 0x10, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_non_null(strstr(r.out, "0x1001       tracking_ok upward_mount\n"));
+    tool_result_free(&r);
+
+    /* decode --json | encode --json gives back the bytes: the new keys are accepted */
+    r = run_tool(NULL, "decode", "--json", V206_REPLY_HEX, NULL);
+    input = strdup(r.out);
+    tool_result_free(&r);
+    r = run_tool(input, "encode", "--json", "-", NULL);
+    assert_int_equal(r.status, 0);
+    assert_string_equal(r.out, V206_REPLY_HEX "\n");
+    tool_result_free(&r);
+    free(input);
+
+    /* bad values */
+    r = run_tool(NULL, "decode", "--pod-order", "little", V206_REPLY_HEX, NULL);
+    assert_failure(&r, 2, "decode: --pod-order little: must be le, be or auto", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "decode", V206_REPLY_HEX, "--pod-order", NULL);
+    assert_failure(&r, 2, "decode: --pod-order needs a value", NULL);
+    tool_result_free(&r);
+}
+
 /* ---- faults in arguments -------------------------------------------------------------- */
 
 static void test_argument_faults(void **state)
@@ -439,7 +581,8 @@ int main(void)
         cmocka_unit_test(test_appendix1_table),    cmocka_unit_test(test_gcu_versions),
         cmocka_unit_test(test_host_command_extra), cmocka_unit_test(test_argument_faults),
         cmocka_unit_test(test_stdin_noisy),        cmocka_unit_test(test_stdin_stream_order),
-        cmocka_unit_test(test_stdin_faults),
+        cmocka_unit_test(test_stdin_faults),       cmocka_unit_test(test_pod_order_json),
+        cmocka_unit_test(test_pod_order_option),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

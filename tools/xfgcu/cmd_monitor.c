@@ -87,7 +87,7 @@ static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t l
     }
     m->received++;
     if (m->json) {
-        (void)jsonpkt_print(data, len, XF_DIR_GCU, stdout);
+        (void)jsonpkt_print(data, len, XF_DIR_GCU, POD_READ_AUTO, stdout);
         fflush(stdout);
     }
 }

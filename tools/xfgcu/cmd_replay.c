@@ -46,7 +46,7 @@ typedef struct replay {
 
 static int print_json(const uint8_t *buf, size_t len, xf_direction dir, uint32_t t_ms)
 {
-    json_t *pkt = jsonpkt_from_wire(buf, len, dir);
+    json_t *pkt = jsonpkt_from_wire(buf, len, dir, POD_READ_AUTO);
     json_t *obj = json_object();
     char *text = NULL;
     if (pkt != NULL && obj != NULL && json_object_set_new(obj, "t", json_real(cli_seconds(t_ms))) == 0 &&
@@ -118,7 +118,7 @@ static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
         }
         snprintf(where, sizeof(where), "t %.3f s, %s", cli_seconds(t),
                  dir == XF_DIR_HOST ? "host to GCU" : "GCU to host");
-        table_print(f->data, f->len, dir, where, stdout);
+        table_print(f->data, f->len, dir, where, POD_READ_AUTO, stdout);
         break;
     }
     r->packets[dir]++;

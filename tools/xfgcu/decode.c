@@ -1,5 +1,5 @@
 /*
- * decode.c - `xfgcu decode [--json] [HEX ...]`.
+ * decode.c - `xfgcu decode [--json] [--pod-order le|be|auto] [HEX ...]`.
  *
  * With arguments: each is one whole packet; all are checked before any is
  * printed, and the first bad one fails the command with its fault.
@@ -23,7 +23,7 @@
 
 void help_decode(FILE *out)
 {
-    fputs("usage: xfgcu decode [--json] [HEX ...]\n\n"
+    fputs("usage: xfgcu decode [--json] [--pod-order le|be|auto] [HEX ...]\n\n"
           "Decode packets of either direction (host A8 E5, GCU 8A 5E).\n"
           "Each HEX argument is one whole packet: hex digits, with spaces, colons, commas or 0x\n"
           "prefixes if you like (\"A8 E5 48 00 ...\", \"a8e54800...\", \"0xA8,0xE5,...\"). A bad\n"
@@ -35,20 +35,33 @@ void help_decode(FILE *out)
           "            params (hex of bytes 70..S-3) and every field under its canonical name as\n"
           "            the raw wire integer; reserved_main / reserved_sub (hex) when not zero;\n"
           "            extras: order_name, command / command_error (host), feedback, mode_name,\n"
-          "            gimbal_model (GCU). `xfgcu encode --json` turns it back into the packet.\n"
+          "            pod_status_order, pod_flags, gimbal_model (GCU). `xfgcu encode --json` turns\n"
+          "            it back into the packet.\n"
+          "  --pod-order le|be|auto\n"
+          "            the byte order the flags of pod_status are read in (pod_status itself stays\n"
+          "            the little-endian wire integer). auto (the default): per packet, the order\n"
+          "            that leaves the reserved bits clear; little-endian, the documented order,\n"
+          "            when both or neither do. The vendor's own example reads it big-endian.\n"
           "Without --json: a table of field, raw value and physical value.\n",
           out);
 }
 
-static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, int json, size_t index)
+/* How to print: --json and --pod-order. */
+typedef struct style {
+    int json;
+    pod_reading pod;
+} style;
+
+static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, const style *how,
+                        size_t index)
 {
-    if (json) {
-        return jsonpkt_print(buf, len, dir, stdout);
+    if (how->json) {
+        return jsonpkt_print(buf, len, dir, how->pod, stdout);
     }
     if (index > 0u) {
         putchar('\n');
     }
-    table_print(buf, len, dir, where, stdout);
+    table_print(buf, len, dir, where, how->pod, stdout);
     return XFGCU_EXIT_OK;
 }
 
@@ -197,7 +210,7 @@ static int joined_arguments(int count, char **hex, packet_list *list)
     return rc;
 }
 
-static int decode_arguments(int count, char **hex, int json)
+static int decode_arguments(int count, char **hex, const style *how)
 {
     int joined = all_arguments_short(count, hex);
     size_t k, slots = joined ? ((size_t)count * 4u) / XF_PACKET_MIN_LEN + 1u : (size_t)count;
@@ -212,7 +225,7 @@ static int decode_arguments(int count, char **hex, int json)
     for (k = 0; k < list.count && rc == XFGCU_EXIT_OK; k++) {
         char where[32];
         snprintf(where, sizeof(where), joined ? "packet %zu of the arguments" : "argument %zu", k + 1u);
-        rc = print_packet(list.items[k].bytes, list.items[k].len, list.items[k].dir, where, json, k);
+        rc = print_packet(list.items[k].bytes, list.items[k].len, list.items[k].dir, where, how, k);
     }
     free(list.items);
     return rc;
@@ -237,7 +250,7 @@ typedef struct stream {
     found queue[QUEUE_MAX];
     size_t queued;
     size_t printed;
-    int json;
+    style how;
     int rc;
 } stream;
 
@@ -248,7 +261,7 @@ static void emit(stream *s, const found *f)
         return;
     }
     snprintf(where, sizeof(where), "stdin offset %zu", f->start);
-    s->rc = print_packet(f->bytes, f->len, f->dir, where, s->json, s->printed);
+    s->rc = print_packet(f->bytes, f->len, f->dir, where, &s->how, s->printed);
     s->printed++;
 }
 
@@ -361,7 +374,7 @@ static int read_stdin(stream *s, int *bad, hex_fault *fault)
     return XFGCU_EXIT_OK;
 }
 
-static int decode_stdin(int json)
+static int decode_stdin(const style *how)
 {
     stream *s = calloc(1, sizeof(*s));
     hex_fault fault;
@@ -369,7 +382,7 @@ static int decode_stdin(int json)
     if (s == NULL) {
         return cli_fail("decode: out of memory");
     }
-    s->json = json;
+    s->how = *how;
     (void)xf_parser_init(&s->parser[XF_DIR_HOST], XF_DIR_HOST);
     (void)xf_parser_init(&s->parser[XF_DIR_GCU], XF_DIR_GCU);
     rc = read_stdin(s, &bad, &fault);
@@ -388,17 +401,35 @@ static int decode_stdin(int json)
 
 /* ---- the command ------------------------------------------------------------- */
 
-enum { O_JSON = 256, O_HELP };
+enum { O_JSON = 256, O_POD_ORDER, O_HELP };
 
 static const struct option decode_options[] = {
     {"json", no_argument, NULL, O_JSON},
+    {"pod-order", required_argument, NULL, O_POD_ORDER},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
 
+static int pod_order_option(const cli_args *a, pod_reading *pod)
+{
+    static const char *const words[] = {"auto", "le", "be"}; /* indexed by pod_reading */
+    const char *what = "le, be or auto";
+    const char *text = NULL;
+    size_t k;
+    int rc = cli_value_text(a, what, &text);
+    for (k = 0; rc == XFGCU_EXIT_OK && k < sizeof(words) / sizeof(words[0]); k++) {
+        if (strcmp(text, words[k]) == 0) {
+            *pod = (pod_reading)k;
+            return XFGCU_EXIT_OK;
+        }
+    }
+    return (rc == XFGCU_EXIT_OK) ? cli_fail_in(a->context, "--%s %s: must be %s", a->opt->name, text, what) : rc;
+}
+
 int cmd_decode(const cli_link *link, int argc, char **argv)
 {
-    int id, json = 0, help = 0, nhex = 0, rc = XFGCU_EXIT_OK;
+    int id, help = 0, nhex = 0, rc = XFGCU_EXIT_OK;
+    style how = {0, POD_READ_AUTO};
     char **hex = calloc((size_t)argc, sizeof(*hex));
     cli_args a;
     (void)link; /* offline */
@@ -408,7 +439,8 @@ int cmd_decode(const cli_link *link, int argc, char **argv)
     cli_args_init(&a, argc, argv, CLI_IN_ORDER, decode_options, "decode");
     while (rc == XFGCU_EXIT_OK && !help && (id = cli_next(&a)) != CLI_END) {
         switch (id) {
-        case O_JSON: json = 1; break;
+        case O_JSON: how.json = 1; break;
+        case O_POD_ORDER: rc = pod_order_option(&a, &how.pod); break;
         case O_HELP: help = 1; break;
         case CLI_ARG: hex[nhex++] = a.argv[a.index]; break;
         default: rc = XFGCU_EXIT_USAGE; break; /* CLI_BAD: said */
@@ -417,7 +449,7 @@ int cmd_decode(const cli_link *link, int argc, char **argv)
     if (rc == XFGCU_EXIT_OK && help) {
         help_decode(stdout);
     } else if (rc == XFGCU_EXIT_OK) {
-        rc = (nhex > 0) ? decode_arguments(nhex, hex, json) : decode_stdin(json);
+        rc = (nhex > 0) ? decode_arguments(nhex, hex, &how) : decode_stdin(&how);
     }
     free(hex);
     return rc;

@@ -173,3 +173,26 @@ size_t reserved_span(xf_direction dir, const field_desc *f, uint8_t version, siz
     *len = (size_t)(f->offset + f->size - start->offset);
     return start->offset;
 }
+
+/* ---- pod status ------------------------------------------------------------- */
+
+const flag_name pod_flag_names[] = {{XF_POD_TRACKING_OK, "tracking_ok"},
+                                    {XF_POD_TARGET_VALID, "target_valid"},
+                                    {XF_POD_RANGING_ON, "ranging_on"},
+                                    {XF_POD_NIGHT_VISION_ON, "night_vision_on"},
+                                    {XF_POD_LIGHTING_ON, "lighting_on"},
+                                    {XF_POD_UPWARD_MOUNT, "upward_mount"},
+                                    {0, NULL}};
+
+xf_pod_order pod_order_for(uint16_t pod_status, pod_reading how)
+{
+    switch (how) {
+    case POD_READ_LE: return XF_POD_ORDER_LE;
+    case POD_READ_BE: return XF_POD_ORDER_BE;
+    default:
+        /* the word does not tell: the order both documents state */
+        return (xf_pod_status_order(pod_status) == XF_POD_ORDER_BE) ? XF_POD_ORDER_BE : XF_POD_ORDER_LE;
+    }
+}
+
+const char *pod_order_name(xf_pod_order order) { return (order == XF_POD_ORDER_BE) ? "be" : "le"; }

@@ -68,6 +68,33 @@ void field_set(uint8_t *pkt, const field_desc *f, long long v);
 /** The wire type's range. */
 void field_range(const field_desc *f, long long *lo, long long *hi);
 
+/* ---- the pod status word's byte order (docs/protocol.md §11.7) ----------------
+ * pod_status stays the raw little-endian wire integer everywhere; its flags
+ * are read in the order the word itself points to (xf_pod_status_order()),
+ * little-endian, the documented order, when it does not tell, or in the
+ * order decode's --pod-order forces. */
+
+/** How to read the flags of pod_status: decided per packet (decode --pod-order auto), or forced. */
+typedef enum pod_reading {
+    POD_READ_AUTO, /**< xf_pod_status_order(); undecided: little-endian */
+    POD_READ_LE,   /**< --pod-order le */
+    POD_READ_BE    /**< --pod-order be */
+} pod_reading;
+
+/** The order @p pod_status is read in under @p how: ::XF_POD_ORDER_LE or ::XF_POD_ORDER_BE, never undecided. */
+xf_pod_order pod_order_for(uint16_t pod_status, pod_reading how);
+/** "le" or "be", as the JSON key pod_status_order says it. */
+const char *pod_order_name(xf_pod_order order);
+
+/** A named bit of a status word. */
+typedef struct flag_name {
+    unsigned mask;
+    const char *name;
+} flag_name;
+
+/** The canonical names of the XF_POD_* flags, in bit order, ended by {0, NULL}. */
+extern const flag_name pod_flag_names[];
+
 /* Reserved bytes are not fields, but decode -> encode must give back every
  * byte, so they travel as hex. A block also holds the bytes of the fields
  * just before it that the packet's version does not have: a GCU packet of

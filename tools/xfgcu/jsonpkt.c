@@ -114,7 +114,24 @@ static void put_reserved(builder *b, const uint8_t *buf, xf_direction dir, uint8
     }
 }
 
-static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version)
+/* The order pod_status is read in, and the names of its flags in that order. */
+static void put_pod(builder *b, uint16_t raw, pod_reading how)
+{
+    xf_pod_order order = pod_order_for(raw, how);
+    unsigned flags = xf_pod_flags(raw, order);
+    json_t *names = json_array();
+    size_t i;
+    put(b, "pod_status_order", json_string(pod_order_name(order)));
+    for (i = 0; names != NULL && pod_flag_names[i].name != NULL; i++) {
+        if ((flags & pod_flag_names[i].mask) != 0u &&
+            json_array_append_new(names, json_string(pod_flag_names[i].name)) != 0) {
+            b->failed = 1;
+        }
+    }
+    put(b, "pod_flags", names);
+}
+
+static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version, pod_reading pod)
 {
     size_t i, n;
     const field_desc *rows = fields_of(dir, &n);
@@ -130,7 +147,9 @@ static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t
             continue;
         }
         put(b, f->name, json_integer(v));
-        if (f->unit == FU_MODE && (name = xf_mode_name((uint8_t)v)) != NULL) {
+        if (f->unit == FU_POD_STATUS) {
+            put_pod(b, (uint16_t)v, pod);
+        } else if (f->unit == FU_MODE && (name = xf_mode_name((uint8_t)v)) != NULL) {
             put(b, "mode_name", json_string(name));
         } else if (f->unit == FU_MODEL && (name = xf_gimbal_model((uint8_t)v)) != NULL) {
             put(b, "gimbal_model", json_string(name));
@@ -138,7 +157,7 @@ static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t
     }
 }
 
-json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir)
+json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod)
 {
     uint8_t version, order;
     const uint8_t *params = buf + XF_OFF_PARAMS;
@@ -168,7 +187,7 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir)
     } else {
         put_feedback(&b, order, params, plen);
     }
-    put_fields(&b, buf, dir, version);
+    put_fields(&b, buf, dir, version, pod);
     if (b.failed) {
         json_decref(b.obj);
         return NULL;
@@ -176,9 +195,9 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir)
     return b.obj;
 }
 
-int jsonpkt_print(const uint8_t *buf, size_t len, xf_direction dir, FILE *out)
+int jsonpkt_print(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod, FILE *out)
 {
-    json_t *obj = jsonpkt_from_wire(buf, len, dir);
+    json_t *obj = jsonpkt_from_wire(buf, len, dir, pod);
     char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER) : NULL;
     json_decref(obj);
     if (text == NULL) {
@@ -204,7 +223,8 @@ typedef struct reader {
 
 static const char *const common_keys[] = {"direction", "version", "length", "order", "order_name", "params", NULL};
 static const char *const host_extra_keys[] = {"command", "command_error", NULL};
-static const char *const gcu_extra_keys[] = {"feedback", "mode_name", "gimbal_model", NULL};
+static const char *const gcu_extra_keys[] = {"feedback",  "mode_name",    "pod_status_order",
+                                             "pod_flags", "gimbal_model", NULL};
 
 static int in_list(const char *const *list, const char *key)
 {

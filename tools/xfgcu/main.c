@@ -43,7 +43,8 @@ typedef struct command_entry {
 } command_entry;
 
 static const command_entry commands[] = {
-    {"decode", "[--json] [HEX ...]", "decode packets given in hex (stdin when no HEX)", cmd_decode, help_decode},
+    {"decode", "[--json] [--pod-order le|be|auto] [HEX ...]", "decode packets given in hex (stdin when no HEX)",
+     cmd_decode, help_decode},
     {"encode", "[--protocol N] --json OBJECT | COMMAND [ARGS]", "build a packet and print it in hex", cmd_encode,
      help_encode},
     {"send", "COMMAND [ARGS]", "run a command on the GCU and print its result", cmd_send, help_send},

@@ -16,40 +16,28 @@
 #include "fields.h"
 #include "hexin.h"
 
-typedef struct bit_name {
-    unsigned mask;
-    const char *name;
-} bit_name;
-
-static const bit_name host_status_bits[] = {
+static const flag_name host_status_bits[] = {
     {XF_STATUS_INS_VALID, "ins_valid"}, {XF_STATUS_CTRL_VALID, "ctrl_valid"}, {0, NULL}};
-static const bit_name pod_bits[] = {{XF_POD_TRACKING_OK, "tracking_ok"},
-                                    {XF_POD_TARGET_VALID, "target_valid"},
-                                    {XF_POD_RANGING_ON, "ranging_on"},
-                                    {XF_POD_NIGHT_VISION_ON, "night_vision_on"},
-                                    {XF_POD_LIGHTING_ON, "lighting_on"},
-                                    {XF_POD_UPWARD_MOUNT, "upward_mount"},
-                                    {0, NULL}};
-static const bit_name error_bits[] = {{XF_ERROR_POD_HW_FAULT, "pod_hw_fault"},
-                                      {XF_ERROR_MAVLINK_RATE, "mavlink_rate_abnormal"},
-                                      {XF_ERROR_GNSS_NOT_FIXED, "gnss_not_positioned"},
-                                      {XF_ERROR_GCU_HW_FAULT, "gcu_hw_fault"},
-                                      {0, NULL}};
-static const bit_name thermal_bits[] = {{XF_THERMAL_LOW_TEMP_ALARM, "low_temp_alarm"},
-                                        {XF_THERMAL_HIGH_TEMP_ALARM, "high_temp_alarm"},
-                                        {XF_THERMAL_SPOT_ON, "spot_temp_on"},
-                                        {XF_THERMAL_ISOTHERM_ON, "isotherm_on"},
-                                        {XF_THERMAL_ALARM_ON, "temp_alarm_on"},
-                                        {XF_THERMAL_AREA_ON, "area_temp_on"},
-                                        {XF_THERMAL_MEASURE_AVAILABLE, "temp_measurement_available"},
-                                        {0, NULL}};
-static const bit_name camera_bits[] = {{XF_CAMERA_RECORDING, "recording"},
-                                       {XF_CAMERA_AUTO_FLIP_OFF, "auto_flip_off"},
-                                       {XF_CAMERA_OSD_TARGET, "osd_shows_target"},
-                                       {XF_CAMERA_OSD_ON, "osd_on"},
-                                       {XF_CAMERA_DIGITAL_ZOOM_ON, "digital_zoom_on"},
-                                       {XF_CAMERA_DETECTION_ON, "target_detection_on"},
+static const flag_name error_bits[] = {{XF_ERROR_POD_HW_FAULT, "pod_hw_fault"},
+                                       {XF_ERROR_MAVLINK_RATE, "mavlink_rate_abnormal"},
+                                       {XF_ERROR_GNSS_NOT_FIXED, "gnss_not_positioned"},
+                                       {XF_ERROR_GCU_HW_FAULT, "gcu_hw_fault"},
                                        {0, NULL}};
+static const flag_name thermal_bits[] = {{XF_THERMAL_LOW_TEMP_ALARM, "low_temp_alarm"},
+                                         {XF_THERMAL_HIGH_TEMP_ALARM, "high_temp_alarm"},
+                                         {XF_THERMAL_SPOT_ON, "spot_temp_on"},
+                                         {XF_THERMAL_ISOTHERM_ON, "isotherm_on"},
+                                         {XF_THERMAL_ALARM_ON, "temp_alarm_on"},
+                                         {XF_THERMAL_AREA_ON, "area_temp_on"},
+                                         {XF_THERMAL_MEASURE_AVAILABLE, "temp_measurement_available"},
+                                         {0, NULL}};
+static const flag_name camera_bits[] = {{XF_CAMERA_RECORDING, "recording"},
+                                        {XF_CAMERA_AUTO_FLIP_OFF, "auto_flip_off"},
+                                        {XF_CAMERA_OSD_TARGET, "osd_shows_target"},
+                                        {XF_CAMERA_OSD_ON, "osd_on"},
+                                        {XF_CAMERA_DIGITAL_ZOOM_ON, "digital_zoom_on"},
+                                        {XF_CAMERA_DETECTION_ON, "target_detection_on"},
+                                        {0, NULL}};
 
 static void append(char *buf, size_t cap, const char *s)
 {
@@ -60,7 +48,7 @@ static void append(char *buf, size_t cap, const char *s)
 }
 
 /* Names of the set bits; bits without a name are shown as a mask. */
-static void bits_text(unsigned v, unsigned ignore, const bit_name *names, char *buf, size_t cap)
+static void bits_text(unsigned v, unsigned ignore, const flag_name *names, char *buf, size_t cap)
 {
     unsigned known = ignore;
     char rest[32];
@@ -100,12 +88,32 @@ static void gnss_text(const uint8_t *pkt, long long week, char *buf, size_t cap)
              XF_LEAP_SECONDS_2017);
 }
 
+/* The flags of pod_status in the order it is read in, and which order that is when it is not
+ * plainly the documented one (docs/protocol.md §11.7). */
+static void pod_text(uint16_t raw, pod_reading how, char *buf, size_t cap)
+{
+    xf_pod_order order = pod_order_for(raw, how);
+    xf_pod_order evidence = xf_pod_status_order(raw);
+    bits_text(xf_pod_flags(raw, order), 0, pod_flag_names, buf, cap);
+    if (how != POD_READ_AUTO) {
+        append(buf, cap,
+               order == XF_POD_ORDER_BE ? "(read big-endian: --pod-order)" : "(read little-endian: --pod-order)");
+    } else if (order == XF_POD_ORDER_BE) {
+        append(buf, cap, "(read big-endian: little-endian sets reserved bits)");
+    } else if (evidence == XF_POD_ORDER_UNDECIDED && xf_pod_flags(raw, XF_POD_ORDER_BE) != raw) {
+        append(buf, cap,
+               (raw & XF_POD_RESERVED_MASK) != 0u ? "(read little-endian: both orders set reserved bits)"
+                                                  : "(read little-endian: big-endian would fit too)");
+    }
+}
+
 static void named(const char *name, const char *unknown, char *buf, size_t cap)
 {
     snprintf(buf, cap, "%s", name != NULL ? name : unknown);
 }
 
-static void physical(const field_desc *f, long long raw, const uint8_t *pkt, uint8_t version, char *buf, size_t cap)
+static void physical(const field_desc *f, long long raw, const uint8_t *pkt, uint8_t version, pod_reading pod,
+                     char *buf, size_t cap)
 {
     double r = (double)raw;
     buf[0] = '\0';
@@ -136,7 +144,7 @@ static void physical(const field_desc *f, long long raw, const uint8_t *pkt, uin
     case FU_MODE: named(xf_mode_name((uint8_t)raw), "unknown mode", buf, cap); break;
     case FU_MODEL: named(xf_gimbal_model((uint8_t)raw), "unknown model", buf, cap); break;
     case FU_HOST_STATUS: bits_text((unsigned)raw, 0, host_status_bits, buf, cap); break;
-    case FU_POD_STATUS: bits_text((unsigned)raw, 0, pod_bits, buf, cap); break;
+    case FU_POD_STATUS: pod_text((uint16_t)raw, pod, buf, cap); break;
     case FU_ERROR_CODE:
         if (version >= XF_PROTOCOL_V2) {
             bits_text((unsigned)raw, 0, error_bits, buf, cap);
@@ -267,7 +275,7 @@ static void print_reserved(const uint8_t *pkt, xf_direction dir, uint8_t version
     }
 }
 
-void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *where, FILE *out)
+void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *where, pod_reading pod, FILE *out)
 {
     uint8_t version = buf[XF_OFF_VERSION];
     size_t i, n;
@@ -280,7 +288,7 @@ void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *w
             print_reserved(buf, dir, version, &rows[i], out);
         } else if (field_present(&rows[i], version)) {
             raw_text(&rows[i], v, raw, sizeof(raw));
-            physical(&rows[i], v, buf, version, value, sizeof(value));
+            physical(&rows[i], v, buf, version, pod, value, sizeof(value));
             row(out, rows[i].name, raw, value);
         }
     }
