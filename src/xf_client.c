@@ -479,7 +479,8 @@ static void xf__put_control(xf_client *c, uint8_t *buf)
         /* zero rates, still valid: the gimbal holds still */
     } else {
         /* One raw unit is 0.1 deg/s divided by the main screen's zoom. */
-        float zoom = xf_zoom_x(c->tele.zoom_cam1); /* 0 until a sub frame came: counts as 1 */
+        float zoom =
+            xf_zoom_x((c->main_camera == 2u) ? c->tele.zoom_cam2 : c->tele.zoom_cam1); /* 0 before a sub frame: 1 */
         for (i = 0; i < 3u; i++) {
             v[i] = xf_ctrl_rate_raw(c->ctrl[i], zoom);
         }
@@ -664,6 +665,13 @@ xf_ctrl_status xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps
 xf_ctrl_status xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms)
 {
     return (c != NULL) ? xf__set_ctrl(c, XF__CTRL_ANGLES, roll_deg, pitch_deg, yaw_deg, now_ms) : XF_CTRL_NOT_SET;
+}
+
+void xf_client_set_main_camera(xf_client *c, uint8_t camera)
+{
+    if (c != NULL) {
+        c->main_camera = (camera == 2u) ? 2u : 1u;
+    }
 }
 
 void xf_client_clear_control(xf_client *c)

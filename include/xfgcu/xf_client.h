@@ -381,6 +381,7 @@ typedef struct xf_client {
     uint8_t ctrl_kind;               /**< private: 0 none, 1 rates, 2 angles */
     uint8_t ctrl_mode;               /**< private: the reported mode that last read the setpoint (0: none yet) */
     uint8_t ctrl_dropped;            /**< private: the setpoint was dropped (xf_client_control_status()) */
+    uint8_t main_camera;             /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
     /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
     uint8_t stream_on; /**< private: the external-track stream is on */
     uint8_t stream[6]; /**< private: the stream's encoded parameters */
@@ -521,6 +522,19 @@ void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now
  */
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
 /**
+ * Say which camera is on the main screen: its zoom scales the rates
+ * (xf_client_set_rates()), since the protocol's rate unit is 0.1 deg/s
+ * divided by the main screen's zoom. The GCU does not report which camera
+ * that is (its picture-in-picture mode is a number whose views the vendor
+ * does not define), so the application, which chose the view, tells the
+ * client; until it does, camera 1 (the zoom camera by default). Does
+ * nothing for a NULL @p c.
+ * @param c       the client
+ * @param camera  1 or 2 (any other value: camera 1)
+ */
+void xf_client_set_main_camera(xf_client *c, uint8_t camera);
+
+/**
  * Whether the control quantities the application set are on the wire, and
  * if not, why: xf_client_control_status(), and what xf_client_set_rates()
  * and xf_client_set_angles() return.
@@ -568,7 +582,8 @@ xf_ctrl_status xf_client_control_status(const xf_client *c);
  *
  * Sent with ctrl_valid in every packet whose mode reads rates
  * (::xf_ctrl_status), each converted with
- * xf_ctrl_rate_raw() using camera 1's zoom from the telemetry (1 until a
+ * xf_ctrl_rate_raw() using the main camera's zoom (xf_client_set_main_camera(); camera 1
+ * by default) from the telemetry (1 until a
  * sub frame arrived), clamped to [-1500, 1500] raw. When they are older
  * than rate_watchdog_ms, zero rates are sent instead (still valid, so the
  * gimbal holds still) and xf_health.watchdog_active is set until the next

@@ -2441,6 +2441,42 @@ static void test_control_mode_changes(void **state)
     ct_rig_free(r);
 }
 
+/* Rates are 0.1 deg/s divided by the main screen's zoom: camera 1's until the application says
+ * camera 2 is on the main screen. */
+static void test_rates_main_camera_zoom(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_gcu_packet g;
+    xf_host_packet last;
+    (void)state;
+    r->sim_on = 0; /* the test is the GCU: head lock, camera 1 at 2x, camera 2 at 4x */
+    memset(&g, 0, sizeof(g));
+    g.version = 1;
+    g.main.gimbal_mode = XF_MODE_HEAD_LOCK;
+    g.sub.sub_header = XF_SUB_HEADER;
+    g.sub.zoom_cam1 = 20;
+    g.sub.zoom_cam2 = 40;
+    ct_gcu_reply(r, &g);
+    ct_run(r, 5);
+    assert_int_equal(xf_client_set_rates(&r->c, 0.0f, 10.0f, -20.0f, r->now), XF_CTRL_SENT);
+    (void)ct_drain_host(r, NULL);
+    ct_run(r, 25);
+    assert_int_equal(ct_drain_host(r, &last), 1);
+    assert_int_equal(last.main.pitch_ctrl, 200); /* 10 deg/s: 100 raw at 1x, 200 at 2x (a unit is 0.05 deg/s) */
+    assert_int_equal(last.main.yaw_ctrl, -400);
+    xf_client_set_main_camera(&r->c, 2);
+    ct_run(r, 20);
+    assert_int_equal(ct_drain_host(r, &last), 1);
+    assert_int_equal(last.main.pitch_ctrl, 400);
+    assert_int_equal(last.main.yaw_ctrl, -800);
+    xf_client_set_main_camera(&r->c, 7); /* not a camera: camera 1 */
+    ct_run(r, 20);
+    assert_int_equal(ct_drain_host(r, &last), 1);
+    assert_int_equal(last.main.pitch_ctrl, 200);
+    xf_client_set_main_camera(NULL, 2);
+    ct_rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2478,6 +2514,7 @@ int main(void)
         cmocka_unit_test(test_gcu_version_decides),
         cmocka_unit_test(test_control_rule_every_case),
         cmocka_unit_test(test_control_mode_changes),
+        cmocka_unit_test(test_rates_main_camera_zoom),
         cmocka_unit_test(test_carrier_only_while_fresh),
         cmocka_unit_test(test_gnss_only_while_fresh),
         cmocka_unit_test(test_watchdog_zeroes_rates),
