@@ -22,8 +22,8 @@ void xf_sim_config_init(xf_sim_config *cfg)
     memset(cfg, 0, sizeof(*cfg));
     cfg->version = XF_PROTOCOL_V1;
     cfg->gimbal_code = 58; /* Z-9B_V4(T): the one model of V2.0.6's support list with every order */
-    cfg->hw_version = 3;
-    cfg->fw_version = 12;
+    cfg->hw_version = 31; /* versions in tenths, as V2.0.6's example: 3.1 */
+    cfg->fw_version = 50; /* 5.0 */
     cfg->slew_dps = 120.0f;
     cfg->max_rate_dps = 180.0f;
     cfg->zoom_max = 30.0f;
@@ -131,15 +131,33 @@ static void xf__set_bit16(uint16_t *v, uint16_t bit, int on)
 
 static void xf__set_bit8(uint8_t *v, uint8_t bit, int on) { *v = (uint8_t)(on ? (*v | bit) : (*v & (uint8_t)~bit)); }
 
+/* zoom_to's target on a camera zooming up to max: a rate (-10 = 1x), or a
+ * fraction of the range (V2.0.6: 5000 of a 30x camera is 15x). */
+static float xf__zoom_to(const xf_command *c, float max)
+{
+    float x = (c->zoom < 0) ? (float)(-c->zoom) / 10.0f : max * (float)c->zoom / 10000.0f;
+    return xf__clampf(x, 1.0f, max);
+}
+
+/* Zoom in, out, stop and to act on the cameras of the mask only. */
+static void xf__zoom_order(xf_sim *s, const xf_command *c)
+{
+    float dir = (c->order == XF_ORDER_ZOOM_IN) ? 1.0f : (c->order == XF_ORDER_ZOOM_OUT) ? -1.0f : 0.0f;
+    if (c->cameras & XF_CAM1) {
+        s->zoom_dir = dir;
+        s->zoom_target = (c->order == XF_ORDER_ZOOM_TO) ? xf__zoom_to(c, s->cfg.zoom_max) : 0.0f;
+    }
+    if (c->cameras & XF_CAM2) {
+        s->zoom_dir2 = dir;
+        s->zoom_target2 = (c->order == XF_ORDER_ZOOM_TO) ? xf__zoom_to(c, XF_SIM_ZOOM2_MAX) : 0.0f;
+    }
+}
+
 /* Neutral: back to pitch 0 and the carrier's heading, without changing mode. */
 static uint8_t xf__neutral(xf_sim *s)
 {
     float cr, cp, cy;
     xf__carrier(s, &cr, &cp, &cy);
-    if (s->mode == XF_MODE_TRACK) { /* leave tracking, then back to neutral */
-        s->mode = XF_MODE_HEAD_LOCK;
-        xf__set_bit16(&s->pod_status, XF_POD_TRACKING_OK, 0);
-    }
     switch (s->mode) {
     case XF_MODE_HEAD_LOCK:
     case XF_MODE_HEAD_FOLLOW:
@@ -153,7 +171,7 @@ static uint8_t xf__neutral(xf_sim *s)
         s->tgt[1] = -90.0f;
         s->tgt[2] = cy;
         break;
-    default: return XF_STATE_FAILURE; /* no response in FPV, Euler angle control and gaze */
+    default: return XF_STATE_FAILURE; /* V2.0.6: no response in angle control, Euler, gaze, track and FPV */
     }
     s->have_tgt = 1;
     return XF_STATE_SUCCESS;
@@ -171,7 +189,10 @@ static uint8_t xf__mode_order(xf_sim *s, const xf_command *c)
         s->mode = XF_MODE_HEAD_FOLLOW;
         break;
     }
-    case XF_ORDER_ORTHOVIEW: s->mode = XF_MODE_ORTHOVIEW; break;
+    case XF_ORDER_ORTHOVIEW: /* after head follow, yaw keeps following the carrier */
+        s->ortho_follow = (s->mode == XF_MODE_HEAD_FOLLOW);
+        s->mode = XF_MODE_ORTHOVIEW;
+        break;
     case XF_ORDER_EULER: s->mode = XF_MODE_EULER; break;
     case XF_ORDER_FPV: s->mode = XF_MODE_FPV; break;
     case XF_ORDER_GAZE_GEO:
@@ -233,23 +254,9 @@ static uint8_t xf__camera_order(xf_sim *s, const xf_command *c)
         }
         break;
     case XF_ORDER_ZOOM_IN:
-        s->zoom_dir = 1.0f;
-        s->zoom_target = 0.0f;
-        break;
     case XF_ORDER_ZOOM_OUT:
-        s->zoom_dir = -1.0f;
-        s->zoom_target = 0.0f;
-        break;
     case XF_ORDER_ZOOM_STOP:
-        s->zoom_dir = 0.0f;
-        s->zoom_target = 0.0f;
-        break;
-    case XF_ORDER_ZOOM_TO:
-        s->zoom_dir = 0.0f;
-        s->zoom_target = (c->zoom < 0) ? (float)(-c->zoom) / 10.0f
-                                       : 1.0f + (s->cfg.zoom_max - 1.0f) * (float)(c->zoom - 1) / 9999.0f;
-        s->zoom_target = xf__clampf(s->zoom_target, 1.0f, s->cfg.zoom_max);
-        break;
+    case XF_ORDER_ZOOM_TO: xf__zoom_order(s, c); break;
     case XF_ORDER_FOCUS:
     case XF_ORDER_PALETTE: break;
     case XF_ORDER_NIGHT_VISION: xf__set_bit16(&s->pod_status, XF_POD_NIGHT_VISION_ON, c->value != 0u); break;
@@ -397,10 +404,15 @@ static void xf__move(xf_sim *s, float dt)
         s->hold_yaw_offset += r[2] * dt;
         s->yaw = xf__slew(s->yaw, cy + s->hold_yaw_offset, slew, 1);
         break;
-    case XF_MODE_ORTHOVIEW: /* pitch locked at -90, yaw controllable */
+    case XF_MODE_ORTHOVIEW: /* pitch locked at -90, yaw controllable; after head follow it follows the carrier */
         s->roll = xf__slew(s->roll, 0.0f, slew, 0);
         s->pitch = xf__slew(s->pitch, -90.0f, slew, 0);
-        s->yaw += r[2] * dt;
+        if (s->ortho_follow) {
+            s->hold_yaw_offset += r[2] * dt;
+            s->yaw = xf__slew(s->yaw, cy + s->hold_yaw_offset, slew, 1);
+        } else {
+            s->yaw += r[2] * dt;
+        }
         break;
     case XF_MODE_EULER: /* desired Euler angles */
         if (ctrl) {
@@ -422,6 +434,10 @@ static void xf__move(xf_sim *s, float dt)
     }
     case XF_MODE_GAZE: {
         float gp, gy;
+        if (r[1] != 0.0f || r[2] != 0.0f) {
+            s->gaze_lat = 0.0f; /* V2.0.6: a valid non-zero quantity turns gaze-geo into gaze lock */
+            s->gaze_lon = 0.0f;
+        }
         if (xf__gaze_angles(s, &gp, &gy)) {
             s->pitch = xf__slew(s->pitch, gp, slew, 0);
             s->yaw = xf__slew(s->yaw, gy, slew, 1);
@@ -446,18 +462,24 @@ static void xf__move(xf_sim *s, float dt)
     }
 }
 
+/* One camera's zoom: a continuous direction, or a slew to a zoom_to target. */
+static void xf__zoom_camera(float *zoom, float dir, float *target, float step, float max)
+{
+    if (dir != 0.0f) {
+        *zoom = xf__clampf(*zoom + dir * step, 1.0f, max);
+    } else if (*target > 0.0f) {
+        *zoom = xf__slew(*zoom, *target, step, 0);
+        if (*zoom == *target) {
+            *target = 0.0f;
+        }
+    }
+}
+
 static void xf__zoom(xf_sim *s, float dt)
 {
     float step = s->cfg.zoom_speed * dt;
-    if (s->zoom_dir != 0.0f) {
-        s->zoom1 = xf__clampf(s->zoom1 + s->zoom_dir * step, 1.0f, s->cfg.zoom_max);
-        s->zoom2 = xf__clampf(s->zoom2 + s->zoom_dir * step * 0.25f, 1.0f, XF_SIM_ZOOM2_MAX);
-    } else if (s->zoom_target > 0.0f) {
-        s->zoom1 = xf__slew(s->zoom1, s->zoom_target, step, 0);
-        if (s->zoom1 == s->zoom_target) {
-            s->zoom_target = 0.0f;
-        }
-    }
+    xf__zoom_camera(&s->zoom1, s->zoom_dir, &s->zoom_target, step, s->cfg.zoom_max);
+    xf__zoom_camera(&s->zoom2, s->zoom_dir2, &s->zoom_target2, step * 0.25f, XF_SIM_ZOOM2_MAX);
 }
 
 static void xf__range(xf_sim *s)

@@ -41,8 +41,8 @@ typedef struct xf_sim_config {
     uint8_t gimbal_code; /**< model code reported; default 58 (Z-9B_V4(T), which has every order); an order the
                             model does not support (xf_gimbal_supports()) fails */
     /** @var xf_sim_config::hw_version
-     *  hardware version reported, default 3 */
-    uint8_t hw_version, fw_version; /**< firmware version reported, default 12 */
+     *  hardware version reported, in tenths as the vendor's tools show it: default 31 (3.1) */
+    uint8_t hw_version, fw_version; /**< firmware version reported, in tenths: default 50 (5.0) */
     float slew_dps;                 /**< angle-control slew speed, default 120 deg/s */
     float max_rate_dps;             /**< rate clamp, default 180 deg/s */
     float zoom_max;                 /**< camera 1 optical zoom, default 30x */
@@ -134,8 +134,10 @@ typedef struct xf_sim {
      *  camera 1's zoom, x */
     /** @var xf_sim::zoom2
      *  camera 2's zoom, x */
-    float zoom1, zoom2, zoom_dir; /**< continuous zoom: +1 in, -1 out, 0 still */
-    float zoom_target;            /**< zoom_to's target, x; 0 = none */
+    float zoom1, zoom2, zoom_dir; /**< camera 1's continuous zoom: +1 in, -1 out, 0 still */
+    float zoom_dir2;              /**< camera 2's continuous zoom, as zoom_dir */
+    float zoom_target;            /**< camera 1's zoom_to target, x; 0 = none */
+    float zoom_target2;           /**< camera 2's zoom_to target, x; 0 = none */
     float distance_m;             /**< laser range, m */
     /** @var xf_sim::track_x
      *  target offset x, as target_offset_x */
@@ -144,7 +146,7 @@ typedef struct xf_sim {
     uint16_t camera_status;                     /**< V0.2 `XF_CAMERA_*` bits */
     int8_t time_zone;                           /**< V0.2 time zone, hours */
     uint8_t lighting;                           /**< fill light intensity */
-    uint8_t neutral;                            /**< unused */
+    uint8_t ortho_follow;                       /**< orthoview entered from head follow: yaw follows the carrier */
     float tgt[3];                               /**< click-to-aim / neutral target: roll, pitch, yaw */
     uint8_t have_tgt;                           /**< slewing to tgt */
     xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE]; /**< replies held back by the delay fault */

@@ -862,8 +862,8 @@ static void test_telemetry_and_ages(void **state)
     assert_int_equal(t->gimbal_mode, XF_MODE_HEAD_LOCK);
     assert_int_equal(t->gimbal_code, 58);
     assert_string_equal(xf_gimbal_model(t->gimbal_code), "Z-9B_V4(T)");
-    assert_int_equal(t->hw_version, 3);
-    assert_int_equal(t->fw_version, 12);
+    assert_int_equal(t->hw_version, 31); /* 3.1, in tenths */
+    assert_int_equal(t->fw_version, 50);
     assert_int_equal(t->zoom_cam1, 10); /* 1.0x in 0.1 x */
     assert_int_equal(t->zoom_cam2, 10);
     assert_true(t->target_distance <= 0);   /* no valid measurement */

@@ -556,6 +556,108 @@ static void test_orthoview_slew(void **state)
     free(f);
 }
 
+/* A host packet of V1 with @p order (0: null), carrier INS valid at @p carrier_yaw (0.01 deg), and
+ * a valid yaw rate @p yaw_ctrl when non-zero; fed at the fixture's clock. */
+static void send_carrier(sim_fx *f, const xf_command *cmd, uint16_t carrier_yaw, int16_t yaw_ctrl, xf_gcu_packet *r)
+{
+    xf_host_packet p;
+    uint8_t buf[XF_PACKET_MAX_LEN];
+    size_t len = 0;
+    xf_host_packet_init(&p, 1);
+    p.main.status = XF_STATUS_INS_VALID | (yaw_ctrl != 0 ? XF_STATUS_CTRL_VALID : 0u);
+    p.main.carrier_yaw = carrier_yaw;
+    p.main.yaw_ctrl = yaw_ctrl;
+    if (cmd != NULL) {
+        assert_xf(xf_host_set_command(&p, cmd, NULL), XF_OK);
+    }
+    assert_xf(xf_host_pack(&p, buf, sizeof(buf), &len), XF_OK);
+    send_bytes(f, buf, len, r);
+}
+
+/* What V2.0.6 says a GCU does: neutral does not respond in track; zoom_to 5000 of a 30x camera is
+ * 15x; zoom in/out/stop act on the cameras of the mask only; a valid non-zero quantity turns
+ * gaze-geo into gaze lock; in orthoview after head follow yaw follows the carrier; versions in
+ * tenths. */
+static void test_v206_behaviours(void **state)
+{
+    sim_fx *f = fx_new(NULL);
+    xf_command cmd;
+    xf_gcu_packet r;
+    int i;
+    (void)state;
+    assert_int_equal(f->s.cfg.hw_version, 31);
+    assert_int_equal(f->s.cfg.fw_version, 50);
+    /* neutral in track: no response */
+    ct_valid_command(&cmd, XF_ORDER_TRACK);
+    send_cmd(f, 1, &cmd, &r);
+    assert_int_equal(r.main.gimbal_mode, XF_MODE_TRACK);
+    send_order(f, 1, XF_ORDER_NEUTRAL, &r);
+    assert_int_equal(r.params[0], XF_STATE_FAILURE);
+    assert_int_equal(r.main.gimbal_mode, XF_MODE_TRACK);
+    /* zoom_to 5000: half of 30x */
+    xf_command_init(&cmd, XF_ORDER_ZOOM_TO);
+    cmd.zoom = 5000;
+    send_cmd(f, 1, &cmd, NULL);
+    for (i = 0; i < 40; i++) { /* 4 s at 6x per second */
+        f->now += 100;
+        send_order(f, 1, XF_ORDER_NULL, NULL);
+    }
+    assert_near(f->s.zoom1, 15.0, 0.001);
+    assert_near(f->s.zoom2, 1.0, 0.001); /* camera 2 was not in the mask */
+    /* zoom in on camera 2 only */
+    xf_command_init(&cmd, XF_ORDER_ZOOM_IN);
+    cmd.cameras = XF_CAM2;
+    send_cmd(f, 1, &cmd, NULL);
+    for (i = 0; i < 5; i++) {
+        f->now += 100;
+        send_order(f, 1, XF_ORDER_NULL, NULL);
+    }
+    assert_near(f->s.zoom1, 15.0, 0.001);
+    assert_true(f->s.zoom2 > 1.5f);
+    /* gaze-geo, then a valid non-zero rate: gaze lock */
+    xf_command_init(&cmd, XF_ORDER_GAZE_GEO);
+    cmd.latitude = 473977419;
+    cmd.longitude = 85455938;
+    send_carrier(f, &cmd, 0, 0, &r);
+    assert_int_equal(r.params[0], XF_STATE_SUCCESS);
+    assert_true(f->s.gaze_lat != 0.0f);
+    f->now += 100;
+    send_carrier(f, NULL, 0, 0, NULL); /* 0 or invalid: it keeps the point */
+    assert_true(f->s.gaze_lat != 0.0f);
+    for (i = 0; i < 2; i++) { /* the rate acts from the step after the packet that carries it */
+        f->now += 100;
+        send_carrier(f, NULL, 0, 100, NULL);
+    }
+    assert_true(f->s.gaze_lat == 0.0f && f->s.gaze_lon == 0.0f);
+    /* orthoview after head follow: yaw follows the carrier */
+    xf_command_init(&cmd, XF_ORDER_HEAD_FOLLOW);
+    send_carrier(f, &cmd, 0, 0, NULL);
+    xf_command_init(&cmd, XF_ORDER_ORTHOVIEW);
+    send_carrier(f, &cmd, 0, 0, &r);
+    assert_int_equal(r.main.gimbal_mode, XF_MODE_ORTHOVIEW);
+    assert_int_equal(f->s.ortho_follow, 1);
+    for (i = 0; i < 10; i++) {
+        f->now += 200;
+        send_carrier(f, NULL, 9000, 0, NULL); /* the carrier turns to 90 deg */
+    }
+    assert_near(ct_angle_diff(f->s.yaw, 90.0 + f->s.hold_yaw_offset), 0.0, 0.01);
+    /* orthoview straight from head lock: yaw stays */
+    xf_command_init(&cmd, XF_ORDER_HEAD_LOCK);
+    send_carrier(f, &cmd, 9000, 0, NULL);
+    xf_command_init(&cmd, XF_ORDER_ORTHOVIEW);
+    send_carrier(f, &cmd, 9000, 0, NULL);
+    assert_int_equal(f->s.ortho_follow, 0);
+    {
+        float yaw = f->s.yaw;
+        for (i = 0; i < 5; i++) {
+            f->now += 200;
+            send_carrier(f, NULL, 18000, 0, NULL);
+        }
+        assert_near(f->s.yaw, yaw, 0.001);
+    }
+    free(f);
+}
+
 /* The model code picks the orders: one its model lacks (V2.0.6's support list) fails, the
  * same order on a model that has it succeeds. */
 static void test_model_orders(void **state)
@@ -600,6 +702,7 @@ int main(void)
         cmocka_unit_test(test_reply_lengths),
         cmocka_unit_test(test_answers_only_correct_packets),
         cmocka_unit_test(test_once_rule),
+        cmocka_unit_test(test_v206_behaviours),
         cmocka_unit_test(test_model_orders),
         cmocka_unit_test(test_every_order_gets_feedback),
         cmocka_unit_test(test_configured_failures),
