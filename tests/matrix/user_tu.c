@@ -192,6 +192,9 @@ static void test_protocol(void)
     CHECK(same_str(xf_gimbal_model(62), "D-90Pro(V)"));
     CHECK(xf_gimbal_model(1) == NULL);
     CHECK(xf_gimbal_model(255) == NULL);
+    CHECK(xf_gimbal_supports(0, XF_ORDER_PALETTE) == XF_SUPPORT_NO); /* Z-6A has no palette */
+    CHECK(xf_gimbal_supports(58, XF_ORDER_PALETTE) == XF_SUPPORT_YES);
+    CHECK(xf_osd_value(1, XF_PROTOCOL_V2) == 1u && xf_osd_value(1, XF_PROTOCOL_V1) == 0u);
     CHECK(xf_pod_status_order(0x8001u) == XF_POD_ORDER_BE); /* V2.0.6's example, bytes 01 80 */
     CHECK(xf_pod_status_order(0x1001u) == XF_POD_ORDER_LE);
     CHECK(xf_pod_status_order(0x0001u) == XF_POD_ORDER_UNDECIDED);

@@ -385,6 +385,16 @@ static void test_pod_order_option(void **state)
     r = run_tool(NULL, "decode", hex, NULL);
     assert_non_null(strstr(r.out, "0x1001       tracking_ok upward_mount\n"));
     tool_result_free(&r);
+    /* and when the data leaves the order open */
+    pod_packet_hex(0x01, 0x00, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_non_null(strstr(r.out, "0x0001       tracking_ok (read little-endian: big-endian would fit too)\n"));
+    tool_result_free(&r);
+    pod_packet_hex(0x02, 0x08, hex);
+    r = run_tool(NULL, "decode", hex, NULL);
+    assert_non_null(
+        strstr(r.out, "0x0802       reserved bits 0x802 (read little-endian: both orders set reserved bits)\n"));
+    tool_result_free(&r);
 
     /* decode --json | encode --json gives back the bytes: the new keys are accepted */
     r = run_tool(NULL, "decode", "--json", V206_REPLY_HEX, NULL);
