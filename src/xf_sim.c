@@ -22,8 +22,8 @@ void xf_sim_config_init(xf_sim_config *cfg)
     memset(cfg, 0, sizeof(*cfg));
     cfg->version = XF_PROTOCOL_V1;
     cfg->gimbal_code = 58; /* Z-9B_V4(T): the one model of V2.0.6's support list with every order */
-    cfg->hw_version = 31; /* versions in tenths, as V2.0.6's example: 3.1 */
-    cfg->fw_version = 50; /* 5.0 */
+    cfg->hw_version = 31;  /* versions in tenths, as V2.0.6's example: 3.1 */
+    cfg->fw_version = 50;  /* 5.0 */
     cfg->slew_dps = 120.0f;
     cfg->max_rate_dps = 180.0f;
     cfg->zoom_max = 30.0f;
