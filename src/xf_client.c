@@ -259,11 +259,16 @@ static void xf__drop_ctrl(xf_client *c)
     c->ctrl_mode = 0;
 }
 
+#define XF__POD_FORCED 0x80u
+
 static void xf__update_telemetry(xf_client *c, const uint8_t *buf)
 {
     xf_telemetry *t = &c->tele;
     t->have_main = 1;
     xf__tele_read(t, buf, 0, XF__TELE_MAIN_FIELDS);
+    if (c->pod_order == XF_POD_ORDER_UNDECIDED) { /* the first word that tells fixes it for this GCU */
+        c->pod_order = (uint8_t)xf_pod_status_order(t->pod_status);
+    }
     if (c->ctrl_kind != XF__CTRL_NONE && c->ctrl_mode != 0u && t->gimbal_mode != c->ctrl_mode) {
         xf__drop_ctrl(c);
     }
@@ -665,6 +670,27 @@ xf_ctrl_status xf_client_set_rates(xf_client *c, float roll_dps, float pitch_dps
 xf_ctrl_status xf_client_set_angles(xf_client *c, float roll_deg, float pitch_deg, float yaw_deg, uint32_t now_ms)
 {
     return (c != NULL) ? xf__set_ctrl(c, XF__CTRL_ANGLES, roll_deg, pitch_deg, yaw_deg, now_ms) : XF_CTRL_NOT_SET;
+}
+
+uint16_t xf_client_pod_flags(const xf_client *c)
+{
+    return (c == NULL) ? 0u : xf_pod_flags(c->tele.pod_status, xf_client_pod_order(c));
+}
+
+xf_pod_order xf_client_pod_order(const xf_client *c)
+{
+    return (c == NULL) ? XF_POD_ORDER_UNDECIDED : (xf_pod_order)(c->pod_order & ~XF__POD_FORCED);
+}
+
+void xf_client_set_pod_order(xf_client *c, xf_pod_order order)
+{
+    if (c != NULL) {
+        int forced = order == XF_POD_ORDER_LE || order == XF_POD_ORDER_BE;
+        c->pod_order = forced ? (uint8_t)(order | XF__POD_FORCED) : (uint8_t)XF_POD_ORDER_UNDECIDED;
+        if (!forced && c->tele.have_main) {
+            c->pod_order = (uint8_t)xf_pod_status_order(c->tele.pod_status);
+        }
+    }
 }
 
 void xf_client_set_main_camera(xf_client *c, uint8_t camera)

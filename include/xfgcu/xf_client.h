@@ -108,7 +108,7 @@ typedef struct xf_telemetry {
     uint8_t have_main;   /**< 0 until the first reply */
     uint8_t version;     /**< protocol version the GCU speaks */
     uint8_t gimbal_mode; /**< xf_mode */
-    uint16_t pod_status; /**< XF_POD_* */
+    uint16_t pod_status; /**< the raw little-endian wire word; its flags: xf_client_pod_flags() */
     int16_t cam_roll;    /**< 0.01 deg, absolute (xf_cdeg) */
     int16_t cam_pitch;   /**< 0.01 deg, absolute (xf_cdeg) */
     uint16_t cam_yaw;    /**< 0.01 deg, absolute, [0, 36000) (xf_cdeg) */
@@ -382,6 +382,7 @@ typedef struct xf_client {
     uint8_t ctrl_mode;               /**< private: the reported mode that last read the setpoint (0: none yet) */
     uint8_t ctrl_dropped;            /**< private: the setpoint was dropped (xf_client_control_status()) */
     uint8_t main_camera;             /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
+    uint8_t pod_order;               /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
     /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
     uint8_t stream_on; /**< private: the external-track stream is on */
     uint8_t stream[6]; /**< private: the stream's encoded parameters */
@@ -521,6 +522,39 @@ void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now
  * @param now_ms  when it was measured, on xf_client_step()'s clock
  */
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms);
+/**
+ * The pod status flags (`XF_POD_*`) of the last reply, read in the byte
+ * order this GCU uses. The vendor documents the word as little-endian but
+ * decodes its own example big-endian (docs/protocol.md §11.7); the client
+ * decides from the data: the first reply whose word reads with the
+ * reserved bits clear in one order only (xf_pod_status_order()) fixes the
+ * order for this client, and it stays until the application forces one
+ * (xf_client_set_pod_order()). Until then the word is read little-endian.
+ * telemetry.pod_status stays the raw wire word.
+ * @param c  the client
+ * @return the flags; 0 for a NULL @p c
+ */
+uint16_t xf_client_pod_flags(const xf_client *c);
+
+/**
+ * The byte order the client reads the pod status word in: what
+ * xf_client_pod_flags() uses.
+ * @param c  the client
+ * @return ::XF_POD_ORDER_LE or ::XF_POD_ORDER_BE once decided or forced,
+ *   ::XF_POD_ORDER_UNDECIDED before (read as little-endian meanwhile), or
+ *   for a NULL @p c
+ */
+xf_pod_order xf_client_pod_order(const xf_client *c);
+
+/**
+ * Force the byte order of the pod status word (::XF_POD_ORDER_LE or
+ * ::XF_POD_ORDER_BE), or go back to deciding it from the data
+ * (::XF_POD_ORDER_UNDECIDED). Does nothing for a NULL @p c.
+ * @param c      the client
+ * @param order  the order, or ::XF_POD_ORDER_UNDECIDED for automatic
+ */
+void xf_client_set_pod_order(xf_client *c, xf_pod_order order);
+
 /**
  * Say which camera is on the main screen: its zoom scales the rates
  * (xf_client_set_rates()), since the protocol's rate unit is 0.1 deg/s

@@ -2477,6 +2477,51 @@ static void test_rates_main_camera_zoom(void **state)
     ct_rig_free(r);
 }
 
+/* The pod status word's byte order, decided per GCU from the data, kept, and forced on demand. */
+static void test_pod_order_per_gcu(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_gcu_packet g;
+    (void)state;
+    r->sim_on = 0; /* the test is the GCU */
+    memset(&g, 0, sizeof(g));
+    g.version = 2;
+    g.main.gimbal_mode = XF_MODE_HEAD_FOLLOW;
+    g.main.pod_status = 0x0001u; /* bytes 01 00: tracking (LE) or ranging (BE): it does not tell */
+    ct_gcu_reply(r, &g);
+    ct_run(r, 5);
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_UNDECIDED);
+    assert_int_equal(xf_client_pod_flags(&r->c), XF_POD_TRACKING_OK); /* read as documented meanwhile */
+    g.main.pod_status = 0x8001u; /* bytes 01 80, V2.0.6's example: only big-endian has no reserved bit */
+    ct_gcu_reply(r, &g);
+    ct_run(r, 5);
+    assert_int_equal(r->c.tele.pod_status, 0x8001u); /* the raw word stays */
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_BE);
+    assert_int_equal(xf_client_pod_flags(&r->c), XF_POD_RANGING_ON | XF_POD_TARGET_VALID);
+    g.main.pod_status = 0x0001u; /* again undecided: the order stays big-endian for this GCU */
+    ct_gcu_reply(r, &g);
+    ct_run(r, 5);
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_BE);
+    assert_int_equal(xf_client_pod_flags(&r->c), XF_POD_RANGING_ON);
+    g.main.pod_status = 0x1001u; /* bytes 01 10 would decide little-endian, but the order is kept */
+    ct_gcu_reply(r, &g);
+    ct_run(r, 5);
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_BE);
+    xf_client_set_pod_order(&r->c, XF_POD_ORDER_LE); /* forced */
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_LE);
+    assert_int_equal(xf_client_pod_flags(&r->c), XF_POD_TRACKING_OK | XF_POD_UPWARD_MOUNT);
+    g.main.pod_status = 0x8001u;
+    ct_gcu_reply(r, &g);
+    ct_run(r, 5);
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_LE); /* forced stays */
+    xf_client_set_pod_order(&r->c, XF_POD_ORDER_UNDECIDED);        /* automatic again: the last word decides */
+    assert_int_equal(xf_client_pod_order(&r->c), XF_POD_ORDER_BE);
+    assert_int_equal(xf_client_pod_flags(NULL), 0);
+    assert_int_equal(xf_client_pod_order(NULL), XF_POD_ORDER_UNDECIDED);
+    xf_client_set_pod_order(NULL, XF_POD_ORDER_LE);
+    ct_rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -2515,6 +2560,7 @@ int main(void)
         cmocka_unit_test(test_control_rule_every_case),
         cmocka_unit_test(test_control_mode_changes),
         cmocka_unit_test(test_rates_main_camera_zoom),
+        cmocka_unit_test(test_pod_order_per_gcu),
         cmocka_unit_test(test_carrier_only_while_fresh),
         cmocka_unit_test(test_gnss_only_while_fresh),
         cmocka_unit_test(test_watchdog_zeroes_rates),

@@ -108,9 +108,16 @@ static void on_link(void *user, xf_link_state state)
 
 static const char *yes_no(unsigned v, const char *yes, const char *no) { return v != 0u ? yes : no; }
 
+/* The pod status flags in the byte order the word itself shows (as decode's JSON reads them,
+ * docs/protocol.md §11.7); little-endian when it does not tell. */
+static uint16_t pod_flags(const xf_telemetry *t)
+{
+    return xf_pod_flags(t->pod_status, xf_pod_status_order(t->pod_status));
+}
+
 static void distance_text(const xf_telemetry *t, const xf_telemetry_units *u, char *buf, size_t cap)
 {
-    if (u->distance_valid && (t->pod_status & XF_POD_TARGET_VALID) != 0u) {
+    if (u->distance_valid && (pod_flags(t) & XF_POD_TARGET_VALID) != 0u) {
         snprintf(buf, cap, "%.1f m, target lat %.7f lon %.7f alt %.1f m", (double)u->target_distance_m,
                  xf_deg7(t->target_latitude), xf_deg7(t->target_longitude), (double)t->target_altitude / 1000.0);
     } else {
@@ -164,12 +171,12 @@ static void draw_screen(const monitor *m)
            (double)u.rate_z_dps);
     printf("zoom        camera 1 %.1fx   camera 2 %.1fx\n", (double)u.zoom_cam1, (double)u.zoom_cam2);
     printf("distance    %s\n", dist);
-    printf("tracking    %s, target offset x %d y %d\n", yes_no(t->pod_status & XF_POD_TRACKING_OK, "on", "off"),
+    printf("tracking    %s, target offset x %d y %d\n", yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "on", "off"),
            t->target_offset_x, t->target_offset_y);
     printf("flags       ranging %s, night vision %s, lighting %s, error code 0x%04X\n",
-           yes_no(t->pod_status & XF_POD_RANGING_ON, "on", "off"),
-           yes_no(t->pod_status & XF_POD_NIGHT_VISION_ON, "on", "off"),
-           yes_no(t->pod_status & XF_POD_LIGHTING_ON, "on", "off"), t->error_code);
+           yes_no(pod_flags(t) & XF_POD_RANGING_ON, "on", "off"),
+           yes_no(pod_flags(t) & XF_POD_NIGHT_VISION_ON, "on", "off"),
+           yes_no(pod_flags(t) & XF_POD_LIGHTING_ON, "on", "off"), t->error_code);
     draw_v2(t);
     printf("link        %s, %s, %u sent, %u received\n", xf_link_state_name(h->link), rate, (unsigned)h->packets_sent,
            (unsigned)h->replies);
@@ -191,7 +198,7 @@ static void print_line(const monitor *m, uint32_t elapsed)
     printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
            cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", (double)u.cam_roll_deg,
            (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1, (double)u.zoom_cam2, dist,
-           yes_no(t->pod_status & XF_POD_TRACKING_OK, "  tracking", ""));
+           yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "  tracking", ""));
     fflush(stdout);
 }
 
