@@ -864,6 +864,27 @@ static void test_feedback_state_inverse(void **state)
     }
 }
 
+/* Track and click-to-aim: the first byte is a camera mask in V0.1, fixed at 0x01 in V0.2. */
+static void test_track_first_byte(void **state)
+{
+    static const uint8_t orders[] = {XF_ORDER_TRACK, XF_ORDER_CLICK_TO_AIM};
+    size_t i;
+    (void)state;
+    for (i = 0; i < 2u; i++) {
+        xf_command c;
+        xf_field bad = XF_F_NONE;
+        xf_command_init(&c, orders[i]);
+        c.x1 = 100;
+        c.y1 = 100;
+        assert_int_equal(c.cameras, XF_CAM1); /* the default agrees with both */
+        assert_int_equal(xf_command_check(&c, XF_PROTOCOL_V2, &bad), XF_OK);
+        c.cameras = XF_CAM1 | XF_CAM2;
+        assert_int_equal(xf_command_check(&c, XF_PROTOCOL_V1, &bad), XF_OK);
+        assert_int_equal(xf_command_check(&c, XF_PROTOCOL_V2, &bad), XF_ERR_RANGE);
+        assert_int_equal(bad, XF_F_CAMERAS);
+    }
+}
+
 /* OSD 0x73: V0.1 (V2.0.4) 0 = shown, 1 = hidden; V0.2 (V2.0.6) 0 = off, 1 = on. */
 static void test_osd_value(void **state)
 {
@@ -949,6 +970,7 @@ int main(void)
         cmocka_unit_test(test_field_accessors),          cmocka_unit_test(test_feedback_every_order),
         cmocka_unit_test(test_feedback_from_packet),     cmocka_unit_test(test_feedback_state_inverse),
         cmocka_unit_test(test_gimbal_supports),          cmocka_unit_test(test_osd_value),
+        cmocka_unit_test(test_track_first_byte),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

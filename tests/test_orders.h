@@ -205,6 +205,9 @@ static inline unsigned ref_bad_fields(const xf_command *c, uint8_t version)
             bad |= BAD(XF_F_CAMERAS);
         }
     }
+    if (v2 && (c->order == 0x17 || c->order == 0x1A) && c->cameras != 1) {
+        bad |= BAD(XF_F_CAMERAS); /* track, click_to_aim: V2.0.6 fixes the first byte at 0x01 */
+    }
     switch (c->order) {
     case 0x17: /* track */
     case 0x30: /* area_temp */

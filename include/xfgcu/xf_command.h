@@ -643,6 +643,13 @@ XF_API xf_err xf_command_check(const xf_command *cmd, uint8_t version, xf_field 
         return XF_ERR_NOT_FOUND;
     }
     vmax = xf__value_max()[info - xf__order_table()][version >= XF_PROTOCOL_V2];
+    if (version >= XF_PROTOCOL_V2 && (cmd->order == XF_ORDER_TRACK || cmd->order == XF_ORDER_CLICK_TO_AIM) &&
+        cmd->cameras != XF_CAM1) {
+        if (bad_field != NULL) {
+            *bad_field = XF_F_CAMERAS; /* V2.0.6 fixes this byte at 0x01: it is no mask there */
+        }
+        return XF_ERR_RANGE;
+    }
     for (pass = 0; pass < 2u; pass++) {
         for (i = 0; i < info->nfields; i++) {
             xf_field f = (xf_field)info->fields[i];
