@@ -187,6 +187,7 @@ static void test_order_table_matches_spec(void **state)
         assert_int_equal((info->flags & XF_ORDER_OPERATING) != 0, s->operating);
         /* only external_track is streamed (§7) */
         assert_int_equal((info->flags & XF_ORDER_STREAMED) != 0, info->order == 0x1B);
+        assert_int_equal((info->flags & XF_ORDER_V1_ONLY) != 0, info->order == 0x1B); /* dropped by V2.0.6 */
         assert_int_equal(info->nfields, s->nlayout);
         for (k = 0; k < s->nlayout; k++) {
             assert_int_equal(info->fields[k], s->layout[k]);

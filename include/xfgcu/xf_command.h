@@ -98,6 +98,7 @@ typedef enum xf_field {
 #define XF_ORDER_OPERATING    0x02u /**< may answer 0x02 "operating" before its final state (calibration) */
 #define XF_ORDER_STREAMED     0x04u /**< exempt from the once-rule: meant to be streamed (external_track) */
 #define XF_ORDER_SETS_MODE    0x08u /**< switches the gimbal mode */
+#define XF_ORDER_V1_ONLY      0x10u /**< a V0.1 order that V0.2 (V2.0.6) no longer lists (external_track) */
 
 /**
  * One row of the order table (xf_order_lookup(), xf_order_at()). Its
@@ -376,7 +377,7 @@ XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed
     X(XF_ORDER_GAZE_LOCK, 1, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "gaze_lock") \
     X(XF_ORDER_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_SETS_MODE, XF_CAM1, 6, XF_F_CAMERAS, XF_F_VALUE, XF_F_X0, XF_F_Y0, XF_F_X1, XF_F_Y1, 1, 1, "track") \
     X(XF_ORDER_CLICK_TO_AIM, 1, XF_ORDER_MASK_FAILURE, XF_CAM1, 3, XF_F_CAMERAS, XF_F_X0, XF_F_Y0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "click_to_aim") \
-    X(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, XF__V_0_OR_2, XF__V_0_OR_2, "external_track") \
+    X(XF_ORDER_EXTERNAL_TRACK, 1, XF_ORDER_MASK_FAILURE | XF_ORDER_STREAMED | XF_ORDER_V1_ONLY, XF_CAM1, 4, XF_F_CAMERAS, XF_F_DX, XF_F_DY, XF_F_VALUE, XF__Z, XF__Z, XF__V_0_OR_2, XF__V_0_OR_2, "external_track") \
     X(XF_ORDER_FPV, 2, XF_ORDER_SETS_MODE, 0, 0, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "fpv") \
     X(XF_ORDER_SHUTTER, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "shutter") \
     X(XF_ORDER_RECORD, 1, 0, XF_CAM1, 1, XF_F_CAMERAS, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, XF__Z, "record") \

@@ -202,6 +202,16 @@ static void test_protocol_placement(void **state)
     assert_true(strncmp(r.out, "A8 E5 48 00 01", 14) == 0);
     assert_non_null(strstr(r.err, "note: fpv is an order of protocol 2"));
     tool_result_free(&r);
+    /* external_track, dropped by V0.2: built, with a note for version 2 only */
+    r = run_tool(NULL, "encode", "external-track", "--start", "--offset", "10,-10", "--protocol", "2", NULL);
+    assert_int_equal(r.status, 0);
+    assert_true(strncmp(r.out, "A8 E5 4E 00 02", 14) == 0);
+    assert_non_null(strstr(r.err, "note: external-track is an order of protocol 1 (V0.1) that V0.2 no longer lists"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "external-track", "--start", "--offset", "10,-10", NULL);
+    assert_int_equal(r.status, 0);
+    assert_null(strstr(r.err, "no longer lists"));
+    tool_result_free(&r);
 }
 
 /* ---- range and usage errors ----------------------------------------------------------- */

@@ -950,6 +950,10 @@ int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, 
         cli_note("%s is an order of protocol %u (V0.2); this packet says version %u (add --protocol 2)", spec->name,
                  (unsigned)spec->info->since, (unsigned)*version);
     }
+    if ((spec->info->flags & XF_ORDER_V1_ONLY) != 0u && *version >= XF_PROTOCOL_V2) {
+        /* Warn, never refuse: newer firmware may have dropped it, or not. */
+        cli_note("%s is an order of protocol 1 (V0.1) that V0.2 no longer lists; a V0.2 GCU may ignore it", spec->name);
+    }
     *cmd = st.cmd;
     return XFGCU_EXIT_OK;
 }
