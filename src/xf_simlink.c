@@ -145,6 +145,38 @@ xf_err xf_simlink_open_udp(xf_simlink *l, const char *host, uint16_t port)
     return err;
 }
 
+xf_err xf_simlink_udp_reply_to(xf_simlink *l, const char *host, uint16_t port)
+{
+    struct addrinfo hints, *res = NULL;
+    char service[8];
+    int rc, one = 1;
+    if (l == NULL || host == NULL || l->kind != XF_SIMLINK_UDP || l->fd < 0) {
+        return XF_ERR_ARG;
+    }
+    memset(&hints, 0, sizeof(hints));
+    hints.ai_family = AF_UNSPEC;
+    hints.ai_socktype = SOCK_DGRAM;
+    snprintf(service, sizeof(service), "%u", (unsigned)port);
+    rc = getaddrinfo(host, service, &hints, &res);
+    if (rc != 0 || res == NULL || res->ai_addrlen > sizeof(l->peer)) {
+        if (res != NULL) {
+            freeaddrinfo(res);
+        }
+        return xf__fail(&l->error, XF_ERR_NOT_FOUND, "resolve %s: %s", host, rc != 0 ? gai_strerror(rc) : "no address");
+    }
+    if (setsockopt(l->fd, SOL_SOCKET, SO_BROADCAST, &one, sizeof(one)) != 0) {
+        int e = errno;
+        freeaddrinfo(res);
+        return xf__os_fail(&l->error, e, "allow broadcast");
+    }
+    memcpy(&l->peer, res->ai_addr, res->ai_addrlen);
+    l->peer_len = res->ai_addrlen;
+    l->fixed_peer = 1;
+    l->asked = 0;
+    freeaddrinfo(res);
+    return XF_OK;
+}
+
 xf_err xf_simlink_open_tcp(xf_simlink *l, const char *host, uint16_t port)
 {
     xf_err err;
@@ -259,10 +291,11 @@ static xf_err xf__simlink_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_
         struct sockaddr_storage from;
         socklen_t flen = sizeof(from);
         r = recvfrom(l->fd, buf, cap, 0, (struct sockaddr *)&from, &flen);
-        if (r > 0) {
+        if (r > 0 && !l->fixed_peer) {
             l->peer = from; /* answer whoever asked */
             l->peer_len = flen;
         }
+        l->asked |= (r > 0);
         break;
     }
     case XF_SIMLINK_TCP:
@@ -304,8 +337,8 @@ static xf_err xf__simlink_write(void *ctx, const uint8_t *data, size_t len)
     switch (l->kind) {
     case XF_SIMLINK_PTY: e = xf__write_all(l->fd, data, len, 100, 0); break;
     case XF_SIMLINK_UDP:
-        if (l->peer_len == 0u) {
-            return XF_ERR_CLOSED;
+        if (l->peer_len == 0u || !l->asked) {
+            return XF_ERR_CLOSED; /* no host has spoken yet */
         }
         if (sendto(l->fd, data, len, 0, (struct sockaddr *)&l->peer, l->peer_len) != (ssize_t)len) {
             e = errno;

@@ -191,6 +191,27 @@ static int hold_port(int type, char *port, size_t cap)
     return fd;
 }
 
+/* The simulator answers to a fixed address and port (the vendor's GCU: the LAN broadcast address,
+ * port 2338), not to the sender: a host listening there gets the replies, one listening elsewhere
+ * does not. */
+static void test_sim_reply_to(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char local[8], to[32];
+    int fd = hold_port(SOCK_DGRAM, local, sizeof(local));
+    tool_result r;
+    close(fd); /* a free port, for the host to listen on */
+    snprintf(to, sizeof(to), "127.0.0.1:%s", local);
+    sim_start(s, SIM_UDP, "--reply-to", to, NULL);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--gcu-port", s->port, "--local-port", local, "send", "shutter", NULL);
+    expect(&r, 0, "ok\n");
+    tool_result_free(&r);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--gcu-port", s->port, "--local-port", "0", "--timeout", "400", "send",
+                 "shutter", NULL);
+    assert_failure(&r, 3, "no answer from the GCU", NULL);
+    tool_result_free(&r);
+}
+
 static void test_no_gcu(void **state)
 {
     char port[8], tcp[32];
@@ -455,6 +476,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_send_calibration, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_v2, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_model_support, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_sim_reply_to, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_no_gcu),
         cmocka_unit_test_setup_teardown(test_sim_port_taken, sim_setup_tcp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_monitor_json, sim_setup_tcp, sim_teardown),

@@ -34,7 +34,9 @@ void help_sim(FILE *out)
           "  --link PATH           with --pty: also a symbolic link PATH to it\n"
           "  --serial PATH         a real serial port (the GCU's end of a cable)\n"
           "  --baud N              with --serial: 115200 (default), 250000, 500000 or 1000000\n"
-          "  --bind ADDR           address to listen on for --tcp and --udp (default 127.0.0.1)\n\n"
+          "  --bind ADDR           address to listen on for --tcp and --udp (default 127.0.0.1)\n"
+          "  --reply-to ADDR[:PORT] with --udp: send replies there, not to the sender, as the vendor's\n"
+          "                        GCU sends to the LAN broadcast address, port 2338 (the default PORT)\n\n"
           "behaviour:\n"
           "  --protocol 1|2        version of the replies (default 1; V0.2 adds thermal and camera status)\n"
           "  --model CODE          the model code it reports, 0..255 (default 58, Z-9B_V4(T), which has\n"
@@ -55,7 +57,7 @@ typedef enum sim_kind { SIM_TCP, SIM_UDP, SIM_PTY, SIM_SERIAL } sim_kind;
 typedef struct sim_args {
     int kind, has_kind;
     long port;
-    const char *serial, *bind, *link;
+    const char *serial, *bind, *link, *reply_to;
     long baud;
     uint8_t version;
     long model;
@@ -77,6 +79,7 @@ enum {
     O_BIND,
     O_PROTOCOL,
     O_MODEL,
+    O_REPLY_TO,
     O_FAIL,
     O_DROP,
     O_DELAY,
@@ -96,6 +99,7 @@ static const struct option sim_options[] = {
     {"bind", required_argument, NULL, O_BIND},
     {"protocol", required_argument, NULL, O_PROTOCOL},
     {"model", required_argument, NULL, O_MODEL},
+    {"reply-to", required_argument, NULL, O_REPLY_TO},
     {"fail", required_argument, NULL, O_FAIL},
     {"drop", required_argument, NULL, O_DROP},
     {"delay", required_argument, NULL, O_DELAY},
@@ -159,6 +163,7 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_BIND: return cli_value_text(a, "ADDR", &s->bind);
     case O_PROTOCOL: return cli_value_protocol(a, &s->version);
     case O_MODEL: return cli_value_long(a, 0, 255, "a model code 0..255", &s->model, &s->has_model);
+    case O_REPLY_TO: return cli_value_text(a, "ADDR[:PORT]", &s->reply_to);
     case O_FAIL: return take_fail(s, a->value);
     case O_DROP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->drop, &s->has_drop);
     case O_DELAY: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->delay, &s->has_delay);
@@ -182,6 +187,9 @@ static int check_args(const sim_args *a)
     if (a->bind != NULL && a->kind != SIM_TCP && a->kind != SIM_UDP) {
         return cli_fail("sim: --bind %s goes only with --tcp or --udp", a->bind);
     }
+    if (a->reply_to != NULL && a->kind != SIM_UDP) {
+        return cli_fail("sim: --reply-to %s goes only with --udp", a->reply_to);
+    }
     if (a->has_baud && a->kind != SIM_SERIAL) {
         return cli_fail("sim: --baud goes only with --serial");
     }
@@ -198,6 +206,31 @@ typedef struct sim_run {
     int opened;
     uint32_t executed[256]; /* seen so far, for --verbose */
 } sim_run;
+
+/* --reply-to ADDR[:PORT]: replies to a fixed address, port 2338 unless given (an IPv4 address
+ * or a name; the last colon splits off the port). */
+static int reply_to(sim_run *s, const char *text, char *what, size_t cap)
+{
+    char host[256];
+    const char *colon = strrchr(text, ':');
+    long long port = XF_HOST_UDP_PORT;
+    size_t n = (colon != NULL) ? (size_t)(colon - text) : strlen(text);
+    xf_err err;
+    if (n == 0u || n >= sizeof(host) ||
+        (colon != NULL && (cli_parse_int(colon + 1, &port) != 0 || port < 1 || port > 65535))) {
+        return cli_fail("sim: --reply-to %s: expected ADDR[:PORT], PORT 1..65535", text);
+    }
+    memcpy(host, text, n);
+    host[n] = '\0';
+    err = xf_simlink_udp_reply_to(&s->link, host, (uint16_t)port);
+    if (err != XF_OK) {
+        xf_simlink_close(&s->link);
+        return cli_fail_link("sim --reply-to %s: %s", text,
+                             s->link.error.text[0] != '\0' ? s->link.error.text : xf_strerror(err));
+    }
+    snprintf(what + strlen(what), cap - strlen(what), " --reply-to %s", text);
+    return XFGCU_EXIT_OK;
+}
 
 static int open_gcu_link(sim_run *s, const sim_args *a)
 {
@@ -221,6 +254,12 @@ static int open_gcu_link(sim_run *s, const sim_args *a)
         snprintf(what, sizeof(what), "--%s %ld", a->kind == SIM_TCP ? "tcp" : "udp", a->port);
         err = (a->kind == SIM_TCP) ? xf_simlink_open_tcp(&s->link, a->bind, (uint16_t)a->port)
                                    : xf_simlink_open_udp(&s->link, a->bind, (uint16_t)a->port);
+        if (err == XF_OK && a->reply_to != NULL) {
+            int rc = reply_to(s, a->reply_to, what, sizeof(what));
+            if (rc != XFGCU_EXIT_OK) {
+                return rc;
+            }
+        }
         xf_simlink_hal(&s->link, &s->hal);
         text = s->link.error.text;
         break;

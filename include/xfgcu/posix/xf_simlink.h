@@ -39,6 +39,8 @@ typedef struct xf_simlink {
     uint16_t port;                /**< UDP / TCP: the port bound */
     struct sockaddr_storage peer; /**< UDP: who sent the last packet (replies go there) */
     socklen_t peer_len;           /**< UDP: 0 until a packet arrived */
+    uint8_t fixed_peer;           /**< UDP: replies go to peer whoever asks (xf_simlink_udp_reply_to()) */
+    uint8_t asked;                /**< UDP: a packet has arrived (replies may go) */
     uint8_t down;                 /**< disconnected by xf_simlink_disconnect */
     uint32_t up_at;               /**< after xf_simlink_disconnect(): when the link comes back */
     xf_link_stats stats;          /**< counters */
@@ -80,6 +82,21 @@ xf_err xf_simlink_open_udp(xf_simlink *l, const char *host, uint16_t port);
  *   use; l->error says why)
  */
 xf_err xf_simlink_open_tcp(xf_simlink *l, const char *host, uint16_t port);
+/**
+ * UDP: send every reply to @p host : @p port instead of to whoever sent the
+ * last packet. The vendor's GCU sends to the LAN's broadcast address, port
+ * 2338 (::XF_HOST_UDP_PORT): give that address (e.g. 192.168.144.255, or
+ * 255.255.255.255) to behave so; broadcast is allowed on the socket. Call
+ * after xf_simlink_open_udp(). Replies start once a host has sent a
+ * packet, as before. May block while a host name resolves (DNS).
+ * @param l     a UDP link
+ * @param host  the address replies go to (a broadcast address, or a host)
+ * @param port  its port, e.g. ::XF_HOST_UDP_PORT
+ * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l or @p host, not a UDP link),
+ *   ::XF_ERR_NOT_FOUND (does not resolve), or a code mapped from the OS's
+ *   errno (l->error says why)
+ */
+xf_err xf_simlink_udp_reply_to(xf_simlink *l, const char *host, uint16_t port);
 /**
  * Fill @p hal with the GCU's end of this link, for xf_sim_attach(). The link
  * must stay where it is while @p hal is in use. Read never waits (a TCP
