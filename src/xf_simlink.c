@@ -65,16 +65,35 @@ static xf_err xf__pty_create(xf_simlink *l)
     tcsetattr(l->slave_fd, TCSANOW, &tio);
     xf__set_nonblock(m);
     l->fd = m;
-    if (l->link_path[0] != '\0') {
-        char tmp[300];
-        snprintf(tmp, sizeof(tmp), "%s.new", l->link_path);
-        unlink(tmp);
-        if (symlink(l->pty_path, tmp) != 0 || rename(tmp, l->link_path) != 0) {
-            return xf__os_fail(&l->error, errno, "link %s -> %s", l->link_path, l->pty_path);
+    if (l->link_path[0] != '\0' && symlink(l->pty_path, l->link_path) != 0) {
+        /* Never over something that is there: it may be a user's file, or another simulator's link. */
+        int e = errno;
+        if (e == EEXIST) {
+            return xf__fail(&l->error, XF_ERR_BUSY, "link %s: it exists; not replaced", l->link_path);
         }
+        return xf__os_fail(&l->error, e, "link %s -> %s", l->link_path, l->pty_path);
     }
+    l->link_made = (l->link_path[0] != '\0');
     l->stats.opens++;
     return XF_OK;
+}
+
+/* Remove the link path if it is still the link this simulator made to its pty. */
+static void xf__unlink_ours(xf_simlink *l)
+{
+    char target[sizeof(l->pty_path)];
+    ssize_t n;
+    if (!l->link_made) {
+        return;
+    }
+    l->link_made = 0;
+    n = readlink(l->link_path, target, sizeof(target) - 1u);
+    if (n > 0 && (size_t)n < sizeof(target) - 1u) {
+        target[n] = '\0';
+        if (strcmp(target, l->pty_path) == 0) {
+            unlink(l->link_path);
+        }
+    }
 }
 
 xf_err xf_simlink_open_pty(xf_simlink *l, const char *symlink_path)
@@ -238,12 +257,10 @@ void xf_simlink_disconnect(xf_simlink *l, uint32_t ms)
     if (l->kind == XF_SIMLINK_PTY) {
         xf__close_fd(&l->slave_fd);
         xf__close_fd(&l->fd); /* the host's side hangs up */
-        if (l->link_path[0] != '\0') {
-            /* Nothing behind the path while down, like an unplugged adapter:
-             * the freed /dev/pts number may be reused by another program's
-             * pty, and a host reopening the path must not end up on it. */
-            unlink(l->link_path);
-        }
+        /* Nothing behind the path while down, like an unplugged adapter:
+         * the freed /dev/pts number may be reused by another program's
+         * pty, and a host reopening the path must not end up on it. */
+        xf__unlink_ours(l);
     } else if (l->kind == XF_SIMLINK_TCP) {
         xf__close_fd(&l->client_fd);
     }
@@ -388,11 +405,9 @@ void xf_simlink_close(xf_simlink *l)
     if (l == NULL) {
         return;
     }
+    xf__unlink_ours(l); /* before the pty goes: its path is what tells ours apart */
     xf__close_fd(&l->client_fd);
     xf__close_fd(&l->slave_fd);
     xf__close_fd(&l->fd);
-    if (l->link_path[0] != '\0') {
-        unlink(l->link_path);
-        l->link_path[0] = '\0';
-    }
+    l->link_path[0] = '\0';
 }

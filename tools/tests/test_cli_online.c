@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <glob.h>
 #include <string.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -466,6 +467,113 @@ static void test_replay_split_chunks(void **state)
     unlink(file);
 }
 
+/* ---- nothing lost: files the program did not create in this run are left alone ------------ */
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+static int has_text(const char *path, const char *text)
+{
+    char buf[256];
+    size_t n;
+    FILE *f = fopen(path, "r");
+    if (f == NULL) {
+        return 0;
+    }
+    n = fread(buf, 1, sizeof(buf) - 1u, f);
+    fclose(f);
+    buf[n] = '\0';
+    return strcmp(buf, text) == 0;
+}
+
+/* No "FILE.part*" left beside FILE. */
+static int no_part_files(const char *file)
+{
+    char pattern[160];
+    glob_t g;
+    int rc;
+    snprintf(pattern, sizeof(pattern), "%s.part*", file);
+    rc = glob(pattern, 0, NULL, &g);
+    if (rc == 0) {
+        globfree(&g);
+    }
+    return rc == GLOB_NOMATCH;
+}
+
+/* record: an existing FILE is refused without --force, kept when the link fails even with
+ * --force, and replaced only by a complete capture; a new FILE is not left behind empty. */
+static void test_record_keeps_files(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char file[128], port[8], dead[32];
+    int fd = hold_port(SOCK_STREAM, port, sizeof(port));
+    tool_result r;
+    snprintf(dead, sizeof(dead), "127.0.0.1:%s", port);
+    temp_name(file, sizeof(file), "keep");
+    write_text(file, "precious\n");
+    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "record", file, NULL);
+    assert_failure(&r, 2, "exists; not replaced", "--force", NULL);
+    tool_result_free(&r);
+    assert_true(has_text(file, "precious\n"));
+    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "record", file, "--force", NULL);
+    assert_int_equal(r.status, 3);
+    tool_result_free(&r);
+    assert_true(has_text(file, "precious\n")); /* not truncated, not deleted */
+    assert_true(no_part_files(file));
+    unlink(file);
+    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "record", file, NULL);
+    assert_int_equal(r.status, 3);
+    tool_result_free(&r);
+    assert_int_equal(access(file, F_OK), -1); /* nothing left: no byte moved */
+    assert_true(no_part_files(file));
+    close(fd);
+    /* a complete capture replaces FILE with --force */
+    write_text(file, "precious\n");
+    sim_start(s, SIM_TCP, NULL);
+    r = run_on(s, "record", file, "--count", "3", "--force", NULL);
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    assert_false(has_text(file, "precious\n"));
+    r = run_tool(NULL, "replay", file, NULL);
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    assert_true(no_part_files(file));
+    unlink(file);
+}
+
+/* sim --pty --link PATH: an existing file at PATH is refused and kept; a second simulator given
+ * the first one's link path is refused, and the first keeps its link; each removes only its own. */
+static void test_sim_link_keeps_paths(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char path[128], target[128], first[128];
+    ssize_t n;
+    tool_result r;
+    temp_name(path, sizeof(path), "link");
+    write_text(path, "precious\n");
+    r = run_tool(NULL, "sim", "--pty", "--link", path, "--duration", "0.2", NULL);
+    assert_failure(&r, 3, path, "exists; not replaced", NULL);
+    tool_result_free(&r);
+    assert_true(has_text(path, "precious\n"));
+    unlink(path);
+    sim_start(s, SIM_PTY, "--link", path, NULL);
+    n = readlink(path, first, sizeof(first) - 1u);
+    assert_true(n > 0);
+    first[n] = '\0';
+    r = run_tool(NULL, "sim", "--pty", "--link", path, "--duration", "0.2", NULL);
+    assert_failure(&r, 3, "exists; not replaced", NULL);
+    tool_result_free(&r);
+    n = readlink(path, target, sizeof(target) - 1u);
+    assert_true(n > 0);
+    target[n] = '\0';
+    assert_string_equal(target, first); /* still the first simulator's */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -489,6 +597,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_rate, sim_setup_udp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_record_replay, sim_setup_tcp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_record_command, sim_setup_pty, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_record_keeps_files, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_sim_link_keeps_paths, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_replay_malformed),
         cmocka_unit_test(test_replay_split_chunks),
     };

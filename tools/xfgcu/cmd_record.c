@@ -10,6 +10,8 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli.h"
 #include "cmdargs.h"
@@ -27,9 +29,12 @@ void help_record(FILE *out)
           "`xfgcu replay FILE` decodes it.\n\n"
           "  --duration S   stop after S seconds (0.1..31536000)\n"
           "  --count N      stop after N packets from the GCU (1..1000000000)\n"
+          "  --force        replace FILE if it exists (otherwise an existing FILE is an error)\n"
           "  COMMAND        also run a command, as `xfgcu send COMMAND [ARGS]` does, and print its\n"
           "                 result; without --duration or --count the capture then ends with it\n"
-          "Otherwise it runs until Ctrl-C. Prints a one-line summary (chunks, bytes, packets).\n\n",
+          "Otherwise it runs until Ctrl-C. Prints a one-line summary (chunks, bytes, packets).\n"
+          "The capture is written to a temporary file beside FILE and takes FILE's name when it is\n"
+          "complete; when no byte moved, nothing is left.\n\n",
           out);
     help_link_options(out);
     fputs("\nexample: xfgcu --tcp 192.168.144.108 record shutter.cap shutter\n", out);
@@ -39,7 +44,9 @@ typedef struct record {
     online *o;
     char desc[320]; /* the link's, kept for the summary */
     const char *file;
+    char tmp[4096]; /* where the capture is written until it is complete */
     FILE *f;
+    int force;
     xf_capture_writer w;
     int begun;
     long count;
@@ -51,11 +58,12 @@ typedef struct record {
 
 /* ---- arguments ---------------------------------------------------------------------- */
 
-enum { O_DURATION = 256, O_COUNT, O_HELP };
+enum { O_DURATION = 256, O_COUNT, O_FORCE, O_HELP };
 
 static const struct option record_options[] = {
     {"duration", required_argument, NULL, O_DURATION},
     {"count", required_argument, NULL, O_COUNT},
+    {"force", no_argument, NULL, O_FORCE},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
@@ -78,6 +86,7 @@ static int take_arg(record *r, const cli_args *a, int id)
         return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &r->duration, &r->has_duration);
     case O_COUNT:
         return cli_value_long(a, 1, 1000000000L, "a number of packets, 1..1000000000", &r->count, &r->has_count);
+    case O_FORCE: r->force = 1; return XFGCU_EXIT_OK;
     case O_HELP: r->help = 1; return XFGCU_EXIT_OK;
     case CLI_ARG: return take_word(r, a->value);
     default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
@@ -192,9 +201,29 @@ static int capture(record *r, const cli_link *link, const xf_command *cmd, uint3
     return rc;
 }
 
+/* The complete capture takes FILE's name: replacing FILE only with --force, and never a FILE
+ * that appeared meanwhile without it (link() refuses an existing name, rename() would not). */
+static int publish(record *r)
+{
+    int e = 0;
+    if (r->force) {
+        e = (rename(r->tmp, r->file) != 0) ? errno : 0;
+    } else if (link(r->tmp, r->file) != 0) {
+        e = errno;
+    } else {
+        (void)unlink(r->tmp);
+    }
+    if (e != 0) {
+        (void)unlink(r->tmp); /* ours */
+        return cli_fail("record: cannot name the capture %s: %s%s", r->file, strerror(e),
+                        e == EEXIST ? " (it appeared meanwhile; --force replaces it)" : "");
+    }
+    return XFGCU_EXIT_OK;
+}
+
 static int finish_file(record *r, int rc, uint32_t elapsed)
 {
-    int err = r->w.error;
+    int err = r->w.error, prc;
     if (!r->begun) {
         (void)xf_capture_begin(&r->w, r->f, r->desc);
     }
@@ -202,24 +231,61 @@ static int finish_file(record *r, int rc, uint32_t elapsed)
         err = errno;
     }
     if (err != 0) {
+        (void)unlink(r->tmp); /* ours; FILE was never touched */
         return cli_fail("record: cannot write %s: %s", r->file, strerror(err));
+    }
+    prc = publish(r);
+    if (prc != XFGCU_EXIT_OK) {
+        return prc;
     }
     printf("recorded %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
            r->desc, (unsigned)r->w.chunks, (unsigned)r->w.bytes, (unsigned)r->sent, (unsigned)r->received, r->file);
     return rc;
 }
 
+/* A temporary file beside FILE (the same file system, so that it can take FILE's name), made
+ * here: the only file this command may remove. FILE itself is left alone until the end. */
+static int open_tmp(record *r)
+{
+    struct stat st;
+    int fd;
+    if (r->file == NULL) {
+        return XFGCU_EXIT_USAGE; /* parse_args() makes sure it is there */
+    }
+    if (!r->force && lstat(r->file, &st) == 0) {
+        return cli_fail("record: %s exists; not replaced (--force replaces it)", r->file);
+    }
+    if ((size_t)snprintf(r->tmp, sizeof(r->tmp), "%s.partXXXXXX", r->file) >= sizeof(r->tmp)) {
+        return cli_fail("record: the file name is too long");
+    }
+    fd = mkstemp(r->tmp);
+    if (fd >= 0) {
+        mode_t mask = umask(0);
+        umask(mask);
+        (void)fchmod(fd, 0666 & ~mask); /* as a new file would have: mkstemp makes it private */
+    }
+    if (fd < 0 || (r->f = fdopen(fd, "w")) == NULL) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+            (void)unlink(r->tmp);
+        }
+        return cli_fail("record: cannot create a file beside %s: %s", r->file, strerror(e));
+    }
+    return XFGCU_EXIT_OK;
+}
+
 static int run_record(record *r, const cli_link *link, const xf_command *cmd)
 {
     uint32_t elapsed = 0;
-    int rc;
-    r->f = fopen(r->file, "w");
-    if (r->f == NULL) {
-        return cli_fail("record: cannot create %s: %s", r->file, strerror(errno));
+    int rc = open_tmp(r);
+    if (rc != XFGCU_EXIT_OK) {
+        return rc;
     }
     r->o = online_new();
     if (r->o == NULL) {
         fclose(r->f);
+        (void)unlink(r->tmp);
         return XFGCU_EXIT_USAGE;
     }
     cli_signals_init();
@@ -231,7 +297,7 @@ static int run_record(record *r, const cli_link *link, const xf_command *cmd)
         return finish_file(r, rc, elapsed);
     }
     fclose(r->f);
-    remove(r->file); /* the link never moved a byte: no capture to keep */
+    (void)unlink(r->tmp); /* the link never moved a byte: no capture to keep; FILE is untouched */
     return rc;
 }
 

@@ -42,6 +42,7 @@ typedef struct xf_simlink {
     uint8_t fixed_peer;           /**< UDP: replies go to peer whoever asks (xf_simlink_udp_reply_to()) */
     uint8_t asked;                /**< UDP: a packet has arrived (replies may go) */
     uint8_t down;                 /**< disconnected by xf_simlink_disconnect */
+    uint8_t link_made;            /**< pty: link_path is a link this simlink made (and may remove) */
     uint32_t up_at;               /**< after xf_simlink_disconnect(): when the link comes back */
     xf_link_stats stats;          /**< counters */
     xf_os_error error;            /**< why the last operation failed */
@@ -49,7 +50,10 @@ typedef struct xf_simlink {
 
 /**
  * A new pty; its slave path is in l->pty_path, and @p symlink_path (may be NULL) points to it.
- * The symlink is replaced atomically if it exists. When it cannot be made,
+ * Nothing that exists at @p symlink_path is replaced (a file, another
+ * simulator's link): that is an error (::XF_ERR_BUSY). The link is removed
+ * at close, and while disconnected, only if it is still the one made here
+ * to this pty. When it cannot be made,
  * the error is returned but the pty stays open: call xf_simlink_close()
  * after any failure. Never waits.
  * @param l             the link's storage
