@@ -326,6 +326,24 @@ static void test_online_bad_arguments(void **state)
     expect_failures(cases, sizeof(cases) / sizeof(cases[0]));
 }
 
+/* An error that echoes the user's input stays one line: control characters are escaped. */
+static void test_errors_escape_control_characters(void **state)
+{
+    static const char *const levels[] = {"1\nxfgcu: fake", "1\x01\x7f\t", "1\r2"};
+    static const char *const shown[] = {"--level 1\\nxfgcu: fake:", "--level 1\\x01\\x7F\\t:", "--level 1\\r2:"};
+    size_t i;
+    (void)state;
+    for (i = 0; i < 3u; i++) {
+        tool_result r = run_tool(NULL, "encode", "lighting", "--level", levels[i], NULL);
+        assert_int_equal(r.status, 2);
+        assert_int_equal(strlen(r.out), 0);
+        assert_non_null(strstr(r.err, shown[i]));
+        assert_int_equal(strchr(r.err, '\n') - r.err, (long)strlen(r.err) - 1); /* one line */
+        assert_null(strchr(r.err, '\r'));
+        tool_result_free(&r);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -341,6 +359,7 @@ int main(void)
         cmocka_unit_test(test_online_commands_help),
         cmocka_unit_test(test_online_commands_need_a_link),
         cmocka_unit_test(test_online_bad_arguments),
+        cmocka_unit_test(test_errors_escape_control_characters),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

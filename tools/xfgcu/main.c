@@ -17,17 +17,40 @@
 #include "cmdargs.h"
 #include "online.h"
 
+/* Text on stderr with its control characters escaped (\n, \t, \r, \xHH): a message that
+ * echoes the user's input stays one line, whatever the input holds. */
+static void put_escaped(const char *text)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    for (; *p != '\0'; p++) {
+        if (*p >= 0x20u && *p != 0x7Fu) {
+            fputc(*p, stderr);
+        } else if (*p == '\n' || *p == '\t' || *p == '\r') {
+            fprintf(stderr, "\\%c", *p == '\n' ? 'n' : *p == '\t' ? 't' : 'r');
+        } else {
+            fprintf(stderr, "\\x%02X", (unsigned)*p);
+        }
+    }
+}
+
 int cli_report(int code, const char *where, const char *fmt, ...)
 {
+    char text[2048];
+    int n;
     va_list ap;
     fflush(stdout); /* what was printed before the failure comes first */
+    va_start(ap, fmt);
+    n = vsnprintf(text, sizeof(text), fmt, ap);
+    va_end(ap);
     fputs("xfgcu: ", stderr);
     if (where != NULL) {
-        fprintf(stderr, "%s: ", where);
+        put_escaped(where);
+        fputs(": ", stderr);
     }
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
+    put_escaped(n >= 0 ? text : fmt);
+    if (n >= (int)sizeof(text)) {
+        fputs("...", stderr); /* said so, not cut silently */
+    }
     fputc('\n', stderr);
     return code;
 }
