@@ -9,6 +9,7 @@
 #define XF__CTRL_NONE     0u
 #define XF__CTRL_RATES    1u
 #define XF__CTRL_ANGLES   2u
+#define XF__CTRL_DROPPED  3u /* none, because the last one was dropped (XF_CTRL_DROPPED) */
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 
 /* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
@@ -254,8 +255,7 @@ static void xf__tele_read(xf_telemetry *t, const uint8_t *buf, size_t from, size
  * click-to-aim, head lock reads angles as rates). */
 static void xf__drop_ctrl(xf_client *c)
 {
-    c->ctrl_kind = XF__CTRL_NONE;
-    c->ctrl_dropped = 1;
+    c->ctrl_kind = XF__CTRL_DROPPED;
     c->ctrl_mode = 0;
 }
 
@@ -269,7 +269,7 @@ static void xf__update_telemetry(xf_client *c, const uint8_t *buf)
     if (c->pod_order == XF_POD_ORDER_UNDECIDED) { /* the first word that tells fixes it for this GCU */
         c->pod_order = (uint8_t)xf_pod_status_order(t->pod_status);
     }
-    if (c->ctrl_kind != XF__CTRL_NONE && c->ctrl_mode != 0u && t->gimbal_mode != c->ctrl_mode) {
+    if (c->ctrl_mode != 0u && t->gimbal_mode != c->ctrl_mode) { /* ctrl_mode: a setpoint was on the wire */
         xf__drop_ctrl(c);
     }
     if (buf[XF_OFF_GCU_SUB_HEADER] == XF_SUB_HEADER) {
@@ -444,8 +444,8 @@ static int xf__order_holds_ctrl(uint8_t order)
 xf_ctrl_status xf_client_control_status(const xf_client *c)
 {
     uint8_t reads;
-    if (c == NULL || c->ctrl_kind == XF__CTRL_NONE) {
-        return (c != NULL && c->ctrl_dropped) ? XF_CTRL_DROPPED : XF_CTRL_NOT_SET;
+    if (c == NULL || c->ctrl_kind == XF__CTRL_NONE || c->ctrl_kind == XF__CTRL_DROPPED) {
+        return (c != NULL && c->ctrl_kind == XF__CTRL_DROPPED) ? XF_CTRL_DROPPED : XF_CTRL_NOT_SET;
     }
     if (c->active && xf__order_holds_ctrl(c->queue[c->q_head].order)) {
         return XF_CTRL_COMMAND;
@@ -514,7 +514,7 @@ static uint8_t xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
         c->operating = 0;
         c->packets = 0;
         c->started_ms = c->now_ms;
-        if (xf__order_holds_ctrl(cmd->order) && c->ctrl_kind != XF__CTRL_NONE) {
+        if (xf__order_holds_ctrl(cmd->order) && (c->ctrl_kind == XF__CTRL_RATES || c->ctrl_kind == XF__CTRL_ANGLES)) {
             xf__drop_ctrl(c); /* what was set before it must not be read after it */
         }
     }
@@ -653,7 +653,6 @@ static xf_ctrl_status xf__set_ctrl(xf_client *c, uint8_t kind, float a, float b,
         c->ctrl_mode = 0; /* a new kind has not been read in any mode yet */
     }
     c->ctrl_kind = kind;
-    c->ctrl_dropped = 0;
     c->ctrl[0] = a;
     c->ctrl[1] = b;
     c->ctrl[2] = d;
@@ -704,7 +703,6 @@ void xf_client_clear_control(xf_client *c)
 {
     if (c != NULL) {
         c->ctrl_kind = XF__CTRL_NONE;
-        c->ctrl_dropped = 0;
         c->ctrl_mode = 0;
         c->health.watchdog_active = 0;
     }
@@ -736,9 +734,12 @@ uint8_t xf_client_gcu_version(const xf_client *c)
 xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
 {
     xf_command cmd;
+    if (c == NULL) {
+        return XF_ERR_ARG;
+    }
     xf_command_init(&cmd, XF_ORDER_OSD);
     cmd.value = xf_osd_value(show, xf_client_gcu_version(c));
-    return (c == NULL) ? XF_ERR_ARG : xf_client_submit(c, &cmd, id, NULL);
+    return xf_client_submit(c, &cmd, id, NULL);
 }
 
 xf_support xf_client_supports(const xf_client *c, uint8_t order)

@@ -378,11 +378,10 @@ typedef struct xf_client {
     /** @var xf_client::have_carrier
      *  private: carrier state was set */
     uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
-    uint8_t ctrl_kind;               /**< private: 0 none, 1 rates, 2 angles */
-    uint8_t ctrl_mode;               /**< private: the reported mode that last read the setpoint (0: none yet) */
-    uint8_t ctrl_dropped;            /**< private: the setpoint was dropped (xf_client_control_status()) */
-    uint8_t main_camera;             /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
-    uint8_t pod_order;               /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
+    uint8_t ctrl_kind;   /**< private: 0 none, 1 rates, 2 angles, 3 none: dropped (xf_client_control_status()) */
+    uint8_t ctrl_mode;   /**< private: the reported mode that last read the setpoint (0: none yet) */
+    uint8_t main_camera; /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
+    uint8_t pod_order;   /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
     /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
     uint8_t stream_on; /**< private: the external-track stream is on */
     uint8_t stream[6]; /**< private: the stream's encoded parameters */
