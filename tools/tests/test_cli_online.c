@@ -174,6 +174,28 @@ static void test_send_model_support(void **state)
     tool_result_free(&r);
 }
 
+/* send osd --show / --hide mean what they say on a V0.2 GCU, whose OSD values are inverted
+ * (the program sends the value of the version the GCU speaks). */
+static void test_send_osd_follows_gcu(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    static const char *const sw[] = {"--hide", "--show"};
+    int i;
+    sim_start(s, SIM_TCP, "--protocol", "2", NULL);
+    for (i = 0; i < 2; i++) {
+        tool_result r = run_on(s, "send", "osd", sw[i], NULL);
+        json_t *obj;
+        expect(&r, 0, "ok\n");
+        tool_result_free(&r);
+        r = run_on(s, "monitor", "--json", "--count", "1", NULL);
+        assert_int_equal(r.status, 0);
+        obj = parse_line(r.out);
+        assert_int_equal((int_key(obj, "camera_status") & 0x2000) != 0, i); /* XF_CAMERA_OSD_ON */
+        json_decref(obj);
+        tool_result_free(&r);
+    }
+}
+
 /* ---- no GCU -------------------------------------------------------------------------- */
 
 /* A local port that refuses connections (bound, not listening) or swallows datagrams, held while in use. */
@@ -584,6 +606,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_send_calibration, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_v2, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_model_support, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_osd_follows_gcu, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_sim_reply_to, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_no_gcu),
         cmocka_unit_test_setup_teardown(test_sim_port_taken, sim_setup_tcp, sim_teardown),

@@ -149,11 +149,8 @@ static int done(const record *r, uint32_t elapsed)
 static int run_command(record *r, const xf_command *cmd)
 {
     xf_cmd_result res;
-    xf_command sent = *cmd;
     char text[64], what[64];
-    int rc;
-    cmdargs_for_version(&sent, xf_client_gcu_version(&r->o->client)); /* the GCU's meaning */
-    rc = online_run(r->o, &sent, &res, NULL, NULL);
+    int rc = online_run(r->o, cmd, &res, NULL, NULL);
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }

@@ -58,10 +58,8 @@ static int run_send(const cli_link *link, const xf_command *cmd, const char *nam
     char text[64], what[64];
     int rc = (o != NULL) ? online_open(o, link, "send", NULL) : XFGCU_EXIT_USAGE;
     if (rc == XFGCU_EXIT_OK) {
-        xf_command sent = *cmd;
-        cmdargs_for_version(&sent, xf_client_gcu_version(&o->client)); /* the GCU has answered: its meaning */
         o->submit_flags = force ? XF_SUBMIT_ANY_MODEL : 0u;
-        rc = online_run(o, &sent, &r, on_operating, NULL);
+        rc = online_run(o, cmd, &r, on_operating, NULL);
     }
     if (rc == XFGCU_EXIT_OK) {
         online_result_text(&r, text, sizeof(text));

@@ -38,6 +38,13 @@ void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out);
 void cmdargs_list(FILE *out);
 
 /* `who [--protocol N] [--help] [--json OBJECT] COMMAND [ARGS]`, as encode and send take it. */
+/**
+ * The switches of osd (--show, --hide) are parsed with V0.1's values (0
+ * shows); give @p cmd the value that means the same for a GCU that speaks
+ * @p version (xf_osd_value()). Other commands are left alone.
+ */
+void cmdargs_for_version(xf_command *cmd, uint8_t version);
+
 typedef struct cmd_line {
     uint8_t version;      /* the last --protocol, else the default */
     int help;             /* --help given (the command's arguments are then not parsed) */
@@ -53,13 +60,6 @@ typedef struct cmd_line {
  * @p version as the default of --protocol. With --help, prints the help of
  * COMMAND, or @p help without one. Prints any error. @return an exit code.
  */
-/**
- * The switches of osd (--show, --hide) are parsed with V0.1's values (0
- * shows); give @p cmd the value that means the same for a GCU that speaks
- * @p version (xf_osd_value()). Other commands are left alone.
- */
-void cmdargs_for_version(xf_command *cmd, uint8_t version);
-
 int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json, void (*help)(FILE *out), int argc,
                    char **argv);
 

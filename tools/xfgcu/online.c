@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L /* sigaction */
 
 #include "online.h"
+#include "cmdargs.h"
 
 #include <signal.h>
 #include <stdlib.h>
@@ -298,7 +299,10 @@ int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_p
     uint32_t id = 0, since = 0;
     int reported = 0;
     xf_field bad = XF_F_NONE;
-    xf_err err = xf_client_submit_opt(&o->client, cmd, o->submit_flags, &id, &bad);
+    xf_command sent = *cmd;
+    xf_err err;
+    cmdargs_for_version(&sent, xf_client_gcu_version(&o->client)); /* the GCU has answered: its meaning */
+    err = xf_client_submit_opt(&o->client, &sent, o->submit_flags, &id, &bad);
     memset(result, 0, sizeof(*result));
     result->order = cmd->order;
     if (err == XF_ERR_UNSUPPORTED) {
@@ -306,7 +310,7 @@ int online_run(online *o, const xf_command *cmd, xf_cmd_result *result, online_p
         const char *model = xf_gimbal_model(t->gimbal_code);
         return cli_report(XFGCU_EXIT_FAILED, NULL,
                           "%s %s: the GCU's model %s (code %u) does not support it, by V2.0.6's support list; "
-                          "--force sends it all the same",
+                          "xfgcu send --force sends it all the same",
                           o->context, xf_order_name(cmd->order), model != NULL ? model : "?", (unsigned)t->gimbal_code);
     }
     if (err != XF_OK) {

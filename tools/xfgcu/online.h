@@ -105,7 +105,10 @@ void online_linger(online *o, uint32_t packets);
 typedef void (*online_progress_fn)(void *user, const xf_cmd_result *r, uint32_t operating_ms);
 
 /**
- * Run @p cmd the protocol's way: submit it, keep the loop going until its
+ * Run @p cmd the protocol's way: submit it (an osd parsed from --show or
+ * --hide gets the value of the GCU's version, cmdargs_for_version(); an
+ * order the GCU's model lacks is refused unless submit_flags insists), keep
+ * the loop going until its
  * result is final (ok, failed, timeout, link lost) or a signal arrives
  * (status XF_CMD_CANCELLED). @p progress is called when the GCU says
  * "operating", then about every 5 s while it still is.
