@@ -23,6 +23,7 @@ static const xf_client_config xf__defaults = {
     .down_ms = 1000,
     .rate_watchdog_ms = 500,
     .protocol_version = XF_PROTOCOL_V1,
+    .reorder_ms = 0,
 };
 
 void xf_client_config_init(xf_client_config *cfg)
@@ -33,6 +34,33 @@ void xf_client_config_init(xf_client_config *cfg)
 }
 
 size_t xf_client_size(void) { return sizeof(xf_client); }
+
+const char *xf_client_config_problem(const xf_client_config *cfg)
+{
+    uint32_t period;
+    if (cfg == NULL) {
+        return NULL; /* the defaults */
+    }
+    if (cfg->rate_hz == 0u || cfg->rate_hz > 200u) {
+        return "rate_hz must be 1..200 packets per second";
+    }
+    period = (1000u + cfg->rate_hz / 2u) / cfg->rate_hz;
+    if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u) {
+        return "protocol_version and operating_timeout_ms must be >= 1, reorder_ms <= 1000";
+    }
+    /* A reply comes once a packet, and with reorder_ms the client is silent up to twice that
+     * around a command: a link that reads stale (or down) between two good replies cannot work. */
+    if (cfg->stale_ms <= period + 2u * cfg->reorder_ms || cfg->down_ms <= cfg->stale_ms) {
+        return "the link would read stale between two packets: stale_ms must exceed one packet period "
+               "(1000 / rate_hz) plus twice reorder_ms, and down_ms must exceed stale_ms";
+    }
+    /* The command goes out at the next slot and its reply comes back before the one after. */
+    if (cfg->command_timeout_ms < 2u * period + 2u * cfg->reorder_ms) {
+        return "command_timeout_ms is shorter than a round trip: it must be at least two packet periods "
+               "(2000 / rate_hz) plus twice reorder_ms";
+    }
+    return NULL;
+}
 
 xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
                               size_t size)
@@ -46,8 +74,7 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
     if (cfg == NULL) {
         cfg = &xf__defaults;
     }
-    if (cfg->rate_hz == 0u || cfg->rate_hz > 200u || cfg->protocol_version == 0u || cfg->stale_ms == 0u ||
-        cfg->down_ms <= cfg->stale_ms || cfg->command_timeout_ms == 0u || cfg->operating_timeout_ms == 0u) {
+    if (xf_client_config_problem(cfg) != NULL) {
         return XF_ERR_RANGE; /* a link that is never up, or commands that time out before they are sent */
     }
     XF_MEMSET(c, 0, sizeof(*c));
@@ -95,6 +122,7 @@ static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r
     r->id = xf__queued_id(c, 0);
     r->order = c->queue[c->q_head].order;
     r->status = st;
+    r->elapsed_ms = xf_ms_since(c->now_ms, c->head_ms); /* never sent: how long it waited */
     if (c->active) {
         r->packets = c->packets;
         r->elapsed_ms = xf_ms_since(c->now_ms, c->started_ms);
@@ -119,6 +147,7 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
     c->operating = 0;
     c->q_head = (uint8_t)((c->q_head + 1u) % XF_CLIENT_QUEUE);
     c->q_count--;
+    c->head_ms = c->now_ms; /* the next command waits from now */
     xf__publish(c, &r);
 }
 
@@ -322,6 +351,12 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     if (f->data[XF_OFF_ORDER] != c->guard_order) {
         c->guard_open = 0; /* the separating null's reply: no late reply of guard_order can follow */
     }
+    if (!c->synced && f->data[XF_OFF_ORDER] == XF_ORDER_NULL) {
+        /* A reply to a null: every reply to what was sent before (by an earlier client, on this
+         * link) is in, or, where the link reorders, is within reorder_ms. Commands may start. */
+        c->synced = 1;
+        c->sync_ms = c->now_ms;
+    }
     xf__update_telemetry(c, f->data);
     xf__update_link(c);
     xf__match(c, f);
@@ -495,21 +530,40 @@ static void xf__put_control(xf_client *c, uint8_t *buf)
     }
 }
 
-/* The order of the next packet: a command, an owed null, the stream, or
- * null. Sets *params (the bytes to send, *n of them) and returns the order. */
-static uint8_t xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
+/* Whether the queue's head may start now (docs/protocol.md §7.4). */
+static int xf__may_start(xf_client *c)
+{
+    uint8_t order = c->queue[c->q_head].order;
+    if (c->synced == 1u && xf_ms_since(c->now_ms, c->sync_ms) >= c->cfg.reorder_ms) {
+        c->synced = 2; /* what earlier clients sent has landed, even where the link reorders */
+    }
+    if (c->active || c->q_count == 0u || c->nulls_owed > 0u || c->synced != 2u) {
+        return 0; /* nothing to start, a null owed, or replies from before this client may be in flight */
+    }
+    /* Replies to the previous packets of this order may still be on their way, each with that
+     * command's state. Replies come in order: send nulls until one of theirs is back, then every
+     * reply of this order answers this command. Where the link reorders, every command waits so
+     * (a late reply could be of any earlier command's order). Not while the link is down. */
+    return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u) &&
+             c->health.link != XF_LINK_DOWN);
+}
+
+/* The order of the next packet: a command, an owed null, the stream, or null; or -1: send
+ * nothing in this slot (reorder_ms: let what was sent land before a packet that must not
+ * overtake it or be overtaken by it). Sets *params (the bytes to send, *n of them). */
+static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
 {
     const xf_cmd_slot *cmd = &c->queue[c->q_head];
+    uint32_t quiet = xf_ms_since(c->now_ms, c->last_tx_ms);
     *params = c->stream;
     *n = 0;
-    if (!c->active && c->q_count > 0u && c->nulls_owed == 0u) {
-        if (c->guard_open && cmd->order == c->guard_order && c->health.link != XF_LINK_DOWN) {
-            /* Replies to the previous packets of this order may still be on
-             * their way, each with that command's state. Replies come in
-             * order: keep sending nulls until one of theirs is back, then
-             * every reply of this order answers this command. */
-            return XF_ORDER_NULL;
-        }
+    if (c->cfg.reorder_ms > 0u && c->health.packets_sent > 0u && quiet < c->cfg.reorder_ms &&
+        (c->nulls_owed > 0u || xf__may_start(c))) {
+        /* The null after a command must not overtake the command's last packet, nor a command the
+         * packet before it: either way the GCU would run the command twice. */
+        return -1;
+    }
+    if (xf__may_start(c)) {
         c->active = 1;
         c->operating = 0;
         c->packets = 0;
@@ -539,18 +593,21 @@ static xf_err xf__send(xf_client *c)
     uint8_t buf[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX];
     const uint8_t *params;
     size_t n, len;
-    uint8_t order;
+    int order;
     xf_err err;
     XF_MEMSET(buf, 0, XF_PACKET_MIN_LEN);
     buf[XF_OFF_HOST_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
     xf__put_carrier(c, buf);
     xf__put_gnss(c, buf);
     order = xf__next_order(c, &params, &n); /* first: a command that starts here decides the control */
+    if (order < 0) {
+        return XF_OK;
+    }
     xf__put_control(c, buf);
     len = XF_PACKET_MIN_LEN + n;
     /* header, order, parameters and CRC as the codec's packer writes them */
     xf_packet_put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
-    xf_packet_put_tail(buf, len, order, params, (uint8_t)n);
+    xf_packet_put_tail(buf, len, (uint8_t)order, params, (uint8_t)n);
     err = c->hal.write(c->hal.ctx, buf, len);
     if (err != XF_OK) {
         c->health.send_errors++;
@@ -560,6 +617,7 @@ static xf_err xf__send(xf_client *c)
         return err;
     }
     c->health.packets_sent++;
+    c->last_tx_ms = c->now_ms;
     c->window_sent++;
     c->awaiting = 1;
     if (c->active) {
@@ -575,6 +633,10 @@ static void xf__check_timeouts(xf_client *c)
 {
     uint32_t limit, since;
     if (!c->active) {
+        if (c->q_count > 0u && xf_ms_since(c->now_ms, c->head_ms) >= c->cfg.command_timeout_ms) {
+            /* never started: no reply to a null yet, or the last command's replies never settled */
+            xf__finish(c, (c->health.link == XF_LINK_DOWN) ? XF_CMD_LINK_LOST : XF_CMD_TIMEOUT, NULL);
+        }
         return;
     }
     since = c->operating ? c->operating_ms : c->started_ms;
@@ -598,6 +660,7 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
     if (!c->started) {
         c->started = 1;
         c->next_send_ms = now_ms;
+        c->head_ms = now_ms; /* a command submitted before the first step waits from here */
         c->window_start_ms = now_ms;
     }
     rx = xf__receive(c);
@@ -784,7 +847,9 @@ xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags,
     if (c->next_id == 0u) {
         c->next_id = 1; /* 0 never names a command */
     }
-    c->q_count++;
+    if (c->q_count++ == 0u) {
+        c->head_ms = c->now_ms;
+    }
     return XF_OK;
 }
 

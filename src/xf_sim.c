@@ -588,6 +588,67 @@ static void xf__write_reply(xf_sim *s, const uint8_t *bytes, size_t len)
 
 static int xf__chance(xf_sim *s, uint16_t permille) { return permille > 0u && (xf__rand(s) % 1000u) < permille; }
 
+/* Keep @p bytes until @p due_ms, behind every packet due no later (the queue stays in due order). */
+static void xf__hold(xf_sim *s, const uint8_t *bytes, size_t len, uint8_t to_gcu, uint32_t due_ms)
+{
+    xf_sim_delayed *d;
+    uint16_t i = s->n_delayed;
+    if (s->n_delayed >= XF_SIM_DELAY_QUEUE || len > sizeof(d->bytes)) {
+        s->stats.dropped++; /* a host packet dropped on the way in is counted here too */
+        return;
+    }
+    while (i > 0u && (int32_t)(s->delayed[i - 1u].due_ms - due_ms) > 0) {
+        i--;
+    }
+    memmove(&s->delayed[i + 1u], &s->delayed[i], (size_t)(s->n_delayed - i) * sizeof(s->delayed[0]));
+    d = &s->delayed[i];
+    d->due_ms = due_ms;
+    d->len = (uint8_t)len;
+    d->to_gcu = to_gcu;
+    memcpy(d->bytes, bytes, len);
+    s->n_delayed++;
+}
+
+static void xf__on_packet(xf_sim *s, const xf_host_packet *p);
+
+/* One packet through the jitter and duplicate faults: each copy goes now or waits its turn.
+ * Replies also wait delay_ms. xf_sim_process() has no later: it never holds. */
+static void xf__send_copies(xf_sim *s, const uint8_t *bytes, size_t len, uint8_t to_gcu)
+{
+    int copies = 1 + xf__chance(s, s->fault.dup_permille);
+    uint32_t delay = to_gcu ? 0u : s->fault.delay_ms;
+    for (; copies > 0; copies--) {
+        uint32_t extra = (s->fault.jitter_ms > 0u) ? xf__rand(s) % (s->fault.jitter_ms + 1u) : 0u;
+        if (s->cap_buf == NULL && (delay + extra > 0u || s->n_delayed > 0u)) {
+            xf__hold(s, bytes, len, to_gcu, s->now_ms + delay + extra); /* never ahead of one held */
+        } else if (to_gcu) {
+            xf_host_packet p;
+            if (xf_host_unpack(bytes, len, &p) == XF_OK) {
+                xf__on_packet(s, &p);
+            }
+        } else {
+            xf__write_reply(s, bytes, len);
+        }
+    }
+}
+
+static void xf__release_delayed(xf_sim *s)
+{
+    while (s->n_delayed > 0u && (int32_t)(s->now_ms - s->delayed[0].due_ms) >= 0) {
+        xf_sim_delayed d = s->delayed[0];
+        s->n_delayed--;
+        memmove(&s->delayed[0], &s->delayed[1], (size_t)s->n_delayed * sizeof(s->delayed[0]));
+        if (d.to_gcu) {
+            xf_host_packet p;
+            if (xf_host_unpack(d.bytes, d.len, &p) == XF_OK) {
+                xf__on_packet(s, &p); /* its reply may join the queue: d is a copy */
+            }
+        } else {
+            xf__write_reply(s, d.bytes, d.len);
+        }
+    }
+}
+
 /* Faults, then the link (now or later). */
 static void xf__send_reply(xf_sim *s, uint8_t *bytes, size_t len)
 {
@@ -608,28 +669,7 @@ static void xf__send_reply(xf_sim *s, uint8_t *bytes, size_t len)
         bytes[5u + xf__rand(s) % (len - 7u)] ^= 0x5Au; /* inside the frames: only the CRC can tell */
         s->stats.corrupted++;
     }
-    if (s->fault.delay_ms > 0u && s->cap_buf == NULL) {
-        xf_sim_delayed *d;
-        if (s->n_delayed >= XF_SIM_DELAY_QUEUE || len > sizeof(d->bytes)) {
-            s->stats.dropped++;
-            return;
-        }
-        d = &s->delayed[s->n_delayed++];
-        d->due_ms = s->now_ms + s->fault.delay_ms;
-        d->len = (uint8_t)len;
-        memcpy(d->bytes, bytes, len);
-        return;
-    }
-    xf__write_reply(s, bytes, len);
-}
-
-static void xf__release_delayed(xf_sim *s)
-{
-    while (s->n_delayed > 0u && (int32_t)(s->now_ms - s->delayed[0].due_ms) >= 0) {
-        xf__write_reply(s, s->delayed[0].bytes, s->delayed[0].len);
-        s->n_delayed--;
-        memmove(&s->delayed[0], &s->delayed[1], (size_t)s->n_delayed * sizeof(s->delayed[0]));
-    }
+    xf__send_copies(s, bytes, len, 0u);
 }
 
 /* The state byte this reply carries for the last executed order, if any. */
@@ -706,7 +746,9 @@ static void xf__feed(xf_sim *s, const uint8_t *data, size_t n)
         if (r != XF_PARSE_FRAME) {
             break;
         }
-        if (xf_frame_host(&f, &p) == XF_OK) {
+        if (s->cap_buf == NULL && (s->fault.jitter_ms > 0u || s->fault.dup_permille > 0u || s->n_delayed > 0u)) {
+            xf__send_copies(s, f.data, f.len, 1u); /* on its way in: read when due */
+        } else if (xf_frame_host(&f, &p) == XF_OK) {
             xf__on_packet(s, &p);
         }
     }

@@ -71,7 +71,7 @@ typedef enum xf_link_state {
 /** Where a command is (xf_client_command_status(), xf_cmd_result.status). */
 typedef enum xf_cmd_status {
     XF_CMD_UNKNOWN = 0,   /**< no such id (never submitted, or forgotten) */
-    XF_CMD_QUEUED = 1,    /**< waiting behind other commands */
+    XF_CMD_QUEUED = 1,    /**< waiting: behind other commands, or until the link is settled (a reply to a null) */
     XF_CMD_SENDING = 2,   /**< in every packet, no execution state yet */
     XF_CMD_OPERATING = 3, /**< the GCU said "operating" (calibration); final state to come */
     XF_CMD_OK = 4,        /**< the GCU said success */
@@ -322,6 +322,12 @@ typedef struct xf_client_config {
     uint16_t down_ms;            /**< no valid reply for this long: ::XF_LINK_DOWN; > stale_ms, default 1000 */
     uint16_t rate_watchdog_ms;   /**< rates older than this become zero rates; default 500; 0 = off (not recommended) */
     uint8_t protocol_version;    /**< sent in byte 4, and the version commands are checked for; >= 1, default 1 */
+    /** The longest a packet or a reply can be overtaken by a later one on the link, ms; default 0:
+     *  the link keeps order (serial, TCP, UDP on loopback or a quiet LAN). Over a network that can
+     *  reorder or duplicate datagrams, set the bound: the client then waits this long around each
+     *  command (docs/protocol.md §7.4), so that no reply is taken for the wrong command and the
+     *  GCU runs each command once. At most 1000. */
+    uint16_t reorder_ms;
 } xf_client_config;
 
 /**
@@ -414,6 +420,12 @@ typedef struct xf_client {
     uint8_t awaiting;                     /**< private: the last packet sent has had no reply yet */
     uint8_t window_awaiting;              /**< private: the same, when the window started */
     uint8_t busy; /**< private: in xf_client_step() or xf_client_cancel_all(): a nested step returns ::XF_ERR_BUSY */
+    uint8_t synced; /**< private: 0; 1 a reply to a null has come back; 2 and reorder_ms has passed: commands may start */
+    /** @var xf_client::last_tx_ms
+     *  private: when the last packet went out */
+    /** @var xf_client::sync_ms
+     *  private: when synced became 1 */
+    uint32_t last_tx_ms, sync_ms, head_ms; /**< private: when the queue's head began to wait */
 } xf_client;
 
 /**
@@ -435,8 +447,8 @@ void xf_client_config_init(xf_client_config *cfg);
  * @param hal  the link (copied; what its ctx points to must outlive the client)
  * @param cfg  the configuration (copied), or NULL for xf_client_config_init()'s defaults
  * @return XF_OK, XF_WARN_RATE (accepted; rate outside 30-50 Hz),
- *   XF_ERR_ARG (NULL, incomplete hal), XF_ERR_RANGE (rate 0 or > 200,
- *   version 0, stale_ms 0, down_ms <= stale_ms, a command timeout 0),
+ *   XF_ERR_ARG (NULL, incomplete hal), XF_ERR_RANGE (a configuration that
+ *   cannot work: xf_client_config_problem() says why),
  *   ::XF_ERR_CONFIG (built with other layout options than the library).
  */
 #define xf_client_init(c, hal, cfg) xf_client_init_checked((c), (hal), (cfg), XF_OPTIONS_CHECK, sizeof(xf_client))
@@ -455,6 +467,19 @@ void xf_client_config_init(xf_client_config *cfg);
  */
 xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
                               size_t size);
+
+/**
+ * Why xf_client_init() would refuse @p cfg with ::XF_ERR_RANGE, as one
+ * English sentence naming the members: a rate outside 1..200; a version or
+ * operating timeout of 0; reorder_ms over 1000; stale_ms not above one packet
+ * period plus twice reorder_ms (the link would read stale between two good
+ * replies: at 1 Hz the default 250 ms is), down_ms not above stale_ms;
+ * command_timeout_ms under a round trip (two packet periods plus twice
+ * reorder_ms).
+ * @param cfg  the configuration (NULL: the defaults, which are fine)
+ * @return NULL when it can work, else a static string
+ */
+const char *xf_client_config_problem(const xf_client_config *cfg);
 
 /**
  * sizeof(xf_client) in the library (for a foreign-function interface).

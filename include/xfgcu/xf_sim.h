@@ -10,7 +10,7 @@
  * phase for calibration; moves its attitude by mode (rates integrate,
  * angles slew at a finite speed, orthoview points down, FPV follows the
  * carrier); zooms, ranges, tracks; replies in protocol version 1 or 2;
- * and injects faults (drop, corrupt, delay) on request.
+ * and injects faults (drop, corrupt, delay, jitter, duplicates) on request.
  *
  * Part of the xfgcu::client library (it needs libm, so not in builds
  * without a C library). No function waits: xf_sim_step() takes as long as
@@ -32,7 +32,7 @@
 XF_BEGIN_DECLS
 
 #ifndef XF_SIM_DELAY_QUEUE
-#define XF_SIM_DELAY_QUEUE 16 /**< replies held back by the delay fault */
+#define XF_SIM_DELAY_QUEUE 128 /**< packets held back by the delay, jitter and duplicate faults */
 #endif
 
 /** A simulator's configuration; start from xf_sim_config_init(). */
@@ -60,6 +60,12 @@ typedef struct xf_sim_faults {
     uint16_t corrupt_next;     /**< flip a byte in the next N replies */
     uint16_t corrupt_permille; /**< flip a byte in this many replies per thousand, at random */
     uint32_t delay_ms;         /**< hold each reply this long (at most XF_SIM_DELAY_QUEUE at once; more are dropped) */
+    /** hold each reply, and each host packet before it is read, a random 0..jitter_ms more (each its
+     *  own draw), so that packets overtake one another in both directions as on a network that
+     *  reorders; host packets so held are executed in the order they come out */
+    uint16_t jitter_ms;
+    uint16_t dup_permille; /**< this many packets per thousand, in each direction, arrive twice (the copy has its
+                                own jitter) */
     uint8_t silent;            /**< answer nothing (replies are not even counted as dropped) */
 } xf_sim_faults;
 
@@ -78,11 +84,12 @@ typedef struct xf_sim_stats {
     uint32_t write_errors;       /**< replies the link (or xf_sim_process()'s buffer) did not take */
 } xf_sim_stats;
 
-/** A reply held back by the delay fault (a member of xf_sim). */
+/** A packet held back by the delay, jitter or duplicate faults (a member of xf_sim). */
 typedef struct xf_sim_delayed {
-    uint32_t due_ms;                       /**< when it goes out */
-    uint8_t len;                           /**< its length */
-    uint8_t bytes[XF_PACKET_MIN_LEN + 1u]; /**< the reply */
+    uint32_t due_ms;                                       /**< when it goes out (a reply) or is read (a host packet) */
+    uint8_t len;                                           /**< its length */
+    uint8_t to_gcu;                                        /**< 1: a host packet on its way in; 0: a reply */
+    uint8_t bytes[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX]; /**< the packet */
 } xf_sim_delayed;
 
 /** Simulator state; members are readable (tests use them), change them only through functions and `fault`. */
@@ -149,8 +156,8 @@ typedef struct xf_sim {
     uint8_t ortho_follow;                       /**< orthoview entered from head follow: yaw follows the carrier */
     float tgt[3];                               /**< click-to-aim / neutral target: roll, pitch, yaw */
     uint8_t have_tgt;                           /**< slewing to tgt */
-    xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE]; /**< replies held back by the delay fault */
-    uint8_t n_delayed;                          /**< replies in delayed */
+    xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE]; /**< packets held back, in the order they are due */
+    uint16_t n_delayed;                         /**< packets in delayed */
     /* xf_sim_process: replies go to this buffer instead of the link */
     uint8_t *cap_buf; /**< xf_sim_process()'s output, NULL otherwise */
     /** @var xf_sim::cap_cap

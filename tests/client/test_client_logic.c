@@ -62,7 +62,7 @@ static ct_rig *rig_up(const xf_client_config *cc, const xf_sim_config *sc)
 
 static void test_init_rates_and_args(void **state)
 {
-    static const uint16_t warn[] = {1, 20, 29, 51, 60, 200};
+    static const uint16_t warn[] = {5, 20, 29, 51, 60, 200};
     static const uint16_t ok[] = {30, 40, 50};
     static const uint16_t bad[] = {0, 201, 300};
     xf_client c;
@@ -105,6 +105,35 @@ static void test_init_rates_and_args(void **state)
     xf_client_config_init(&cfg);
     cfg.operating_timeout_ms = 0;
     assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    /* a link that reads stale between two packets: 1 Hz with the default 250 ms (the red team's
+     * --rate 1, after which every command ended "link lost" against a healthy GCU) */
+    xf_client_config_init(&cfg);
+    cfg.rate_hz = 1;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    assert_non_null(strstr(xf_client_config_problem(&cfg), "stale_ms"));
+    cfg.stale_ms = 1001; /* above the period: stale only after a reply is missing */
+    cfg.down_ms = 3000;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE); /* 1000 ms timeout < a 2000 ms round trip */
+    assert_non_null(strstr(xf_client_config_problem(&cfg), "command_timeout_ms"));
+    cfg.command_timeout_ms = 2000;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_WARN_RATE);
+    assert_null(xf_client_config_problem(&cfg));
+    assert_null(xf_client_config_problem(NULL));
+    /* reorder_ms counts twice against both: silence before and after a command */
+    xf_client_config_init(&cfg);
+    cfg.reorder_ms = 115; /* 20 + 230 = 250: not above stale_ms */
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    cfg.reorder_ms = 114;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_OK);
+    cfg.stale_ms = 5000;
+    cfg.down_ms = 6000;
+    cfg.reorder_ms = 1001;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    cfg.reorder_ms = 1000;
+    cfg.command_timeout_ms = 2039; /* 2 x 20 + 2 x 1000 - 1 */
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    cfg.command_timeout_ms = 2040;
+    assert_xf(xf_client_init(&c, &hal, &cfg), XF_OK);
     xf_client_config_init(&cfg); /* the limits of the 16-bit times are accepted */
     cfg.stale_ms = 65534;
     cfg.down_ms = 65535;
@@ -2324,6 +2353,8 @@ static void cr_case(uint8_t mode, char kind, uint8_t order)
     int holds = order == XF_ORDER_NEUTRAL || order == XF_ORDER_TRACK || order == XF_ORDER_CLICK_TO_AIM ||
                 order == XF_ORDER_GAZE_GEO;
     int want = kind != '-' && !holds && cr_reads(mode) == kind;
+    /* with no reply yet, no reply to a null either: the command waits, nulls go out */
+    uint8_t sent = (mode == CR_NO_REPLY) ? (uint8_t)XF_ORDER_NULL : order;
     size_t n;
     r->sim_on = 0; /* the test is the GCU */
     if (mode != CR_NO_REPLY) {
@@ -2347,7 +2378,7 @@ static void cr_case(uint8_t mode, char kind, uint8_t order)
     }
     ct_run(r, 25); /* one packet */
     n = ct_drain_host(r, &last);
-    if (n != 1u || last.order != order || ((last.main.status & XF_STATUS_CTRL_VALID) != 0u) != want) {
+    if (n != 1u || last.order != sent || ((last.main.status & XF_STATUS_CTRL_VALID) != 0u) != want) {
         print_error("mode 0x%02X, setpoint '%c', order %s: %u packets, order 0x%02X, ctrl_valid %d (want %d)\n", mode,
                     kind, xf_order_name(order), (unsigned)n, last.order,
                     (last.main.status & XF_STATUS_CTRL_VALID) != 0u, want);
@@ -2361,13 +2392,124 @@ static void cr_case(uint8_t mode, char kind, uint8_t order)
         assert_int_equal(last.main.yaw_ctrl, kind == 'a' ? 3000 : -200);
         assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_SENT);
     }
-    if (holds && kind != '-') {
+    if (holds && kind != '-' && sent == order) {
         assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED); /* set before it: gone */
     }
     ct_rig_free(r);
 }
 
 /* Every reported mode x every setpoint kind x every order, on the packets actually sent. */
+/* ---- nothing mistaken: the start-up rule and links that reorder (docs/protocol.md §7.4) ---- */
+
+/* A reply with the state of @p order, as a GCU sends it for an earlier command. */
+static void nm_reply(ct_rig *r, uint8_t order, int with_state)
+{
+    xf_gcu_packet g;
+    memset(&g, 0, sizeof(g));
+    g.version = 1;
+    g.order = order;
+    if (with_state) {
+        g.params[0] = XF_STATE_SUCCESS;
+        g.params_len = 1;
+    }
+    ct_gcu_reply(r, &g);
+}
+
+/* A new client takes no reply for its command before a reply to one of its nulls: a late
+ * "shutter ok" meant for a process that ran before it is not its own. */
+static void test_start_waits_for_null_reply(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_host_packet last;
+    uint32_t id;
+    size_t i;
+    (void)state;
+    r->sim_on = 0; /* the test is the GCU */
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    nm_reply(r, XF_ORDER_SHUTTER, 1); /* late, for someone else */
+    ct_run(r, 100);
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_QUEUED);
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_UP); /* a GCU answers: only the rule holds it */
+    for (i = 0; i < r->log.n_sent; i++) {
+        assert_int_equal(r->log.sent_order[i], XF_ORDER_NULL);
+    }
+    nm_reply(r, XF_ORDER_SHUTTER, 1); /* still not a null's reply */
+    ct_run(r, 40);
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_QUEUED);
+    nm_reply(r, XF_ORDER_NULL, 0);
+    (void)ct_drain_host(r, NULL);
+    ct_run(r, 20); /* one packet period */
+    assert_int_equal(ct_drain_host(r, &last), 1);
+    assert_int_equal(last.order, XF_ORDER_SHUTTER); /* the next packet carries it */
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_SENDING);
+    nm_reply(r, XF_ORDER_SHUTTER, 1);
+    ct_run(r, 5);
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_OK);
+    ct_rig_free(r);
+}
+
+/* A command that never gets to start ends by command_timeout_ms, as one that was sent would. */
+static void test_unsynced_command_times_out(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_cmd_result res;
+    uint32_t id;
+    (void)state;
+    r->sim_on = 0;
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    ct_run(r, 990);
+    assert_status(xf_client_command_status(&r->c, id, NULL), XF_CMD_QUEUED);
+    assert_status(ct_run_cmd(r, id, 100, &res), XF_CMD_LINK_LOST); /* nobody ever answered */
+    assert_int_equal(res.packets, 0);
+    assert_true(res.elapsed_ms >= 1000u && res.elapsed_ms <= 1002u);
+    ct_rig_free(r);
+}
+
+/*
+ * The red team's case: 60 shutters in a row over a link with 0..60 ms of jitter each way and
+ * 30 % of packets duplicated. Returns the false "ok"s (an ok before the simulator had run that
+ * many shutters) and, in *extra, the executions beyond one per command.
+ */
+static unsigned nm_shutters(uint16_t reorder_ms, unsigned *extra)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    unsigned k, ok = 0, false_ok = 0;
+    xf_client_config_init(&cc);
+    cc.reorder_ms = reorder_ms;
+    r = ct_rig_new(&cc, NULL);
+    r->s.fault.jitter_ms = 60;
+    r->s.fault.dup_permille = 300;
+    ct_run(r, 200);
+    for (k = 0; k < 60u; k++) {
+        xf_cmd_result res;
+        uint32_t id = ct_submit(r, XF_ORDER_SHUTTER);
+        xf_cmd_status st = ct_run_cmd(r, id, 5000, &res);
+        assert_status(st, XF_CMD_OK);
+        ok++;
+        if (r->s.stats.photos < ok) {
+            false_ok++; /* the reply it took was an earlier command's */
+        }
+    }
+    ct_run(r, 500);
+    *extra = r->s.stats.photos - ok;
+    ct_rig_free(r);
+    return false_ok;
+}
+
+static void test_reorder_no_false_ok(void **state)
+{
+    unsigned extra = 0, false_ok;
+    (void)state;
+    false_ok = nm_shutters(100, &extra); /* the bound covers the 60 ms of jitter */
+    assert_int_equal(false_ok, 0);
+    assert_int_equal(extra, 0); /* and the GCU ran each command once */
+    /* the same link without the bound: the check above can fail */
+    false_ok = nm_shutters(0, &extra);
+    print_message("reorder_ms 0 on a reordering link: %u false ok, %u extra executions of 60\n", false_ok, extra);
+    assert_true(false_ok > 0u || extra > 0u);
+}
+
 static void test_control_rule_every_case(void **state)
 {
     static const uint8_t modes[] = {0x10, 0x11, 0x12, 0x13, 0x14, 0x16, 0x17, 0x1C, 0x42, CR_NO_REPLY};
@@ -2558,6 +2700,9 @@ int main(void)
         cmocka_unit_test(test_submit_model_support),
         cmocka_unit_test(test_gcu_version_decides),
         cmocka_unit_test(test_control_rule_every_case),
+        cmocka_unit_test(test_start_waits_for_null_reply),
+        cmocka_unit_test(test_unsynced_command_times_out),
+        cmocka_unit_test(test_reorder_no_false_ok),
         cmocka_unit_test(test_control_mode_changes),
         cmocka_unit_test(test_rates_main_camera_zoom),
         cmocka_unit_test(test_pod_order_per_gcu),
