@@ -140,8 +140,14 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
     }
     if (c->active) {
         c->nulls_owed = 1;        /* back to null packets: the next command of any order is separated */
-        c->guard_order = r.order; /* replies of this order may still be in flight */
-        c->guard_open = 1;
+        c->guard_order = r.order; /* replies of this order may still be in flight... */
+        /* ...unless every packet that carried it has had its reply (a link that keeps order and
+         * does not duplicate: reorder_ms 0). A reply to another order closes the guard only once
+         * one of this order has come, if none had: before that, it answers a packet sent before
+         * the command (the link is slower than the command was long). */
+        c->guard_open = c->answered < c->packets || c->cfg.reorder_ms > 0u;
+        c->guard_wait = c->answered == 0u;
+        c->guard_ms = c->now_ms;
     }
     c->active = 0;
     c->operating = 0;
@@ -193,6 +199,7 @@ static void xf__update_link(xf_client *c)
     c->health.link = s;
     if (s == XF_LINK_DOWN) {
         xf__fail_all(c, XF_CMD_LINK_LOST); /* fail fast: never run a stale command later */
+        c->guard_wait = 0; /* down_ms without a reply: what was sent before went unanswered */
     }
     if (c->cfg.on_link != NULL) {
         c->cfg.on_link(c->cfg.user, s);
@@ -348,7 +355,12 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     c->awaiting = 0;
     c->health.last_rx_ms = c->now_ms;
     c->health.transport_closed = 0; /* a GCU answers over the (reopened) transport */
-    if (f->data[XF_OFF_ORDER] != c->guard_order) {
+    if (c->active && f->data[XF_OFF_ORDER] == c->queue[c->q_head].order && c->answered < UINT16_MAX) {
+        c->answered++;
+    }
+    if (f->data[XF_OFF_ORDER] == c->guard_order) {
+        c->guard_wait = 0;
+    } else if (!c->guard_wait || xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms) {
         c->guard_open = 0; /* the separating null's reply: no late reply of guard_order can follow */
     }
     if (!c->synced && f->data[XF_OFF_ORDER] == XF_ORDER_NULL) {
@@ -567,6 +579,7 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
         c->active = 1;
         c->operating = 0;
         c->packets = 0;
+        c->answered = 0;
         c->started_ms = c->now_ms;
         if (xf__order_holds_ctrl(cmd->order) && (c->ctrl_kind == XF__CTRL_RATES || c->ctrl_kind == XF__CTRL_ANGLES)) {
             xf__drop_ctrl(c); /* what was set before it must not be read after it */
@@ -633,8 +646,9 @@ static void xf__check_timeouts(xf_client *c)
 {
     uint32_t limit, since;
     if (!c->active) {
-        if (c->q_count > 0u && xf_ms_since(c->now_ms, c->head_ms) >= c->cfg.command_timeout_ms) {
-            /* never started: no reply to a null yet, or the last command's replies never settled */
+        if (c->q_count > 0u && xf_ms_since(c->now_ms, c->head_ms) / 2u >= c->cfg.command_timeout_ms) {
+            /* never started: no reply to a null yet, or the last command's replies never settled
+             * (twice the timeout: the guard gives up waiting for those after one) */
             xf__finish(c, (c->health.link == XF_LINK_DOWN) ? XF_CMD_LINK_LOST : XF_CMD_TIMEOUT, NULL);
         }
         return;
@@ -888,6 +902,11 @@ xf_cmd_status xf_client_command_status(const xf_client *c, uint32_t id, xf_cmd_r
 
 size_t xf_client_pending(const xf_client *c) { return (c == NULL) ? 0u : c->q_count; }
 
+int xf_client_settled(const xf_client *c)
+{
+    return c != NULL && !c->active && c->q_count == 0u && !c->guard_open && !c->stream_on;
+}
+
 void xf_client_cancel_all(xf_client *c)
 {
     if (c != NULL) {
@@ -940,6 +959,7 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
          * be in flight: the exit's result must be its own. */
         c->guard_order = XF_ORDER_EXTERNAL_TRACK;
         c->guard_open = 1;
+        c->guard_wait = 0; /* the stream has been answered all along */
         c->stream_on = 0;
     }
     return err;

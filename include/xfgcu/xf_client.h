@@ -426,6 +426,13 @@ typedef struct xf_client {
     /** @var xf_client::sync_ms
      *  private: when synced became 1 */
     uint32_t last_tx_ms, sync_ms, head_ms; /**< private: when the queue's head began to wait */
+    /** @var xf_client::guard_ms
+     *  private: when the guard opened */
+    /** @var xf_client::answered
+     *  private: replies of the running command's order so far */
+    uint32_t guard_ms;
+    uint16_t answered;
+    uint8_t guard_wait; /**< private: a reply of guard_order must come first (none had come when it ended) */
 } xf_client;
 
 /**
@@ -480,6 +487,18 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
  * @return NULL when it can work, else a static string
  */
 const char *xf_client_config_problem(const xf_client_config *cfg);
+
+/**
+ * Whether the client may stop without leaving a reply to one of its commands in flight: nothing
+ * queued or running, and every packet that carried a command answered, or followed by a null
+ * packet whose reply is back (docs/protocol.md §7.4). A program that exits while this is 0 may
+ * leave the GCU's "ok" to its last command on the link, where the next program to run a
+ * command of that order could take it for its own; keep stepping until it is 1 (or give up
+ * after a bound, and say so).
+ * @param c  the client
+ * @return 1 or 0 (0 for a NULL @p c)
+ */
+int xf_client_settled(const xf_client *c);
 
 /**
  * sizeof(xf_client) in the library (for a foreign-function interface).
