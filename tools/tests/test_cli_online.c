@@ -432,20 +432,20 @@ static void test_replay_malformed(void **state)
     fputs("# xfgcu capture 1\n0.000 > A8 E5\n0.001 < 8A 5E 4\n", f);
     fclose(f);
     r = run_tool(NULL, "replay", file, "--json", NULL);
-    assert_failure(&r, 2, "line 3", file, NULL);
+    assert_failure(&r, 2, ":3: ", file, NULL);
     tool_result_free(&r);
     f = fopen(file, "w");
     assert_non_null(f);
     fputs("not a capture\n", f);
     fclose(f);
     r = run_tool(NULL, "replay", file, NULL);
-    assert_failure(&r, 2, "line 1", "not an xfgcu capture", NULL);
+    assert_failure(&r, 2, ":1: ", "not an xfgcu capture", NULL);
     tool_result_free(&r);
     f = fopen(file, "w"); /* empty: not a capture either */
     assert_non_null(f);
     fclose(f);
     r = run_tool(NULL, "replay", file, NULL);
-    assert_failure(&r, 2, "line 1", "not an xfgcu capture", NULL);
+    assert_failure(&r, 2, ":1: ", "not an xfgcu capture", NULL);
     tool_result_free(&r);
     unlink(file);
     r = run_tool(NULL, "replay", file, NULL);
@@ -453,7 +453,7 @@ static void test_replay_malformed(void **state)
     tool_result_free(&r);
     /* a directory opens, but cannot be read: a read error, not the end of the capture */
     r = run_tool(NULL, "replay", "/", NULL);
-    assert_failure(&r, 2, "cannot read", "line 1", NULL);
+    assert_failure(&r, 2, "cannot read", "/:1: ", NULL);
     tool_result_free(&r);
 }
 

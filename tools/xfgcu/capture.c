@@ -1,24 +1,54 @@
 /* capture.c - the text capture format of docs/capture-format.md (the program's record and replay). */
+#define _DEFAULT_SOURCE /* timegm() */
 #define _POSIX_C_SOURCE 200809L
 #include <ctype.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/time.h>
+#include <time.h>
 
 #include "capture.h"
+#include "capture_pcap.h"
 #include "xfgcu/xf_hal.h"
 
 #define XF_CAPTURE_MAGIC "# xfgcu capture 1"
+#define XF_CAPTURE_START "# start "
+#define XF_CAPTURE_T_MAX 4294967295ull /* ms: the largest time a record holds */
 
-xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc)
+int64_t xf_capture_wall_ms(void)
 {
+    struct timeval tv;
+    gettimeofday(&tv, NULL);
+    return (int64_t)tv.tv_sec * 1000 + tv.tv_usec / 1000;
+}
+
+void xf_capture_format_wall(int64_t ms, char *buf, size_t cap)
+{
+    time_t sec = (time_t)(ms / 1000);
+    struct tm tm;
+    char date[32];
+    if (gmtime_r(&sec, &tm) == NULL || strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%S", &tm) == 0u) {
+        snprintf(buf, cap, "?");
+        return;
+    }
+    snprintf(buf, cap, "%s.%03dZ", date, (int)(ms % 1000));
+}
+
+xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc, int64_t start_ms)
+{
+    char start[40] = "";
     if (w == NULL || f == NULL) {
         return XF_ERR_ARG;
     }
     memset(w, 0, sizeof(*w));
     w->f = f;
-    if (fprintf(f, "%s\n# link %s\n# time(s) dir(> host to GCU, < GCU to host) bytes\n", XF_CAPTURE_MAGIC,
-                link_desc != NULL ? link_desc : "-") < 0) {
+    if (start_ms >= 0) {
+        xf_capture_format_wall(start_ms, start, sizeof(start));
+    }
+    if (fprintf(f, "%s\n# link %s\n%s%s%s# time(s) dir(> host to GCU, < GCU to host) bytes\n", XF_CAPTURE_MAGIC,
+                link_desc != NULL ? link_desc : "-", start_ms >= 0 ? XF_CAPTURE_START : "", start,
+                start_ms >= 0 ? "\n" : "") < 0) {
         w->error = errno;
         return XF_ERR_IO;
     }
@@ -70,33 +100,126 @@ xf_err xf_capture_open(xf_capture_reader *r, FILE *f)
     }
     memset(r, 0, sizeof(*r));
     r->f = f;
+    r->line = 1;
     if (fgets(line, sizeof(line), f) == NULL) {
         if (ferror(f)) {
-            snprintf(r->error, sizeof(r->error), "line 1: %s", strerror(errno));
+            snprintf(r->error, sizeof(r->error), "cannot read: %s", strerror(errno));
             return XF_ERR_IO;
         }
         line[0] = '\0'; /* an empty file */
     }
     if (strncmp(line, XF_CAPTURE_MAGIC, strlen(XF_CAPTURE_MAGIC)) != 0) {
-        snprintf(r->error, sizeof(r->error), "line 1: not an xfgcu capture (expected \"%s\")", XF_CAPTURE_MAGIC);
+        snprintf(r->error, sizeof(r->error), "not an xfgcu capture (expected \"%s\" or pcap)", XF_CAPTURE_MAGIC);
         return XF_ERR_FORMAT;
     }
-    r->line = 1;
     return XF_OK;
 }
 
 static xf_err xf__capture_bad(xf_capture_reader *r, const char *why)
 {
-    snprintf(r->error, sizeof(r->error), "line %lu: %s", r->line, why);
+    snprintf(r->error, sizeof(r->error), "%s", why);
     return XF_ERR_FORMAT;
 }
 
 static int xf__hexval(int c) { return isdigit(c) ? c - '0' : (isxdigit(c) ? (tolower(c) - 'a' + 10) : -1); }
 
-xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
+/* "# start 2026-11-26T10:00:00.123Z": the wall clock of the first chunk. */
+static xf_err xf__capture_start(xf_capture_reader *r, const char *line)
+{
+    struct tm tm;
+    int ms = 0, n = 0;
+    memset(&tm, 0, sizeof(tm));
+    if (sscanf(line + strlen(XF_CAPTURE_START), "%4d-%2d-%2dT%2d:%2d:%2d.%3dZ%n", &tm.tm_year, &tm.tm_mon, &tm.tm_mday,
+               &tm.tm_hour, &tm.tm_min, &tm.tm_sec, &ms, &n) != 7 ||
+        n == 0 ||
+        (line[strlen(XF_CAPTURE_START) + (size_t)n] != '\n' && line[strlen(XF_CAPTURE_START) + (size_t)n] != '\0' &&
+         line[strlen(XF_CAPTURE_START) + (size_t)n] != '\r')) {
+        return xf__capture_bad(r, "bad start time (expected \"# start 2026-11-26T10:00:00.123Z\", UTC)");
+    }
+    tm.tm_year -= 1900;
+    tm.tm_mon -= 1;
+    r->start_ms = (int64_t)timegm(&tm) * 1000 + ms;
+    r->has_start = 1;
+    return XF_OK;
+}
+
+/* "12.345 >" or "12.345 <" at the start of @p p: the time and direction; *end after them. */
+static xf_err xf__capture_time(xf_capture_reader *r, const char *p, xf_capture_record *rec, const char **end)
+{
+    unsigned long long sec = 0, ms = 0, t;
+    size_t k = 0;
+    if (*p == '-') {
+        return xf__capture_bad(r, "negative time");
+    }
+    while (isdigit((unsigned char)p[k]) && k < 12u) {
+        sec = sec * 10u + (unsigned)(p[k++] - '0');
+    }
+    if (k == 0u || p[k] != '.') {
+        return xf__capture_bad(r, "expected a time like 12.345 (seconds)");
+    }
+    p += k + 1u;
+    for (k = 0; k < 3u && isdigit((unsigned char)p[k]); k++) {
+        ms = ms * 10u + (unsigned)(p[k] - '0');
+    }
+    if (k != 3u || p[3] != ' ') {
+        return xf__capture_bad(r, "expected three digits of milliseconds, then a space");
+    }
+    t = sec * 1000u + ms;
+    if (t > XF_CAPTURE_T_MAX) {
+        return xf__capture_bad(r, "time too large (at most 4294967.295 s)");
+    }
+    if (t < r->last_ms) {
+        return xf__capture_bad(r, "the time goes back (before the previous line's)");
+    }
+    p += 4;
+    if ((*p != '>' && *p != '<') || (p[1] != ' ' && p[1] != '\n' && p[1] != '\0' && p[1] != '\r')) {
+        return xf__capture_bad(r, "expected '>' or '<' after the time");
+    }
+    rec->t_ms = r->last_ms = (uint32_t)t;
+    rec->dir = (*p == '>') ? XF_DIR_HOST : XF_DIR_GCU;
+    *end = p + 1;
+    return XF_OK;
+}
+
+/* The bytes of a record line after the direction: " XX XX ..." to the end of the line. */
+static xf_err xf__capture_bytes(xf_capture_reader *r, const char *p, xf_capture_record *rec)
+{
+    rec->len = 0;
+    while (*p == ' ') {
+        int hi = xf__hexval((unsigned char)p[1]), lo = xf__hexval((unsigned char)p[2]);
+        if (hi < 0 || lo < 0 || (p[3] != ' ' && p[3] != '\n' && p[3] != '\r' && p[3] != '\0')) {
+            return xf__capture_bad(r, "bad byte (expected two hex digits)");
+        }
+        if (rec->len >= XF_CAPTURE_MAX_CHUNK) {
+            return xf__capture_bad(r, "more than 4096 bytes on one line");
+        }
+        rec->data[rec->len++] = (uint8_t)(hi * 16 + lo);
+        p += 3;
+    }
+    if ((*p == '\r' && p[1] != '\n' && p[1] != '\0') || (*p != '\n' && *p != '\0' && *p != '\r')) {
+        return xf__capture_bad(r, "unexpected text after the bytes");
+    }
+    return XF_OK;
+}
+
+static xf_err xf__capture_line(xf_capture_reader *r, const char *line, size_t got, xf_capture_record *rec)
 {
     /* A full line: time, direction and 3 characters per byte. */
     static const size_t line_max = 32u + 3u * XF_CAPTURE_MAX_CHUNK;
+    const char *p = NULL;
+    xf_err err;
+    if (strlen(line) != got) {
+        return xf__capture_bad(r, "NUL byte in the line");
+    }
+    if (got > line_max) {
+        return xf__capture_bad(r, "line too long");
+    }
+    err = xf__capture_time(r, line, rec, &p);
+    return (err == XF_OK) ? xf__capture_bytes(r, p, rec) : err;
+}
+
+xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
+{
     char *line = NULL;
     size_t cap = 0;
     ssize_t got;
@@ -105,55 +228,101 @@ xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
         return XF_ERR_ARG;
     }
     while ((got = getline(&line, &cap, r->f)) >= 0) {
-        char *p = line, *end;
-        unsigned long sec, ms = 0;
         r->line++;
-        if (line[0] == '#' || line[0] == '\n' || line[0] == '\0') {
-            continue;
-        }
-        if ((size_t)got > line_max) {
-            result = xf__capture_bad(r, "line too long");
-            break;
-        }
-        sec = strtoul(p, &end, 10);
-        if (end == p || *end != '.' || !isdigit((unsigned char)end[1])) {
-            result = xf__capture_bad(r, "expected a time like 12.345");
-            break;
-        }
-        p = end + 1;
-        ms = strtoul(p, &end, 10);
-        if (end - p != 3 || (*end != ' ')) {
-            result = xf__capture_bad(r, "expected three digits of milliseconds");
-            break;
-        }
-        p = end + 1;
-        if ((*p != '>' && *p != '<') || (p[1] != ' ' && p[1] != '\n')) {
-            result = xf__capture_bad(r, "expected '>' or '<'");
-            break;
-        }
-        rec->t_ms = (uint32_t)(sec * 1000u + ms);
-        rec->dir = (*p == '>') ? XF_DIR_HOST : XF_DIR_GCU;
-        rec->len = 0;
-        p++;
-        result = XF_OK;
-        while (*p == ' ') {
-            int hi = xf__hexval((unsigned char)p[1]), lo = xf__hexval((unsigned char)p[2]);
-            if (hi < 0 || lo < 0 || rec->len >= XF_CAPTURE_MAX_CHUNK) {
-                result = xf__capture_bad(r, "bad byte (expected two hex digits)");
+        if (strncmp(line, XF_CAPTURE_START, strlen(XF_CAPTURE_START)) == 0) {
+            result = xf__capture_start(r, line);
+            if (result != XF_OK) {
                 break;
             }
-            rec->data[rec->len++] = (uint8_t)(hi * 16 + lo);
-            p += 3;
+            result = XF_ERR_EOF;
+            continue;
         }
-        if (result == XF_OK && *p != '\n' && *p != '\0' && *p != '\r') {
-            result = xf__capture_bad(r, "unexpected text after the bytes");
+        if ((line[0] == '#' && strlen(line) == (size_t)got) || line[0] == '\n' ||
+            (line[0] == '\r' && line[1] == '\n')) {
+            continue;
         }
+        result = xf__capture_line(r, line, (size_t)got, rec);
         break;
     }
     if (got < 0 && ferror(r->f)) {
-        snprintf(r->error, sizeof(r->error), "line %lu: %s", r->line + 1u, strerror(errno));
+        r->line++;
+        snprintf(r->error, sizeof(r->error), "cannot read: %s", strerror(errno));
         result = XF_ERR_IO;
     }
     free(line);
     return result;
+}
+
+/* ---- either format ----------------------------------------------------------------------- */
+
+xf_err capture_source_open(capture_source *s, FILE *f)
+{
+    int c;
+    memset(s, 0, sizeof(*s));
+    c = getc(f);
+    if (c == EOF && ferror(f)) {
+        snprintf(s->error, sizeof(s->error), "1: cannot read: %s", strerror(errno));
+        return XF_ERR_IO;
+    }
+    if (c != EOF) {
+        (void)ungetc(c, f);
+    }
+    s->is_pcap = pcap_magic_byte(c);
+    if (!s->is_pcap) {
+        xf_err err = xf_capture_open(&s->text, f);
+        snprintf(s->error, sizeof(s->error), "%lu: %s", s->text.line, s->text.error);
+        return err;
+    }
+    s->pcap = calloc(1, sizeof(pcap_reader));
+    if (s->pcap == NULL) {
+        snprintf(s->error, sizeof(s->error), " out of memory");
+        return XF_ERR_IO;
+    }
+    if (pcap_reader_open((pcap_reader *)s->pcap, f) != 0) {
+        snprintf(s->error, sizeof(s->error), " %s", ((pcap_reader *)s->pcap)->error);
+        free(s->pcap);
+        s->pcap = NULL;
+        return XF_ERR_FORMAT;
+    }
+    return XF_OK;
+}
+
+static xf_err capture_source_pcap(capture_source *s, xf_capture_record *rec)
+{
+    pcap_reader *p = (pcap_reader *)s->pcap;
+    int got = pcap_reader_next(p, &rec->dir, &rec->t_ms, rec->data, sizeof(rec->data), &rec->len);
+    if (got < 0) {
+        snprintf(s->error, sizeof(s->error), " %s", p->error);
+        return XF_ERR_FORMAT;
+    }
+    if (got > 0 && !s->has_start) {
+        s->has_start = 1;
+        s->start_ms = pcap_reader_start_ms(p);
+    }
+    return (got > 0) ? XF_OK : XF_ERR_EOF;
+}
+
+xf_err capture_source_next(capture_source *s, xf_capture_record *rec)
+{
+    xf_err err;
+    if (s->is_pcap) {
+        return capture_source_pcap(s, rec);
+    }
+    err = xf_capture_next(&s->text, rec);
+    s->has_start = s->text.has_start;
+    s->start_ms = s->text.start_ms;
+    snprintf(s->error, sizeof(s->error), "%lu: %s", s->text.line, s->text.error);
+    return err;
+}
+
+void capture_source_close(capture_source *s)
+{
+    if (s->pcap != NULL) {
+        pcap_reader_close((pcap_reader *)s->pcap); /* closes the FILE too */
+        free(s->pcap);
+        s->pcap = NULL;
+    } else if (s->text.f != NULL && s->text.f != stdin) {
+        fclose(s->text.f);
+    }
+    s->text.f = NULL;
 }

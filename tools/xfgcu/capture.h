@@ -9,11 +9,13 @@
  * @code{.unparsed}
  *     # xfgcu capture 1
  *     # link tcp 192.168.144.108:2332
+ *     # start 2026-11-26T10:00:00.123Z
  *     0.000 > A8 E5 48 00 01 ...
  *     0.004 < 8A 5E 48 00 01 ...
  * @endcode
  *
- * Time in seconds from the start (millisecond resolution), '>' host to
+ * Time in seconds from the start (millisecond resolution; "# start" gives
+ * the wall-clock time of the first chunk, UTC), '>' host to
  * GCU, '<' GCU to host, the bytes exactly as the link moved them (a chunk
  * need not be a whole packet). Lines starting with '#' are comments.
  *
@@ -45,16 +47,23 @@ typedef struct xf_capture_writer {
     int error;              /**< errno of the first failed write, 0 if none */
 } xf_capture_writer;
 
+/** The wall clock now, ms since 1970 (the start time a capture records). */
+int64_t xf_capture_wall_ms(void);
+/** @p ms since 1970 as "2026-11-26T10:00:00.123Z" (UTC) into @p buf (24 bytes or more). */
+void xf_capture_format_wall(int64_t ms, char *buf, size_t cap);
+
 /**
- * Write the header (with @p link_desc, may be NULL) to @p f; the caller owns f.
- * Blocking stdio.
+ * Write the header (with @p link_desc, may be NULL, and the start time) to @p f; the caller
+ * owns f. Blocking stdio.
  * @param w          the writer's storage
  * @param f          the file, open for writing (closed by the caller)
  * @param link_desc  one line describing the link, such as "tcp 192.168.144.108:2332" (NULL: "-")
+ * @param start_ms   wall-clock time of the first chunk, ms since 1970 (xf_capture_wall_ms());
+ *                   negative: not known, no "# start" line
  * @return ::XF_OK, ::XF_ERR_ARG (NULL @p w or @p f), ::XF_ERR_IO (the write
  *   failed; w->error holds errno)
  */
-xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc);
+xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc, int64_t start_ms);
 /**
  * Append one chunk (usable as an xf_tap_fn with the writer as user).
  * A chunk longer than ::XF_CAPTURE_MAX_CHUNK takes several lines. Errors are
@@ -80,7 +89,10 @@ typedef struct xf_capture_record {
 typedef struct xf_capture_reader {
     FILE *f;            /**< the file (the caller's) */
     unsigned long line; /**< of the last record read, for error messages */
-    char error[160];    /**< why the last call failed: line number and reason */
+    char error[160];    /**< why the last call failed (the line is in `line`) */
+    int has_start;      /**< a "# start" line gave the wall-clock time of the first chunk */
+    int64_t start_ms;   /**< that time, ms since 1970 */
+    uint32_t last_ms;   /**< time of the last record: times never go back */
 } xf_capture_reader;
 
 /**
@@ -97,7 +109,10 @@ xf_err xf_capture_open(xf_capture_reader *r, FILE *f);
  * Read the next record: XF_OK, XF_ERR_EOF at the end of the file, or
  * XF_ERR_FORMAT for a malformed line (r->error says which line and why).
  *
- * Comment and empty lines are skipped. Blocking stdio; allocates (and
+ * Comment and empty lines are skipped ("# start" is read). A time must be
+ * digits, a point and three digits, at most 4294967.295 s, and not before
+ * the previous line's; NUL bytes, bad hex and stray text are errors.
+ * Blocking stdio; allocates (and
  * frees) a line buffer with getline(). @p rec may be partly written on
  * error.
  * @param r    the reader
@@ -107,6 +122,36 @@ xf_err xf_capture_open(xf_capture_reader *r, FILE *f);
  *   says why), ::XF_ERR_ARG (NULL @p r or @p rec)
  */
 xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec);
+
+/* ---- either format: the text one or pcap (capture_pcap.h) ------------------------------ */
+
+/** A capture of either format, being read. */
+typedef struct capture_source {
+    int is_pcap;
+    xf_capture_reader text;
+    void *pcap; /* pcap_reader, allocated */
+    int has_start;
+    int64_t start_ms; /**< wall clock of the first chunk, ms since 1970, when has_start */
+    char error[240];  /**< "12: reason" (text: the line) or " record 5: reason" (pcap): print after "FILE:" */
+} capture_source;
+
+/**
+ * Start reading @p f: pcap or pcapng (by its first byte), else the text format. The source owns
+ * @p f from now on: capture_source_close() closes it (unless it is stdin).
+ * @return ::XF_OK, ::XF_ERR_FORMAT (s->error says why), ::XF_ERR_IO (the same; out of memory too)
+ */
+xf_err capture_source_open(capture_source *s, FILE *f);
+/** The next chunk: ::XF_OK, ::XF_ERR_EOF, ::XF_ERR_FORMAT or ::XF_ERR_IO (s->error says why). */
+xf_err capture_source_next(capture_source *s, xf_capture_record *rec);
+void capture_source_close(capture_source *s);
+
+/**
+ * Replay's printer, shared with `decode`: decode the capture in @p in (closed when done; @p name
+ * names it in messages) and print every packet with its time, as a table (with the summary line
+ * when @p summary) or as JSON Lines (@p json); @p pod is how pod_status is read
+ * (a pod_reading of fields.h). @return an exit code.
+ */
+int replay_capture(FILE *in, const char *name, int json, int pod, int summary);
 
 XF_END_DECLS
 

@@ -1,15 +1,19 @@
 /*
- * cmd_record.c - `xfgcu [LINK] record FILE [--duration S] [--count N] [COMMAND [ARGS]]`.
+ * cmd_record.c - `xfgcu [LINK] record [--pcap] FILE [--duration S] [--count N] [COMMAND [ARGS]]`.
  *
  * The link is wrapped in a tap (xf_tap.h) that hands every chunk read or
  * written, with its time, to the capture writer (xf_capture.h), so FILE
  * holds the bytes exactly as the link moved them, both ways, in the text
- * format of docs/capture-format.md. Meanwhile the client keeps the link
- * going with null packets, or runs COMMAND the protocol's way (as send).
+ * format of docs/capture-format.md or, with --pcap, in pcap (capture_pcap.h).
+ * Meanwhile the client keeps the link going with null packets, or runs
+ * COMMAND the protocol's way (as send).
  */
+#include <arpa/inet.h>
 #include <errno.h>
+#include <netinet/in.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,16 +21,19 @@
 #include "cmdargs.h"
 #include "online.h"
 #include "capture.h"
+#include "capture_pcap.h"
 
 #define NULLS_AFTER 3u
 #define DRAIN_MS    250u
 
 void help_record(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] record FILE [--duration S] [--count N] [COMMAND [ARGS]]\n\n"
+    fputs("usage: xfgcu [LINK OPTIONS] record [--pcap] FILE [--duration S] [--count N] [COMMAND [ARGS]]\n\n"
           "Capture every byte the link moves, both ways, with timestamps, into FILE (a text format,\n"
           "one chunk per line: docs/capture-format.md), while null packets keep the link going.\n"
           "`xfgcu replay FILE` decodes it.\n\n"
+          "  --pcap         write pcap instead, for Wireshark (tools/wireshark/xfgcu.lua): UDP and\n"
+          "                 TCP as IPv4 packets (LINKTYPE_RAW), serial as LINKTYPE_USER0\n"
           "  --duration S   stop after S seconds (0.1..31536000)\n"
           "  --count N      stop after N packets from the GCU (1..1000000000)\n"
           "  --force        replace FILE if it exists (otherwise an existing FILE is an error)\n"
@@ -46,8 +53,9 @@ typedef struct record {
     const char *file;
     char tmp[4096]; /* where the capture is written until it is complete */
     FILE *f;
-    int force;
+    int force, pcap;
     xf_capture_writer w;
+    pcap_writer pw;
     int begun;
     long count;
     double duration;
@@ -58,12 +66,13 @@ typedef struct record {
 
 /* ---- arguments ---------------------------------------------------------------------- */
 
-enum { O_DURATION = 256, O_COUNT, O_FORCE, O_HELP };
+enum { O_DURATION = 256, O_COUNT, O_FORCE, O_PCAP, O_HELP };
 
 static const struct option record_options[] = {
     {"duration", required_argument, NULL, O_DURATION},
     {"count", required_argument, NULL, O_COUNT},
     {"force", no_argument, NULL, O_FORCE},
+    {"pcap", no_argument, NULL, O_PCAP},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
@@ -87,6 +96,7 @@ static int take_arg(record *r, const cli_args *a, int id)
     case O_COUNT:
         return cli_value_long(a, 1, 1000000000L, "a number of packets, 1..1000000000", &r->count, &r->has_count);
     case O_FORCE: r->force = 1; return XFGCU_EXIT_OK;
+    case O_PCAP: r->pcap = 1; return XFGCU_EXIT_OK;
     case O_HELP: r->help = 1; return XFGCU_EXIT_OK;
     case CLI_ARG: return take_word(r, a->value);
     default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
@@ -115,14 +125,97 @@ static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_comm
 
 /* ---- callbacks ------------------------------------------------------------------------ */
 
+/* An IPv4 socket address: its address and port (host order); 0 when it is not IPv4. */
+static int ipv4_of(const struct sockaddr_storage *ss, uint32_t *ip, uint16_t *port)
+{
+    const struct sockaddr_in *in = (const struct sockaddr_in *)(const void *)ss;
+    if (ss->ss_family != AF_INET) {
+        return 0;
+    }
+    *ip = ntohl(in->sin_addr.s_addr);
+    *port = ntohs(in->sin_port);
+    return 1;
+}
+
+/* The local address the system sends to @p gcu_ip from (a UDP socket bound to any address has
+ * none of its own): what a connected socket is given; 0 when there is none. */
+static uint32_t route_source(uint32_t gcu_ip, uint16_t gcu_port)
+{
+    struct sockaddr_in to, from;
+    socklen_t n = sizeof(from);
+    uint32_t ip = 0;
+    int fd = socket(AF_INET, SOCK_DGRAM, 0);
+    memset(&to, 0, sizeof(to));
+    to.sin_family = AF_INET;
+    to.sin_addr.s_addr = htonl(gcu_ip);
+    to.sin_port = htons(gcu_port);
+    if (fd >= 0 && connect(fd, (const struct sockaddr *)&to, sizeof(to)) == 0 &&
+        getsockname(fd, (struct sockaddr *)&from, &n) == 0) {
+        ip = ntohl(from.sin_addr.s_addr);
+    }
+    if (fd >= 0) {
+        close(fd);
+    }
+    return ip;
+}
+
+/* The link's two ends, for the made-up IPv4 headers: the sockets' own when IPv4, else the ports
+ * of the options around 0.0.0.0. */
+static pcap_kind pcap_ends_of(const online *o, pcap_ends *e)
+{
+    const xf_link *l = &o->link;
+    struct sockaddr_storage ss;
+    socklen_t n = sizeof(ss);
+    int fd = (l->spec.kind == XF_LINK_KIND_UDP) ? l->as.udp.fd : l->as.tcp.fd;
+    memset(e, 0, sizeof(*e));
+    if (l->spec.kind != XF_LINK_KIND_UDP && l->spec.kind != XF_LINK_KIND_TCP) {
+        return PCAP_KIND_SERIAL;
+    }
+    e->gcu_port = l->spec.port;
+    e->host_port = (l->spec.kind == XF_LINK_KIND_UDP) ? l->as.udp.local_port : 0u;
+    if (getsockname(fd, (struct sockaddr *)&ss, &n) == 0) {
+        (void)ipv4_of(&ss, &e->host_ip, &e->host_port);
+    }
+    n = sizeof(ss);
+    if (l->spec.kind == XF_LINK_KIND_UDP) {
+        (void)ipv4_of(&l->as.udp.gcu, &e->gcu_ip, &e->gcu_port);
+    } else if (getpeername(fd, (struct sockaddr *)&ss, &n) == 0) {
+        (void)ipv4_of(&ss, &e->gcu_ip, &e->gcu_port);
+    }
+    if (e->host_ip == 0u && e->gcu_ip != 0u) {
+        e->host_ip = route_source(e->gcu_ip, e->gcu_port);
+    }
+    return (l->spec.kind == XF_LINK_KIND_UDP) ? PCAP_KIND_UDP : PCAP_KIND_TCP;
+}
+
+/* The file's header, once the link is known (a byte moved), or at the end when none did. */
+static void begin_file(record *r, const online *o, const char *desc)
+{
+    pcap_ends ends;
+    memset(&ends, 0, sizeof(ends));
+    r->begun = 1;
+    if (r->pcap) {
+        pcap_kind kind = (o != NULL) ? pcap_ends_of(o, &ends) : PCAP_KIND_SERIAL;
+        if (pcap_writer_open(&r->pw, r->f, kind, &ends) != 0 && r->pw.dumper == NULL) {
+            fclose(r->f); /* the writer never took it; its error is kept for the end */
+        }
+        r->f = NULL; /* the writer's now */
+    } else {
+        (void)xf_capture_begin(&r->w, r->f, desc, xf_capture_wall_ms());
+    }
+}
+
 static void on_chunk(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
 {
     record *r = (record *)user;
     if (!r->begun) {
-        r->begun = 1;
-        (void)xf_capture_begin(&r->w, r->f, r->o->desc); /* the link is known once a byte moves */
+        begin_file(r, r->o, r->o->desc);
     }
-    xf_capture_chunk(&r->w, dir, data, len, now_ms);
+    if (r->pcap) {
+        pcap_writer_chunk(&r->pw, dir, data, len, now_ms);
+    } else {
+        xf_capture_chunk(&r->w, dir, data, len, now_ms);
+    }
 }
 
 static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
@@ -218,15 +311,27 @@ static int publish(record *r)
     return XFGCU_EXIT_OK;
 }
 
-static int finish_file(record *r, int rc, uint32_t elapsed)
+/* Close the file; the errno of the first failure, or 0. */
+static int close_file(record *r)
 {
-    int err = r->w.error, prc;
-    if (!r->begun) {
-        (void)xf_capture_begin(&r->w, r->f, r->desc);
+    int err;
+    if (r->pcap) {
+        return pcap_writer_close(&r->pw); /* the writer has the file since begin_file() */
     }
+    err = r->w.error;
     if (fclose(r->f) != 0 && err == 0) {
         err = errno;
     }
+    return err;
+}
+
+static int finish_file(record *r, int rc, uint32_t elapsed)
+{
+    int err, prc;
+    if (!r->begun) {
+        begin_file(r, NULL, r->desc);
+    }
+    err = close_file(r);
     if (err != 0) {
         (void)unlink(r->tmp); /* ours; FILE was never touched */
         return cli_fail("record: cannot write %s: %s", r->file, strerror(err));
@@ -236,7 +341,8 @@ static int finish_file(record *r, int rc, uint32_t elapsed)
         return prc;
     }
     printf("recorded %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
-           r->desc, (unsigned)r->w.chunks, (unsigned)r->w.bytes, (unsigned)r->sent, (unsigned)r->received, r->file);
+           r->desc, (unsigned)(r->pcap ? r->pw.chunks : r->w.chunks), (unsigned)(r->pcap ? r->pw.bytes : r->w.bytes),
+           (unsigned)r->sent, (unsigned)r->received, r->file);
     return rc;
 }
 
@@ -293,7 +399,7 @@ static int run_record(record *r, const cli_link *link, const xf_command *cmd)
     if (rc == XFGCU_EXIT_OK || rc == XFGCU_EXIT_FAILED || r->begun) {
         return finish_file(r, rc, elapsed);
     }
-    fclose(r->f);
+    fclose(r->f);         /* not begun: still ours */
     (void)unlink(r->tmp); /* the link never moved a byte: no capture to keep; FILE is untouched */
     return rc;
 }

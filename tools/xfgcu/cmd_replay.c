@@ -1,7 +1,7 @@
 /*
  * cmd_replay.c - `xfgcu replay FILE [--json] [--brief]`.
  *
- * Reads a capture (docs/capture-format.md) and runs each direction's
+ * Reads a capture (docs/capture-format.md: the text format or pcap) and runs each direction's
  * bytes through its own streaming parser, as a live link would, flushing
  * both at the end of the file. Each packet is printed when its last byte
  * arrives, with that chunk's time: as decode's table, as one line
@@ -26,8 +26,10 @@ void help_replay(FILE *out)
           "printed with the time of the chunk that completed it and its direction.\n\n"
           "  (default)  decode's table for each packet\n"
           "  --brief    one line per packet: time, direction, order, feedback, attitude, zoom\n"
-          "  --json     JSON Lines: decode --json's object with \"t\" (seconds) in front\n\n"
-          "A malformed capture is an error (exit 2) that names its line.\n",
+          "  --json     JSON Lines: decode --json's object with \"t\" (seconds) in front, and\n"
+          "             \"time\" (UTC) when the capture says when it started\n\n"
+          "FILE is the text format of `record` or pcap / pcapng (`record --pcap`, tcpdump, Wireshark).\n"
+          "A malformed capture is an error (exit 2): \"xfgcu: FILE:LINE: reason\" (pcap: the record).\n",
           out);
 }
 
@@ -36,6 +38,9 @@ typedef enum replay_style { STYLE_TABLE, STYLE_BRIEF, STYLE_JSON } replay_style;
 typedef struct replay {
     const char *file;
     int style, help;
+    pod_reading pod;     /* how pod_status's flags are read (decode --pod-order) */
+    int has_start;       /* the capture says when it started: */
+    int64_t start_ms;    /* wall clock of its first chunk, ms since 1970 */
     xf_parser parser[2]; /* by xf_direction */
     uint32_t t_ms[2];    /* time of the last chunk of each direction */
     size_t packets[2];
@@ -44,13 +49,17 @@ typedef struct replay {
 
 /* ---- printing ------------------------------------------------------------------------ */
 
-static int print_json(const uint8_t *buf, size_t len, xf_direction dir, uint32_t t_ms)
+static int print_json(const replay *r, const uint8_t *buf, size_t len, xf_direction dir, uint32_t t_ms)
 {
-    json_t *pkt = jsonpkt_from_wire(buf, len, dir, POD_READ_AUTO);
+    json_t *pkt = jsonpkt_from_wire(buf, len, dir, r->pod);
     json_t *obj = json_object();
-    char *text = NULL;
-    if (pkt != NULL && obj != NULL && json_object_set_new(obj, "t", json_real(cli_seconds(t_ms))) == 0 &&
-        json_object_update(obj, pkt) == 0) {
+    char *text = NULL, wall[40];
+    int ok = (pkt != NULL && obj != NULL && json_object_set_new(obj, "t", json_real(cli_seconds(t_ms))) == 0);
+    if (ok && r->has_start) {
+        xf_capture_format_wall(r->start_ms + t_ms, wall, sizeof(wall));
+        ok = json_object_set_new(obj, "time", json_string(wall)) == 0;
+    }
+    if (ok && json_object_update(obj, pkt) == 0) {
         text = json_dumps(obj, JSON_COMPACT | JSON_REAL_PRECISION(10));
     }
     json_decref(pkt);
@@ -105,20 +114,24 @@ static void print_brief(const uint8_t *buf, size_t len, xf_direction dir, uint32
 static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
 {
     uint32_t t = r->t_ms[dir];
-    char where[64];
+    char where[96], wall[40] = "";
     if (r->rc != XFGCU_EXIT_OK) {
         return;
     }
     switch ((replay_style)r->style) {
-    case STYLE_JSON: r->rc = print_json(f->data, f->len, dir, t); break;
+    case STYLE_JSON: r->rc = print_json(r, f->data, f->len, dir, t); break;
     case STYLE_BRIEF: print_brief(f->data, f->len, dir, t); break;
     default:
         if (r->packets[0] + r->packets[1] > 0u) {
             putchar('\n');
         }
-        snprintf(where, sizeof(where), "t %.3f s, %s", cli_seconds(t),
+        if (r->has_start) {
+            xf_capture_format_wall(r->start_ms + t, wall + 2, sizeof(wall) - 2u);
+            memcpy(wall, ", ", 2);
+        }
+        snprintf(where, sizeof(where), "t %.3f s%s, %s", cli_seconds(t), wall,
                  dir == XF_DIR_HOST ? "host to GCU" : "GCU to host");
-        table_print(f->data, f->len, dir, where, POD_READ_AUTO, stdout);
+        table_print(f->data, f->len, dir, where, r->pod, stdout);
         break;
     }
     r->packets[dir]++;
@@ -153,25 +166,23 @@ static void flush_parsers(replay *r)
 
 static int read_capture(replay *r, FILE *in)
 {
-    xf_capture_reader reader;
+    capture_source src;
     xf_capture_record *rec = malloc(sizeof(*rec));
     xf_err err;
     if (rec == NULL) {
+        fclose(in);
         return cli_fail("replay: out of memory");
     }
-    err = xf_capture_open(&reader, in);
-    while (err == XF_OK && r->rc == XFGCU_EXIT_OK && (err = xf_capture_next(&reader, rec)) == XF_OK) {
+    err = capture_source_open(&src, in);
+    while (err == XF_OK && r->rc == XFGCU_EXIT_OK && (err = capture_source_next(&src, rec)) == XF_OK) {
+        r->has_start = src.has_start;
+        r->start_ms = src.start_ms;
         feed(r, rec);
     }
     free(rec);
-    if (err == XF_ERR_FORMAT) {
-        return cli_fail("replay %s: %s", r->file, reader.error);
-    }
-    if (err == XF_ERR_IO) {
-        return cli_fail("replay %s: cannot read: %s", r->file, reader.error);
-    }
+    capture_source_close(&src);
     if (err != XF_ERR_EOF && err != XF_OK) {
-        return cli_fail("replay %s: cannot read: %s", r->file, xf_strerror(err));
+        return cli_fail("%s:%s", r->file, src.error);
     }
     flush_parsers(r);
     return r->rc;
@@ -219,16 +230,53 @@ static int take_arg(replay *r, const cli_args *a, int id)
     }
 }
 
+int replay_capture(FILE *in, const char *name, int json, int pod, int summary)
+{
+    replay *r = calloc(1, sizeof(*r));
+    int rc;
+    if (r == NULL) {
+        fclose(in);
+        return cli_fail("%s: out of memory", name);
+    }
+    r->file = name;
+    r->style = json ? STYLE_JSON : STYLE_TABLE;
+    r->pod = (pod_reading)pod;
+    (void)xf_parser_init(&r->parser[XF_DIR_HOST], XF_DIR_HOST);
+    (void)xf_parser_init(&r->parser[XF_DIR_GCU], XF_DIR_GCU);
+    rc = read_capture(r, in);
+    if (rc == XFGCU_EXIT_OK && summary && !json) {
+        print_summary(r);
+    }
+    free(r);
+    return rc;
+}
+
+static int replay_file(replay *r)
+{
+    FILE *in = (strcmp(r->file, "-") == 0) ? stdin : fopen(r->file, "r");
+    int rc;
+    if (in == NULL) {
+        return cli_fail("replay: cannot open %s: %s", r->file, strerror(errno));
+    }
+    (void)xf_parser_init(&r->parser[XF_DIR_HOST], XF_DIR_HOST);
+    (void)xf_parser_init(&r->parser[XF_DIR_GCU], XF_DIR_GCU);
+    rc = read_capture(r, in); /* closes in */
+    if (rc == XFGCU_EXIT_OK && r->style != STYLE_JSON) {
+        print_summary(r);
+    }
+    return rc;
+}
+
 int cmd_replay(const cli_link *link, int argc, char **argv)
 {
     replay *r = calloc(1, sizeof(*r));
-    FILE *in;
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
     (void)link; /* offline */
     if (r == NULL) {
         return cli_fail("replay: out of memory");
     }
+    r->pod = POD_READ_AUTO;
     cli_args_init(&a, argc, argv, CLI_IN_ORDER, replay_options, "replay");
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         rc = take_arg(r, &a, id);
@@ -238,20 +286,7 @@ int cmd_replay(const cli_link *link, int argc, char **argv)
     } else if (rc == XFGCU_EXIT_OK && r->file == NULL) {
         rc = cli_fail("replay: missing FILE (a capture written by xfgcu record)");
     } else if (rc == XFGCU_EXIT_OK) {
-        in = (strcmp(r->file, "-") == 0) ? stdin : fopen(r->file, "r");
-        if (in == NULL) {
-            rc = cli_fail("replay: cannot open %s: %s", r->file, strerror(errno));
-        } else {
-            (void)xf_parser_init(&r->parser[XF_DIR_HOST], XF_DIR_HOST);
-            (void)xf_parser_init(&r->parser[XF_DIR_GCU], XF_DIR_GCU);
-            rc = read_capture(r, in);
-            if (rc == XFGCU_EXIT_OK && r->style != STYLE_JSON) {
-                print_summary(r);
-            }
-            if (in != stdin) {
-                fclose(in);
-            }
-        }
+        rc = replay_file(r);
     }
     free(r);
     return rc;

@@ -1,5 +1,5 @@
 /*
- * decode.c - `xfgcu decode [--json] [--pod-order le|be|auto] [HEX ...]`.
+ * decode.c - `xfgcu decode [--json] [--pod-order le|be|auto] [--file FILE] [HEX ...]`.
  *
  * With arguments: each is one whole packet; all are checked before any is
  * printed, and the first bad one fails the command with its fault.
@@ -10,12 +10,20 @@
  * frame when it ends and may find one late (after a false header), so
  * frames wait in a small queue sorted by where they start, and leave it
  * once no parser can return anything that starts earlier: the output is
- * in stream order.
+ * in stream order. A line may start with a time (a log: "12.345 A8 E5 ...",
+ * "[2026-11-26 10:00:00.123] A8 E5 ..."): each packet then carries the time
+ * of the line its last byte is on.
+ *
+ * A capture (the text format of record, or pcap) on stdin or in --file is
+ * decoded as replay decodes it (replay_capture()).
  */
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "capture.h"
+#include "capture_pcap.h"
 #include "cli.h"
 #include "hexin.h"
 #include "jsonpkt.h"
@@ -23,14 +31,19 @@
 
 void help_decode(FILE *out)
 {
-    fputs("usage: xfgcu decode [--json] [--pod-order le|be|auto] [HEX ...]\n\n"
+    fputs("usage: xfgcu decode [--json] [--pod-order le|be|auto] [--file FILE] [HEX ...]\n\n"
           "Decode packets of either direction (host A8 E5, GCU 8A 5E).\n"
           "Each HEX argument is one whole packet: hex digits, with spaces, colons, commas or 0x\n"
           "prefixes if you like (\"A8 E5 48 00 ...\", \"a8e54800...\", \"0xA8,0xE5,...\"). A bad\n"
           "packet (header, length, CRC, truncated) is an error that names the fault. Bytes given\n"
           "unquoted (decode A8 E5 48 00 ...) are read as one byte string of whole packets.\n"
           "Without HEX, stdin is read as hex text in any layout, one byte stream; every valid\n"
-          "packet in it is printed in stream order and everything else is skipped.\n\n"
+          "packet in it is printed in stream order and everything else is skipped. A line may\n"
+          "start with a time: 12.345, [12.345], 2026-11-26T10:00:00.123[Z] or\n"
+          "[2026-11-26 10:00:00.123]; each packet then shows the time of the line its last byte\n"
+          "is on (\"t\" in seconds, or \"time\", in --json). A capture (`xfgcu record`, pcap) is\n"
+          "decoded as `xfgcu replay` does.\n\n"
+          "  --file FILE  read FILE instead of stdin (hex text, a log, or a capture)\n"
           "  --json    one JSON object per packet and line: direction, version, length, order,\n"
           "            params (hex of bytes 70..S-3) and every field under its canonical name as\n"
           "            the raw wire integer; reserved_main / reserved_sub (hex) when not zero;\n"
@@ -51,6 +64,39 @@ typedef struct style {
     int json;
     pod_reading pod;
 } style;
+
+/* The time at the start of a log line. */
+typedef enum log_kind { LOG_NONE, LOG_SECONDS, LOG_DATE } log_kind;
+typedef struct log_time {
+    log_kind kind;
+    double seconds; /* LOG_SECONDS */
+    char text[40];  /* LOG_DATE: "2026-11-26T10:00:00.123" (Z when given) */
+} log_time;
+
+/* The JSON object with "t" or "time" in front. */
+static int print_json_at(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod, const log_time *at)
+{
+    json_t *pkt = jsonpkt_from_wire(buf, len, dir, pod);
+    json_t *obj = json_object();
+    char *text = NULL;
+    int ok = (pkt != NULL && obj != NULL);
+    if (ok && at->kind == LOG_SECONDS) {
+        ok = json_object_set_new(obj, "t", json_real(at->seconds)) == 0;
+    } else if (ok) {
+        ok = json_object_set_new(obj, "time", json_string(at->text)) == 0;
+    }
+    if (ok && json_object_update(obj, pkt) == 0) {
+        text = json_dumps(obj, JSON_COMPACT | JSON_REAL_PRECISION(12));
+    }
+    json_decref(pkt);
+    json_decref(obj);
+    if (text == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    printf("%s\n", text);
+    free(text);
+    return XFGCU_EXIT_OK;
+}
 
 static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, const style *how,
                         size_t index)
@@ -235,10 +281,10 @@ static int decode_arguments(int count, char **hex, const style *how)
 
 #define STREAM_CHUNK 64u /* bytes fed to the parsers at a time: bounds the queue */
 #define QUEUE_MAX    32u /* > frames that can wait: (ring 256 + chunk 64) / 72 per parser, two parsers */
-#define TEXT_CHUNK   4096u
 
 typedef struct found {
     size_t start; /* stream offset of the first byte */
+    log_time at;  /* the time of the line that completed it */
     size_t len;
     xf_direction dir;
     uint8_t bytes[XF_PACKET_MAX_LEN];
@@ -251,17 +297,29 @@ typedef struct stream {
     size_t queued;
     size_t printed;
     style how;
+    log_time now;     /* the time of the line being read */
+    const char *name; /* "stdin" or the file */
     int rc;
 } stream;
 
 static void emit(stream *s, const found *f)
 {
-    char where[48];
+    char where[128];
     if (s->rc != XFGCU_EXIT_OK) {
         return;
     }
-    snprintf(where, sizeof(where), "stdin offset %zu", f->start);
-    s->rc = print_packet(f->bytes, f->len, f->dir, where, &s->how, s->printed);
+    if (f->at.kind == LOG_SECONDS) {
+        snprintf(where, sizeof(where), "%.60s offset %zu, t %.3f s", s->name, f->start, f->at.seconds);
+    } else if (f->at.kind == LOG_DATE) {
+        snprintf(where, sizeof(where), "%.60s offset %zu, %s", s->name, f->start, f->at.text);
+    } else {
+        snprintf(where, sizeof(where), "%.60s offset %zu", s->name, f->start);
+    }
+    if (s->how.json && f->at.kind != LOG_NONE) {
+        s->rc = print_json_at(f->bytes, f->len, f->dir, s->how.pod, &f->at);
+    } else {
+        s->rc = print_packet(f->bytes, f->len, f->dir, where, &s->how, s->printed);
+    }
     s->printed++;
 }
 
@@ -289,6 +347,7 @@ static void enqueue(stream *s, size_t start, xf_direction dir, const xf_frame *f
     }
     memmove(s->queue + at + 1, s->queue + at, (s->queued - at) * sizeof(s->queue[0]));
     s->queue[at].start = start;
+    s->queue[at].at = s->now;
     s->queue[at].len = frame->len;
     s->queue[at].dir = dir;
     memcpy(s->queue[at].bytes, frame->data, frame->len);
@@ -343,30 +402,121 @@ static void finish(stream *s)
     flush(s, (size_t)-1);
 }
 
-static int hex_error(const hex_fault *fault)
+static int hex_error(const stream *s, const hex_fault *fault)
 {
     char why[96];
     hex_fault_text(fault, why, sizeof(why));
-    return cli_fail("decode: stdin, line %zu column %zu (offset %zu): %s", fault->line, fault->column, fault->offset,
-                    why);
+    return cli_fail("decode: %s, line %zu column %zu (offset %zu): %s", s->name, fault->line, fault->column,
+                    fault->offset, why);
 }
 
-/* Read hex text, convert, feed; stops at the first fault (*bad set, *fault filled). */
-static int read_stdin(stream *s, int *bad, hex_fault *fault)
+/* digits[.digits]: the length, 0 if none; *frac tells whether a point was there. */
+static size_t seconds_at(const char *p, double *sec, int *frac)
 {
-    char text[TEXT_CHUNK];
-    uint8_t bytes[TEXT_CHUNK / 2u + 1u];
+    size_t k = strspn(p, "0123456789"), f = 0;
+    char *end;
+    *frac = 0;
+    if (k == 0u || k > 12u) {
+        return 0;
+    }
+    if (p[k] == '.') {
+        f = strspn(p + k + 1, "0123456789");
+        if (f == 0u || f > 9u) {
+            return 0;
+        }
+        *frac = 1;
+        k += 1u + f;
+    }
+    *sec = strtod(p, &end);
+    return k;
+}
+
+/* YYYY-MM-DD, @p sep ('T', or ' ' too when bracketed), HH:MM:SS, then .digits and Z optionally. */
+static size_t date_at(const char *p, int bracketed, log_time *t)
+{
+    static const char shape[] = "dddd-dd-dd?dd:dd:dd";
+    size_t k, n;
+    for (k = 0; shape[k] != '\0'; k++) {
+        int ok = (shape[k] == 'd')   ? (p[k] >= '0' && p[k] <= '9')
+                 : (shape[k] == '?') ? (p[k] == 'T' || (bracketed && p[k] == ' '))
+                                     : (p[k] == shape[k]);
+        if (!ok) {
+            return 0;
+        }
+    }
+    if (p[k] == '.') {
+        n = strspn(p + k + 1, "0123456789");
+        if (n == 0u || n > 9u) {
+            return 0;
+        }
+        k += 1u + n;
+    }
+    k += (p[k] == 'Z');
+    snprintf(t->text, sizeof(t->text), "%.*s", (int)k, p);
+    t->text[10] = 'T';
+    t->kind = LOG_DATE;
+    return k;
+}
+
+/* The time a log line starts with (the formats of docs/cli.md, decode): the length of the prefix
+ * with the blanks after it, 0 when the line has none. A time has a '.', '-' or '[' in it, which no
+ * hex text has, so a line of hex is never taken for one. */
+static size_t time_prefix(const char *line, log_time *t)
+{
+    int bracketed = (line[0] == '['), frac = 0;
+    const char *p = line + bracketed;
+    size_t k = date_at(p, bracketed, t);
+    if (k == 0u && (k = seconds_at(p, &t->seconds, &frac)) > 0u) {
+        t->kind = LOG_SECONDS;
+        if (!frac && !bracketed) {
+            return 0; /* "12 A8 ...": plain digits are hex */
+        }
+    }
+    if (k == 0u || (bracketed && p[k] != ']')) {
+        return 0;
+    }
+    k += (size_t)(2 * bracketed); /* in line: after the token and its ']' */
+    if (line[k] != ' ' && line[k] != '\t' && line[k] != '\n' && line[k] != '\r' && line[k] != '\0') {
+        return 0;
+    }
+    return k + strspn(line + k, " \t");
+}
+
+/* Read hex text line by line, convert, feed; stops at the first fault (*bad set, *fault filled). */
+static int read_text(stream *s, FILE *in, int *bad, hex_fault *fault)
+{
+    char *line = NULL;
+    size_t cap = 0, out_cap = 0;
+    uint8_t *bytes = NULL;
+    ssize_t got;
     hex_reader reader;
-    size_t got;
     hex_reader_init(&reader);
     *bad = 0;
-    while (!*bad && s->rc == XFGCU_EXIT_OK && (got = fread(text, 1, sizeof(text), stdin)) > 0u) {
-        size_t n = 0;
-        *bad = hex_reader_feed(&reader, text, got, bytes, sizeof(bytes), &n, fault) != 0;
+    while (!*bad && s->rc == XFGCU_EXIT_OK && (got = getline(&line, &cap, in)) > 0) {
+        size_t n = 0, skip;
+        log_time t;
+        memset(&t, 0, sizeof(t));
+        if (out_cap < (size_t)got) {
+            free(bytes);
+            out_cap = (size_t)got;
+            bytes = malloc(out_cap);
+            if (bytes == NULL) {
+                free(line);
+                return cli_fail("decode: out of memory");
+            }
+        }
+        skip = time_prefix(line, &t);
+        if (skip > 0u) {
+            s->now = t;              /* lines without a time keep the last one */
+            memset(line, ' ', skip); /* the columns of later faults stay right */
+        }
+        *bad = hex_reader_feed(&reader, line, (size_t)got, bytes, out_cap, &n, fault) != 0;
         feed(s, bytes, n); /* the bytes before a fault are good */
     }
-    if (!*bad && ferror(stdin)) {
-        return cli_fail("decode: cannot read stdin: %s", strerror(errno));
+    free(line);
+    free(bytes);
+    if (!*bad && ferror(in)) {
+        return cli_fail("decode: cannot read %s: %s", s->name, strerror(errno));
     }
     if (!*bad) {
         *bad = hex_reader_finish(&reader, fault) != 0;
@@ -374,7 +524,7 @@ static int read_stdin(stream *s, int *bad, hex_fault *fault)
     return XFGCU_EXIT_OK;
 }
 
-static int decode_stdin(const style *how)
+static int decode_text(FILE *in, const char *name, const style *how)
 {
     stream *s = calloc(1, sizeof(*s));
     hex_fault fault;
@@ -383,29 +533,56 @@ static int decode_stdin(const style *how)
         return cli_fail("decode: out of memory");
     }
     s->how = *how;
+    s->name = name;
     (void)xf_parser_init(&s->parser[XF_DIR_HOST], XF_DIR_HOST);
     (void)xf_parser_init(&s->parser[XF_DIR_GCU], XF_DIR_GCU);
-    rc = read_stdin(s, &bad, &fault);
+    rc = read_text(s, in, &bad, &fault);
     if (rc == XFGCU_EXIT_OK) {
         finish(s); /* the packets before a hex fault are printed before it is reported */
         rc = s->rc;
     }
     if (rc == XFGCU_EXIT_OK && bad) {
-        rc = hex_error(&fault);
+        rc = hex_error(s, &fault);
     } else if (rc == XFGCU_EXIT_OK && s->printed == 0u) {
-        rc = cli_fail("decode: no valid packet in the %zu bytes read from stdin", s->fed);
+        rc = cli_fail("decode: no valid packet in the %zu bytes read from %s", s->fed, name);
     }
     free(s);
     return rc;
 }
 
+/* stdin or --file: a capture (by its first byte: '#' or a pcap magic), else hex text or a log.
+ * A pcapng file (its first byte is a newline) is recognised in a --file only: on stdin that
+ * byte starts hex text. */
+static int decode_input(const char *file, const style *how)
+{
+    FILE *in = (file != NULL) ? fopen(file, "r") : stdin;
+    const char *name = (file != NULL) ? file : "stdin";
+    int c, rc;
+    if (in == NULL) {
+        return cli_fail("decode: cannot open %s: %s", file, strerror(errno));
+    }
+    c = getc(in);
+    if (c != EOF) {
+        (void)ungetc(c, in);
+    }
+    if (c == '#' || (pcap_magic_byte(c) && (c != '\n' || file != NULL))) {
+        return replay_capture(in, name, how->json, (int)how->pod, 0); /* closes in */
+    }
+    rc = decode_text(in, name, how);
+    if (in != stdin) {
+        fclose(in);
+    }
+    return rc;
+}
+
 /* ---- the command ------------------------------------------------------------- */
 
-enum { O_JSON = 256, O_POD_ORDER, O_HELP };
+enum { O_JSON = 256, O_POD_ORDER, O_FILE, O_HELP };
 
 static const struct option decode_options[] = {
     {"json", no_argument, NULL, O_JSON},
     {"pod-order", required_argument, NULL, O_POD_ORDER},
+    {"file", required_argument, NULL, O_FILE},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
@@ -430,6 +607,7 @@ int cmd_decode(const cli_link *link, int argc, char **argv)
 {
     int id, help = 0, nhex = 0, rc = XFGCU_EXIT_OK;
     style how = {0, POD_READ_AUTO};
+    const char *file = NULL;
     char **hex = calloc((size_t)argc, sizeof(*hex));
     cli_args a;
     (void)link; /* offline */
@@ -441,6 +619,7 @@ int cmd_decode(const cli_link *link, int argc, char **argv)
         switch (id) {
         case O_JSON: how.json = 1; break;
         case O_POD_ORDER: rc = pod_order_option(&a, &how.pod); break;
+        case O_FILE: rc = cli_value_text(&a, "a file name", &file); break;
         case O_HELP: help = 1; break;
         case CLI_ARG: hex[nhex++] = a.argv[a.index]; break;
         default: rc = XFGCU_EXIT_USAGE; break; /* CLI_BAD: said */
@@ -449,7 +628,11 @@ int cmd_decode(const cli_link *link, int argc, char **argv)
     if (rc == XFGCU_EXIT_OK && help) {
         help_decode(stdout);
     } else if (rc == XFGCU_EXIT_OK) {
-        rc = (nhex > 0) ? decode_arguments(nhex, hex, &how) : decode_stdin(&how);
+        if (nhex > 0 && file != NULL) {
+            rc = cli_fail("decode: --file and HEX arguments exclude each other");
+        } else {
+            rc = (nhex > 0) ? decode_arguments(nhex, hex, &how) : decode_input(file, &how);
+        }
     }
     free(hex);
     return rc;
