@@ -213,9 +213,13 @@ static void test_other_link_options(void **state)
     assert_failure(&r, 2, "--timeout soon", NULL);
     tool_result_free(&r);
     /* valid link options are accepted (and ignored) by the offline commands */
-    r = run_tool(NULL, "--tcp", "192.168.144.108:2332", "--rate", "30", "--timeout", "500", "--gcu-port", "2337",
-                 "--local-port", "2338", "decode", APPENDIX1_HEX, NULL);
+    r = run_tool(NULL, "--udp", "192.168.144.108", "--rate", "30", "--timeout", "500", "--gcu-port", "2337",
+                 "--local-port", "2338", "--reorder", "50", "--trace", "decode", APPENDIX1_HEX, NULL);
     assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    /* ...but not options that contradict each other (issue 15: conflicting options are usage errors) */
+    r = run_tool(NULL, "--tcp", "192.168.144.108:2332", "--gcu-port", "2337", "decode", APPENDIX1_HEX, NULL);
+    assert_failure(&r, 2, "--gcu-port and the port of --tcp", NULL);
     tool_result_free(&r);
     r = run_tool(NULL, "--serial", "/dev/ttyUSB0", "--baud", "1000000", "encode", "null", NULL);
     assert_int_equal(r.status, 0);

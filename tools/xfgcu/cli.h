@@ -96,6 +96,14 @@ void cli_optional_next(cli_args *a);
 int cli_rest(const cli_args *a);
 /** The error for an argument (CLI_ARG) nobody takes: "CONTEXT: unexpected argument 'X' (see ...)". */
 int cli_unexpected(const cli_args *a);
+/** Takes one of the anywhere options: @p a holds it (opt, value), @p id is its `val`. @return an exit code. */
+typedef int (*cli_anywhere_fn)(const cli_args *a, int id);
+/**
+ * Options accepted after COMMAND too (the link options): from now on, a loop that meets a long
+ * option it does not know looks it up in @p opts and, if found, gives it to @p take instead of
+ * failing. A command's own option of the same name wins (send zoom-to --rate is the zoom's rate).
+ */
+void cli_set_anywhere(const struct option *opts, cli_anywhere_fn take);
 
 /* The value of the option cli_next() returned, checked. @p what says what it must be, in the
  * messages "[CONTEXT: ]--opt needs a value: WHAT" and "[CONTEXT: ]--opt TEXT: must be WHAT".
@@ -118,7 +126,13 @@ typedef struct cli_link {
     uint8_t protocol;   /**< --protocol, default 1 */
     long rate_hz;       /**< --rate, 1..200, default 50 */
     long timeout_ms;    /**< --timeout, default 1000 */
+    long reorder_ms;    /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
+    int trace;          /**< --trace: every packet on stderr, one line each */
+    int has_baud, has_gcu_port, has_local_port; /**< given: for options that only one kind of link takes */
 } cli_link;
+
+/** Options that contradict each other (two links, --baud with a network link...): the usage error, or OK. */
+int cli_check_link_options(const cli_link *l);
 
 /** A command's entry point: argv[0] is the command's name. Returns an exit code. */
 typedef int (*cli_run_fn)(const cli_link *link, int argc, char **argv);
@@ -133,6 +147,7 @@ int cmd_sim(const cli_link *link, int argc, char **argv);
 int cmd_demo(const cli_link *link, int argc, char **argv);
 int cmd_record(const cli_link *link, int argc, char **argv);
 int cmd_replay(const cli_link *link, int argc, char **argv);
+int cmd_probe(const cli_link *link, int argc, char **argv);
 void help_decode(FILE *out);
 void help_encode(FILE *out);
 void help_send(FILE *out);
@@ -143,6 +158,7 @@ void help_sim(FILE *out);
 void help_demo(FILE *out);
 void help_record(FILE *out);
 void help_replay(FILE *out);
+void help_probe(FILE *out);
 /** The link options, as `xfgcu --help` lists them (for the online commands' help). */
 void help_link_options(FILE *out);
 

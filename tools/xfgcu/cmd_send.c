@@ -1,12 +1,18 @@
 /*
  * cmd_send.c - `xfgcu [LINK] send COMMAND [ARGS]`.
  *
- * The command runs the protocol's way (the client does it): null packets,
- * the command in every packet until a reply carries its execution state,
- * then null packets again. The result goes to stdout as one line ("ok",
- * "failed cameras 0x02", "failed", "timeout", "link lost"), preceded by
- * "operating" lines while a calibration runs; a failure also prints its
- * one line on stderr. Exit 0 ok, 1 failed, 3 timeout or link lost.
+ * The command runs the protocol's way (the client does it): null packets
+ * until one's reply is back, the command in every packet until a reply
+ * carries its execution state. The result goes to stdout as one line ("ok",
+ * "failed cameras 0x02", "failed", "timeout", "link lost"), or with --json
+ * as one object, preceded by "operating" lines while a calibration runs; a
+ * failure also prints its one line on stderr. Exit 0 ok, 1 failed, 3
+ * timeout or link lost.
+ *
+ * It returns as soon as the result is known: the null that separates this
+ * command from the next one of the same order is the next client's first
+ * packet (every client starts with nulls). With --reorder it first waits
+ * that long, so that nothing sent later can overtake its last packet.
  */
 #include <string.h>
 
@@ -14,21 +20,21 @@
 #include "cmdargs.h"
 #include "online.h"
 
-#define NULLS_AFTER 3u /* null packets sent after the result, before closing */
-
 void help_send(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol 1|2] [--force]\n"
+    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol 1|2] [--force] [--json]\n"
           "       xfgcu send COMMAND --help\n\n"
-          "Run one command on the GCU the way the protocol wants: null packets, then the command in\n"
-          "every packet until a reply carries its execution state, then null packets again.\n"
+          "Run one command on the GCU the way the protocol wants: null packets until the reply to one\n"
+          "is back, then the command in every packet until a reply carries its execution state.\n"
           "Prints the result on stdout:\n"
           "  ok                       the GCU executed it (exit 0)\n"
           "  failed cameras 0x02      it failed on the cameras of the mask (orders that report one; exit 1)\n"
           "  failed                   it failed (exit 1)\n"
           "  operating                calibration in progress (then the final state)\n"
           "  timeout                  no execution state within --timeout ms (exit 3)\n"
-          "  link lost                the link went down before the answer (exit 3)\n\n"
+          "  link lost                the link went down before the answer (exit 3)\n"
+          "With --json: one object per line instead, {\"status\": \"ok\", \"order\": 32, ...} with\n"
+          "time_mono and time_utc (docs/cli.md lists the keys).\n\n"
           "An order that the model the GCU reports does not have (by the vendor's V2.0.6 support list)\n"
           "is not sent: one line on stderr says so (exit 1); --force sends it all the same.\n\n"
           "commands (the same names and arguments as `xfgcu encode`):\n",
@@ -41,8 +47,14 @@ void help_send(FILE *out)
 
 static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_ms)
 {
-    (void)user;
-    (void)r;
+    if (*(const int *)user) {
+        json_t *o = online_result_json(r);
+        if (o != NULL) {
+            json_object_set_new(o, "operating_ms", json_integer((json_int_t)operating_ms));
+        }
+        (void)cli_json_line(o);
+        return;
+    }
     if (operating_ms == 0u) {
         printf("operating\n");
     } else {
@@ -51,22 +63,32 @@ static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_
     fflush(stdout);
 }
 
-static int run_send(const cli_link *link, const xf_command *cmd, const char *name, int force)
+static int run_send(const cli_link *link, const xf_command *cmd, const char *name, int flags)
 {
     online *o = online_new();
     xf_cmd_result r;
     char text[64], what[64];
+    int json = (flags & CMDARGS_JSON) != 0;
     int rc = (o != NULL) ? online_open(o, link, "send", NULL) : XFGCU_EXIT_USAGE;
     if (rc == XFGCU_EXIT_OK) {
-        o->submit_flags = force ? XF_SUBMIT_ANY_MODEL : 0u;
-        rc = online_run(o, cmd, &r, on_operating, NULL);
+        o->submit_flags = (flags & CMDARGS_FORCE) ? XF_SUBMIT_ANY_MODEL : 0u;
+        rc = online_run(o, cmd, &r, on_operating, &json);
     }
     if (rc == XFGCU_EXIT_OK) {
-        online_result_text(&r, text, sizeof(text));
-        printf("%s\n", text);
-        fflush(stdout);
-        if (r.status != XF_CMD_LINK_LOST) {
-            online_linger(o, NULLS_AFTER);
+        if (json) {
+            json_t *obj = online_result_json(&r);
+            if (obj != NULL) {
+                json_object_set_new(obj, "command", json_string(name));
+                json_object_set_new(obj, "link", json_string(o->desc));
+            }
+            (void)cli_json_line(obj);
+        } else {
+            online_result_text(&r, text, sizeof(text));
+            printf("%s\n", text);
+            fflush(stdout);
+        }
+        if (r.status != XF_CMD_LINK_LOST && link->reorder_ms > 0) {
+            online_linger_ms(o, (uint32_t)link->reorder_ms); /* our last packet lands before anyone's next */
         }
         snprintf(what, sizeof(what), "send %s", name);
         rc = online_result_exit(o, what, &r);
@@ -78,11 +100,12 @@ static int run_send(const cli_link *link, const xf_command *cmd, const char *nam
 int cmd_send(const cli_link *link, int argc, char **argv)
 {
     cmd_line l;
-    cli_link with_version = *link;
+    cli_link with_version;
     int rc = cmd_line_parse(&l, "send", link->protocol, 0, help_send, argc, argv);
     if (rc != XFGCU_EXIT_OK || l.help) {
         return rc;
     }
+    with_version = *link; /* after the line: link options may follow COMMAND */
     if (l.spec == NULL) {
         return cli_fail("send: which command? (see 'xfgcu send --help')");
     }

@@ -45,6 +45,9 @@ void help_sim(FILE *out)
           "                        failed), 0x20=1; repeatable\n"
           "  --drop PERMILLE       drop this share of replies at random, 0..1000\n"
           "  --delay MS            hold each reply MS ms, 0..10000\n"
+          "  --jitter MS           hold each packet, both ways, a random 0..MS ms more, 0..10000: they\n"
+          "                        overtake one another, as on a network that reorders\n"
+          "  --dup PERMILLE        this share of packets, both ways, arrive twice, 0..1000\n"
           "  --calibration-ms MS   how long calibration answers \"operating\", 0..600000 (default 1500)\n"
           "  --duration S          stop by itself after S seconds\n"
           "  --verbose             print each order it executes\n\n"
@@ -63,7 +66,7 @@ typedef struct sim_args {
     long model;
     int has_model;
     uint8_t fail[256];
-    long drop, delay, calibration_ms;
+    long drop, delay, jitter, dup, calibration_ms;
     int has_baud, has_drop, has_delay, has_calibration;
     double duration;
     int has_duration, verbose, help;
@@ -83,6 +86,8 @@ enum {
     O_FAIL,
     O_DROP,
     O_DELAY,
+    O_JITTER,
+    O_DUP,
     O_CALIBRATION,
     O_DURATION,
     O_VERBOSE,
@@ -103,6 +108,8 @@ static const struct option sim_options[] = {
     {"fail", required_argument, NULL, O_FAIL},
     {"drop", required_argument, NULL, O_DROP},
     {"delay", required_argument, NULL, O_DELAY},
+    {"jitter", required_argument, NULL, O_JITTER},
+    {"dup", required_argument, NULL, O_DUP},
     {"calibration-ms", required_argument, NULL, O_CALIBRATION},
     {"duration", required_argument, NULL, O_DURATION},
     {"verbose", no_argument, NULL, O_VERBOSE},
@@ -167,6 +174,8 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_FAIL: return take_fail(s, a->value);
     case O_DROP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->drop, &s->has_drop);
     case O_DELAY: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->delay, &s->has_delay);
+    case O_JITTER: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->jitter, NULL);
+    case O_DUP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->dup, NULL);
     case O_CALIBRATION:
         return cli_value_long(a, 0, 600000, "milliseconds, 0..600000", &s->calibration_ms, &s->has_calibration);
     case O_DURATION:
@@ -308,6 +317,8 @@ static int start_sim(sim_run *s, const sim_args *a)
     }
     s->sim.fault.drop_permille = (uint16_t)a->drop;
     s->sim.fault.delay_ms = (uint32_t)a->delay;
+    s->sim.fault.jitter_ms = (uint16_t)a->jitter;
+    s->sim.fault.dup_permille = (uint16_t)a->dup;
     return XFGCU_EXIT_OK;
 }
 

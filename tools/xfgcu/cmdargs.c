@@ -130,6 +130,42 @@ static int bad_option(const cli_args *a, const char *text, const struct option *
     return CLI_BAD;
 }
 
+/* The options taken anywhere on the line (main.c's link options), when a command has no option
+ * of that name: cli_set_anywhere(). */
+static const struct option *anywhere_opts;
+static cli_anywhere_fn anywhere_take;
+
+void cli_set_anywhere(const struct option *opts, cli_anywhere_fn take)
+{
+    anywhere_opts = opts;
+    anywhere_take = take;
+}
+
+/* argv[a->index] is not an option of this loop: one of the anywhere options? Then take it (its
+ * value "--name=V" or the next argument) and return 1, or CLI_BAD when its value is bad. */
+static int taken_anywhere(cli_args *a, const char *text)
+{
+    const struct option *o = (anywhere_opts != NULL) ? long_option(anywhere_opts, text) : NULL;
+    const char *eq = strchr(text, '=');
+    cli_args g;
+    if (o == NULL || anywhere_take == NULL) {
+        return 0;
+    }
+    g = *a;
+    g.opt = o;
+    g.value = (eq != NULL) ? eq + 1 : NULL;
+    if (o->has_arg == no_argument && eq != NULL) {
+        return bad_option(a, text, o);
+    }
+    if (o->has_arg == required_argument && eq == NULL && optind < a->argc) {
+        g.value = a->argv[optind++];
+    }
+    if (a->quiet) {
+        return 1; /* a pass that only looks: skip it, value and all */
+    }
+    return (anywhere_take(&g, o->val) == XFGCU_EXIT_OK) ? 1 : CLI_BAD;
+}
+
 /* getopt_long() returned @p id for argv[a->index]: the option, if its whole name was given. */
 static int checked_option(cli_args *a, int id)
 {
@@ -163,8 +199,16 @@ int cli_next(cli_args *a)
         a->index = (optind > 0) ? optind : 1; /* no permutation: getopt reads argv[optind] */
         id = getopt_long(a->argc, a->argv, a->optstring, a->opts, NULL);
         if (id != -1) {
+            const char *text = a->argv[a->index];
+            int took;
             a->value = optarg;
-            return (id == CLI_ARG) ? CLI_ARG : checked_option(a, id);
+            if (id == CLI_ARG) {
+                return CLI_ARG;
+            }
+            if (id == '?' && long_option(a->opts, text) == NULL && (took = taken_anywhere(a, text)) != 0) {
+                return (took == CLI_BAD) ? CLI_BAD : cli_next(a); /* taken: on to the next */
+            }
+            return checked_option(a, id);
         }
         a->tail = optind; /* CLI_STOP: COMMAND; CLI_IN_ORDER: what follows "--" */
     }
@@ -752,6 +796,7 @@ static int take_cameras(parse_state *st, const char *text)
 #define ID_HELP     'h'
 #define ID_JSON     'j'
 #define ID_FORCE    'f'
+#define ID_JSON_OUT 'J' /* send's --json: the result as a JSON object */
 
 static int take_option(parse_state *st, const cli_args *a, int id)
 {
@@ -862,14 +907,15 @@ static int check_with_codec(const parse_state *st, uint8_t version)
 
 /* The command's options for getopt_long(), with --cameras where the order takes a mask,
  * --protocol and --help when @p line (encode and send take them after COMMAND too), and
- * --force when @p force (send's). */
+ * --force and --json when @p force (send's). */
 static void command_options(const cmd_spec *spec, int line, int force, struct option *opts)
 {
     static const struct option extra[] = {{"cameras", required_argument, NULL, ID_CAMERAS},
                                           {"protocol", required_argument, NULL, ID_PROTOCOL},
                                           {"help", no_argument, NULL, ID_HELP},
                                           {NULL, 0, NULL, 0},
-                                          {"force", no_argument, NULL, ID_FORCE}};
+                                          {"force", no_argument, NULL, ID_FORCE},
+                                          {"json", no_argument, NULL, ID_JSON_OUT}};
     size_t i, n = 0;
     for (i = 0; i < spec->extra->nopts; i++) {
         const opt_spec *o = &spec->extra->opts[i];
@@ -886,6 +932,7 @@ static void command_options(const cmd_spec *spec, int line, int force, struct op
     }
     if (force) {
         opts[n++] = extra[4];
+        opts[n++] = extra[5];
     }
     opts[n] = extra[3];
 }
@@ -905,7 +952,9 @@ static int take_line_options(const parse_state *st, int argc, char **argv, const
         } else if (id == ID_HELP) {
             *help = 1;
         } else if (id == ID_FORCE && force != NULL) { /* only offered with a place for it */
-            *force = 1;
+            *force |= CMDARGS_FORCE;
+        } else if (id == ID_JSON_OUT && force != NULL) {
+            *force |= CMDARGS_JSON;
         }
     }
     return rc;
@@ -914,7 +963,7 @@ static int take_line_options(const parse_state *st, int argc, char **argv, const
 int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
                   xf_command *cmd)
 {
-    struct option opts[MAX_OPTS + 5];
+    struct option opts[MAX_OPTS + 6];
     parse_state st;
     cli_args a;
     char hint[64];
@@ -998,8 +1047,9 @@ int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json,
                                          {"help", no_argument, NULL, ID_HELP},
                                          {"json", required_argument, NULL, ID_JSON},
                                          {NULL, 0, NULL, 0},
-                                         {"force", no_argument, NULL, ID_FORCE}};
-    struct option with_force[4] = {opts[0], opts[1], opts[4], opts[3]}; /* send: --force, no --json */
+                                         {"force", no_argument, NULL, ID_FORCE},
+                                         {"json", no_argument, NULL, ID_JSON_OUT}};
+    struct option with_force[5] = {opts[0], opts[1], opts[4], opts[5], opts[3]}; /* send: --force, --json */
     cli_args a;
     int id, rest, rc = XFGCU_EXIT_OK;
     memset(l, 0, sizeof(*l));
@@ -1011,7 +1061,8 @@ int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json,
         case CLI_BAD: rc = XFGCU_EXIT_USAGE; break;
         case ID_PROTOCOL: rc = cli_value_protocol(&a, &l->version); break;
         case ID_HELP: l->help = 1; break;
-        case ID_FORCE: l->force = 1; break;
+        case ID_FORCE: l->force |= CMDARGS_FORCE; break;
+        case ID_JSON_OUT: l->force |= CMDARGS_JSON; break;
         default: rc = take_json(&a, &l->json); break;
         }
     }

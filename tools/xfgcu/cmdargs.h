@@ -21,13 +21,17 @@ const cmd_spec *cmdargs_find(const char *name);
 /** The command's name as typed on the command line. */
 const char *cmdargs_name(const cmd_spec *spec);
 
+#define CMDARGS_FORCE 1 /**< send's --force */
+#define CMDARGS_JSON  2 /**< send's --json */
+
 /**
  * Parse the arguments of a named command (argv[0] is its name) into @p cmd
  * and check them for protocol *@p version. @p who prefixes messages
  * ("encode"). With @p help (encode, send), --protocol (into *@p version) and
  * --help are taken too, wherever they are; when --help is there, *@p help is
- * set and nothing else is parsed. With @p force (send), --force sets
- * *@p force. Prints any error. @return an exit code.
+ * set and nothing else is parsed. With @p force (send), --force and --json
+ * set CMDARGS_FORCE and CMDARGS_JSON in *@p force. Prints any error.
+ * @return an exit code.
  */
 int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
                   xf_command *cmd);
@@ -50,7 +54,8 @@ typedef struct cmd_line {
     int help;             /* --help given (the command's arguments are then not parsed) */
     const char *json;     /* encode's --json OBJECT, or NULL */
     int with_force;       /* send: --force is one of its options */
-    int force;            /* send's --force: an order the GCU's model lacks goes all the same */
+    int force;            /* send's CMDARGS_FORCE (--force: an order the GCU's model lacks goes all the same)
+                             and CMDARGS_JSON (--json: the result as one JSON object) */
     const cmd_spec *spec; /* COMMAND, or NULL */
     xf_command cmd;       /* its arguments, parsed (unless help) */
 } cmd_line;

@@ -1,12 +1,13 @@
 /*
  * main.c - xfgcu: link options, the table of commands, help and version.
  *
- *     xfgcu [LINK OPTIONS] COMMAND [ARGS...]
- *     xfgcu --help | --version | COMMAND --help
+ *     xfgcu [LINK OPTIONS] COMMAND [ARGS...] [LINK OPTIONS]
+ *     xfgcu --help | -h | --version | help [COMMAND] | COMMAND --help
  *
- * Link options are parsed and validated here, before COMMAND, for every
- * command (cli.md); the offline commands ignore them, the online ones
- * open the link they name (online.c).
+ * Link options are parsed here, before COMMAND, and after it by the
+ * command's own loop (cli_set_anywhere()); they are checked together once
+ * the command has parsed its line. The offline commands ignore them, the
+ * online ones open the link they name (online.c).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -79,6 +80,7 @@ static const command_entry commands[] = {
     {"record", "FILE [--duration S] [--count N] [COMMAND [ARGS]]", "capture both directions with timestamps",
      cmd_record, help_record},
     {"replay", "FILE [--json] [--brief]", "decode a capture", cmd_replay, help_replay},
+    {"probe", "[--move] [--json]", "what the gimbal is and answers, safely", cmd_probe, help_probe},
 };
 
 #define N_COMMANDS (sizeof(commands) / sizeof(commands[0]))
@@ -98,7 +100,7 @@ static void print_help(FILE *out)
 {
     size_t i;
     fputs("usage: xfgcu [LINK OPTIONS] COMMAND [ARGS...]\n"
-          "       xfgcu --help | --version | COMMAND --help\n\n"
+          "       xfgcu --help | -h | --version | help [COMMAND] | COMMAND --help\n\n"
           "Talk to, decode and build packets of XFRobot gimbals (GCU private protocol V0.1 and V0.2).\n\n"
           "commands:\n",
           out);
@@ -116,7 +118,8 @@ static void print_help(FILE *out)
 
 void help_link_options(FILE *out)
 {
-    fputs("link options (before COMMAND; exactly one of --serial, --udp, --tcp for the online commands):\n"
+    fputs("link options (before or after COMMAND; exactly one of --serial, --udp, --tcp for the online\n"
+          "commands; a command's own option of the same name wins, as zoom-to's --rate):\n"
           "  --serial PATH         serial device, e.g. /dev/ttyUSB0\n"
           "  --baud N              115200 (default), 250000, 500000 or 1000000\n"
           "  --udp HOST            the GCU's address for UDP\n"
@@ -126,6 +129,9 @@ void help_link_options(FILE *out)
           "  --protocol 1|2        version byte sent (1)\n"
           "  --rate HZ             packets per second, 1..200 (50; the vendor recommends 30..50)\n"
           "  --timeout MS          how long to wait for the first reply and for a command's feedback (1000)\n"
+          "  --reorder MS          the longest the network can delay one packet behind a later one (0:\n"
+          "                        it keeps order, as serial, TCP and a wired LAN do); 0..1000\n"
+          "  --trace               print every packet sent and received on stderr, one line each\n"
           "\nexit status: 0 success, 1 the GCU answered with failure, 2 usage error or bad input,\n"
           "3 link error or timeout.\n",
           out);
@@ -144,7 +150,9 @@ enum {
     O_LOCAL_PORT,
     O_PROTOCOL,
     O_RATE,
-    O_TIMEOUT
+    O_TIMEOUT,
+    O_REORDER,
+    O_TRACE
 };
 
 static const struct option link_options[] = {
@@ -159,8 +167,12 @@ static const struct option link_options[] = {
     {"protocol", required_argument, NULL, O_PROTOCOL},
     {"rate", required_argument, NULL, O_RATE},
     {"timeout", required_argument, NULL, O_TIMEOUT},
+    {"reorder", required_argument, NULL, O_REORDER},
+    {"trace", no_argument, NULL, O_TRACE},
     {NULL, 0, NULL, 0},
 };
+
+static cli_link the_link; /* the options' values: main's, and the commands' (after COMMAND) */
 
 /* --udp HOST, --tcp HOST[:PORT] (read as the library reads the spec "tcp:HOST[:PORT]") */
 static int take_host(const cli_args *a, int port_allowed, const char **host)
@@ -179,15 +191,26 @@ static int take_link_option(cli_link *l, const cli_args *a, int id)
 {
     switch (id) {
     case O_SERIAL: return cli_value_text(a, "a device path", &l->serial);
-    case O_BAUD: return cli_value_baud(a, &l->baud, NULL);
+    case O_BAUD: l->has_baud = 1; return cli_value_baud(a, &l->baud, NULL);
     case O_UDP: return take_host(a, 0, &l->udp);
     case O_TCP: return take_host(a, 1, &l->tcp);
-    case O_GCU_PORT: return cli_value_long(a, 1, 65535, "a port 1..65535", &l->gcu_port, NULL);
-    case O_LOCAL_PORT: return cli_value_long(a, 0, 65535, "a port 0..65535 (0: any free port)", &l->local_port, NULL);
+    case O_GCU_PORT: l->has_gcu_port = 1; return cli_value_long(a, 1, 65535, "a port 1..65535", &l->gcu_port, NULL);
+    case O_LOCAL_PORT:
+        l->has_local_port = 1;
+        return cli_value_long(a, 0, 65535, "a port 0..65535 (0: any free port)", &l->local_port, NULL);
     case O_PROTOCOL: return cli_value_protocol(a, &l->protocol);
     case O_RATE: return cli_value_long(a, 1, 200, "packets per second, 1..200", &l->rate_hz, NULL);
+    case O_REORDER: return cli_value_long(a, 0, 1000, "milliseconds, 0..1000", &l->reorder_ms, NULL);
+    case O_TRACE: l->trace = 1; return XFGCU_EXIT_OK;
     default: return cli_value_long(a, 1, 3600000L, "milliseconds, 1..3600000", &l->timeout_ms, NULL);
     }
+}
+
+/* A link option met after COMMAND (cli_set_anywhere()). */
+static int take_anywhere(const cli_args *a, int id)
+{
+    int rc = take_link_option(&the_link, a, id);
+    return (rc == XFGCU_EXIT_OK) ? cli_check_link_options(&the_link) : rc;
 }
 
 static void link_defaults(cli_link *l)
@@ -200,10 +223,27 @@ static void link_defaults(cli_link *l)
     l->timeout_ms = 1000L;
 }
 
-static int check_one_link(const cli_link *l)
+/* Options that contradict each other, or name what the link has not, are usage errors. */
+int cli_check_link_options(const cli_link *l)
 {
     int n = (l->serial != NULL) + (l->udp != NULL) + (l->tcp != NULL);
-    return (n > 1) ? cli_fail("give only one of --serial, --udp, --tcp") : XFGCU_EXIT_OK;
+    if (n > 1) {
+        return cli_fail("give only one of --serial, --udp, --tcp");
+    }
+    if (l->has_baud && (l->udp != NULL || l->tcp != NULL)) {
+        return cli_fail("--baud is for --serial, not --%s", l->udp != NULL ? "udp" : "tcp");
+    }
+    if ((l->has_gcu_port || l->has_local_port) && l->serial != NULL) {
+        return cli_fail("--%s is for --udp or --tcp, not --serial", l->has_gcu_port ? "gcu-port" : "local-port");
+    }
+    if (l->has_local_port && l->tcp != NULL) {
+        return cli_fail("--local-port is for --udp, not --tcp");
+    }
+    if (l->has_gcu_port && l->tcp != NULL && strrchr(l->tcp, ':') != NULL && strchr(l->tcp, ']') == NULL &&
+        strchr(l->tcp, ':') == strrchr(l->tcp, ':')) {
+        return cli_fail("--gcu-port and the port of --tcp %s: give the port once", l->tcp);
+    }
+    return XFGCU_EXIT_OK;
 }
 
 /* ---- dispatch ------------------------------------------------------------- */
@@ -220,13 +260,36 @@ static int unknown_command(const char *name)
     return cli_fail("unknown command '%s' (try 'xfgcu --help')", name);
 }
 
+/* xfgcu help [COMMAND] */
+static int help_command(int argc, char **argv)
+{
+    const command_entry *c;
+    if (argc < 2) {
+        print_help(stdout);
+        return XFGCU_EXIT_OK;
+    }
+    if (argc > 2) {
+        return cli_fail_in("help", "unexpected argument '%s' (try 'xfgcu help COMMAND')", argv[2]);
+    }
+    c = find_command(argv[1]);
+    if (c == NULL) {
+        return unknown_command(argv[1]);
+    }
+    c->help(stdout);
+    return XFGCU_EXIT_OK;
+}
+
 static int dispatch(const cli_link *link, int argc, char **argv)
 {
-    const command_entry *c = find_command(argv[0]);
+    const command_entry *c;
+    if (strcmp(argv[0], "help") == 0) {
+        return help_command(argc, argv);
+    }
+    c = find_command(argv[0]);
     if (c == NULL) {
         return unknown_command(argv[0]);
     }
-    if (argc > 1 && strcmp(argv[1], "--help") == 0) {
+    if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         c->help(stdout);
         return XFGCU_EXIT_OK;
     }
@@ -235,10 +298,10 @@ static int dispatch(const cli_link *link, int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    cli_link link;
+    cli_link *link = &the_link;
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
-    link_defaults(&link);
+    link_defaults(link);
     cli_args_init(&a, argc, argv, CLI_STOP "h", link_options, NULL);
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         if (id == CLI_BAD) {
@@ -252,16 +315,18 @@ int main(int argc, char **argv)
             printf("xfgcu %s\n", XF_VERSION_STRING);
             return XFGCU_EXIT_OK;
         }
-        rc = take_link_option(&link, &a, id);
+        rc = take_link_option(link, &a, id);
     }
     if (rc == XFGCU_EXIT_OK && cli_rest(&a) == argc) {
         rc = cli_fail("no command given (try 'xfgcu --help')");
     }
     if (rc == XFGCU_EXIT_OK) {
-        rc = check_one_link(&link);
+        rc = cli_check_link_options(link);
     }
     if (rc == XFGCU_EXIT_OK) {
-        rc = dispatch(&link, argc - cli_rest(&a), argv + cli_rest(&a));
+        /* the commands' loops take them too; --help and --version (the first two) are their own */
+        cli_set_anywhere(link_options + 2, take_anywhere);
+        rc = dispatch(link, argc - cli_rest(&a), argv + cli_rest(&a));
     }
     /* output that did not reach its file is a failure, not a success */
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -10,6 +10,7 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 /* ---- signals ------------------------------------------------------------------ */
 
@@ -92,10 +93,28 @@ online *online_new(void)
     return o;
 }
 
+static void settle(online *o)
+{
+    uint32_t start = xf_posix_now_ms();
+    uint32_t limit = 2u * (uint32_t)o->opt->timeout_ms + (uint32_t)o->opt->reorder_ms;
+    while (!xf_client_settled(&o->client) && xf_client_link(&o->client) != XF_LINK_DOWN &&
+           xf_ms_since(xf_posix_now_ms(), start) < limit) {
+        online_poll(o, 10);
+    }
+    if (!xf_client_settled(&o->client) && xf_client_link(&o->client) != XF_LINK_DOWN) {
+        cli_note("replies to the last command may still be on the link (%s): a command of the same order run "
+                 "right after this one could take one for its own",
+                 o->desc);
+    }
+}
+
 void online_free(online *o)
 {
     if (o == NULL) {
         return;
+    }
+    if (o->client_on) {
+        settle(o);
     }
     xf_link_close(&o->link);
     free(o);
@@ -158,6 +177,87 @@ static uint32_t tap_clock(void *user)
     return xf_posix_now_ms();
 }
 
+/* --trace: one line per packet on stderr, "trace SECONDS > order ..." (sent) or "<" (received). */
+static void trace_packet(const online *o, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
+{
+    uint8_t order = data[XF_OFF_ORDER];
+    const char *name = xf_order_name(order);
+    char extra[160] = "";
+    if (dir == XF_DIR_GCU) {
+        xf_gcu_packet g;
+        xf_feedback fb;
+        if (xf_gcu_unpack(data, len, &g) == XF_OK) {
+            int n = snprintf(extra, sizeof(extra), ", mode 0x%02X, roll %.2f pitch %.2f yaw %.2f deg",
+                             g.main.gimbal_mode, (double)xf_cdeg(g.main.cam_roll), (double)xf_cdeg(g.main.cam_pitch),
+                             (double)xf_cdeg(g.main.cam_yaw));
+            if (n > 0 && xf_feedback_decode(order, g.params, g.params_len, &fb) == XF_OK && fb.has_state) {
+                snprintf(extra + n, sizeof(extra) - (size_t)n, ", state 0x%02X", fb.state);
+            }
+        }
+    } else if (data[XF_OFF_HOST_STATUS] & XF_STATUS_CTRL_VALID) {
+        snprintf(extra, sizeof(extra), ", control valid");
+    }
+    fprintf(stderr, "trace %.3f %s %s (0x%02X), %u bytes%s\n", cli_seconds(xf_ms_since(now_ms, o->t0_ms)),
+            dir == XF_DIR_HOST ? ">" : "<", name != NULL ? name : "unknown", order, (unsigned)len, extra);
+}
+
+static void online_on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
+{
+    online *o = (online *)user;
+    if (o->opt->trace) {
+        trace_packet(o, dir, data, len, now_ms);
+    }
+    if (o->hooks.on_bytes != NULL) {
+        o->hooks.on_bytes(o->hooks.user, dir, data, len, now_ms);
+    }
+}
+
+static void online_on_link(void *user, xf_link_state state)
+{
+    online *o = (online *)user;
+    if (o->opt->trace) {
+        fprintf(stderr, "trace %.3f link %s\n", cli_seconds(xf_ms_since(xf_posix_now_ms(), o->t0_ms)),
+                xf_link_state_name(state));
+    }
+    if (o->hooks.on_link != NULL) {
+        o->hooks.on_link(o->hooks.user, state);
+    }
+}
+
+/* The lowest --rate whose packet period, plus twice --reorder, is under the 250 ms after which
+ * the link reads stale (0 if none). */
+static long lowest_rate(long reorder_ms)
+{
+    long r;
+    for (r = 1; r <= 200; r++) {
+        if ((1000L + r / 2) / r + 2 * reorder_ms < 250L) {
+            return r;
+        }
+    }
+    return 0;
+}
+
+/* --rate, --timeout and --reorder that cannot work together are usage errors, said in their terms. */
+static int check_timing(const cli_link *l, const xf_client_config *cc)
+{
+    long period = (1000L + l->rate_hz / 2) / l->rate_hz, low = lowest_rate(l->reorder_ms);
+    if (period + 2 * l->reorder_ms >= (long)cc->stale_ms) {
+        if (low == 0) {
+            return cli_fail("--reorder %ld: too long; silence of twice that around each command would read as a "
+                            "stale link (%u ms)", l->reorder_ms, (unsigned)cc->stale_ms);
+        }
+        return cli_fail("--rate %ld: a packet every %ld ms%s, but the link reads stale after %u ms without a reply: "
+                        "give --rate %ld or more", l->rate_hz, period, l->reorder_ms > 0 ? " and twice --reorder" : "",
+                        (unsigned)cc->stale_ms, low);
+    }
+    if (l->timeout_ms < 2 * period + 2 * l->reorder_ms) {
+        return cli_fail("--timeout %ld: shorter than a round trip at --rate %ld (two packets, %ld ms%s): give "
+                        "--timeout %ld or more", l->timeout_ms, l->rate_hz, 2 * period,
+                        l->reorder_ms > 0 ? ", plus twice --reorder" : "", 2 * period + 2 * l->reorder_ms);
+    }
+    return XFGCU_EXIT_OK;
+}
+
 static int start_client(online *o, const online_hooks *hooks)
 {
     xf_client_config cc;
@@ -166,20 +266,27 @@ static int start_client(online *o, const online_hooks *hooks)
     cc.protocol_version = o->opt->protocol;
     cc.rate_hz = (uint16_t)o->opt->rate_hz;
     cc.command_timeout_ms = (uint32_t)o->opt->timeout_ms;
-    if (hooks != NULL) {
-        cc.on_bytes = hooks->on_bytes;
-        cc.on_link = hooks->on_link;
-        cc.user = hooks->user;
+    cc.reorder_ms = (uint16_t)o->opt->reorder_ms;
+    if (check_timing(o->opt, &cc) != XFGCU_EXIT_OK) {
+        return XFGCU_EXIT_USAGE;
     }
+    if (hooks != NULL) {
+        o->hooks = *hooks;
+    }
+    cc.on_bytes = online_on_bytes; /* --trace, then the command's */
+    cc.on_link = online_on_link;
+    cc.user = o;
     o->hal = o->raw;
     if (hooks != NULL && hooks->tap != NULL) {
         xf_tap_init(&o->tap, &o->raw, hooks->tap, tap_clock, hooks->user, &o->hal);
     }
     err = xf_client_init(&o->client, &o->hal, &cc);
+    o->client_on = (err == XF_OK || err == XF_WARN_RATE);
     if (err == XF_WARN_RATE) {
         cli_note("--rate %ld: outside the 30-50 packets per second the vendor recommends; going on", o->opt->rate_hz);
     } else if (err != XF_OK) {
-        return cli_fail("%s: cannot start the client: %s", o->context, xf_strerror(err));
+        const char *why = xf_client_config_problem(&cc);
+        return cli_fail("%s: cannot start the client: %s", o->context, why != NULL ? why : xf_strerror(err));
     }
     return XFGCU_EXIT_OK;
 }
@@ -217,6 +324,10 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
     o->opt = opt;
     o->context = context;
     if (rc == XFGCU_EXIT_OK) {
+        rc = cli_check_link_options(opt);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        o->t0_ms = xf_posix_now_ms();
         rc = open_link(o);
     }
     if (rc == XFGCU_EXIT_OK) {
@@ -272,6 +383,76 @@ void online_linger(online *o, uint32_t packets)
            xf_ms_since(xf_posix_now_ms(), start) < limit) {
         online_poll(o, 20);
     }
+}
+
+void online_linger_ms(online *o, uint32_t ms)
+{
+    uint32_t start = xf_posix_now_ms();
+    while (xf_ms_since(xf_posix_now_ms(), start) < ms) {
+        online_poll(o, 10);
+    }
+}
+
+/* ---- JSON lines ------------------------------------------------------------------ */
+
+json_t *cli_json_times(json_t *obj)
+{
+    struct timespec mono, wall;
+    struct tm utc;
+    char text[80]; /* room for any int the compiler can imagine in each field */
+    clock_gettime(CLOCK_MONOTONIC, &mono);
+    clock_gettime(CLOCK_REALTIME, &wall);
+    gmtime_r(&wall.tv_sec, &utc);
+    snprintf(text, sizeof(text), "%04d-%02d-%02dT%02d:%02d:%02d.%03ldZ", utc.tm_year + 1900, utc.tm_mon + 1,
+             utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, wall.tv_nsec / 1000000L);
+    if (obj != NULL) {
+        json_object_set_new(obj, "time_mono", json_real((double)mono.tv_sec + (double)mono.tv_nsec / 1e9));
+        json_object_set_new(obj, "time_utc", json_string(text));
+    }
+    return obj;
+}
+
+int cli_json_line(json_t *obj)
+{
+    char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER) : NULL;
+    json_decref(obj);
+    if (text == NULL) {
+        return -1;
+    }
+    puts(text);
+    free(text);
+    fflush(stdout);
+    return 0;
+}
+
+static const char *status_key(xf_cmd_status st)
+{
+    switch (st) {
+    case XF_CMD_OK: return "ok";
+    case XF_CMD_FAILED: return "failed";
+    case XF_CMD_TIMEOUT: return "timeout";
+    case XF_CMD_LINK_LOST: return "link_lost";
+    case XF_CMD_CANCELLED: return "cancelled";
+    case XF_CMD_OPERATING: return "operating";
+    default: return xf_cmd_status_name(st);
+    }
+}
+
+json_t *online_result_json(const xf_cmd_result *r)
+{
+    const char *name = xf_order_name(r->order);
+    json_t *o = cli_json_times(json_object());
+    if (o == NULL) {
+        return NULL;
+    }
+    json_object_set_new(o, "status", json_string(status_key(r->status)));
+    json_object_set_new(o, "order", json_integer(r->order));
+    json_object_set_new(o, "order_name", name != NULL ? json_string(name) : json_null());
+    json_object_set_new(o, "state", json_integer(r->state));
+    json_object_set_new(o, "failed_cameras", json_integer(r->failed_cameras));
+    json_object_set_new(o, "packets", json_integer(r->packets));
+    json_object_set_new(o, "elapsed_ms", json_integer((json_int_t)r->elapsed_ms));
+    return o;
 }
 
 /* ---- one command ------------------------------------------------------------------- */

@@ -22,6 +22,8 @@
 #include "xfgcu/posix/xf_simlink.h"
 #include "tap.h"
 
+#include <jansson.h>
+
 /* ---- signals ----------------------------------------------------------------- */
 
 /** Catch SIGINT and SIGTERM into a flag (sigaction, no work in the handler); SIGPIPE is ignored. */
@@ -65,6 +67,9 @@ typedef struct online {
     xf_hal hal; /* what the client uses: raw, or tapped */
     xf_client client;
     uint32_t up_ms;        /* how long the first reply took */
+    uint32_t t0_ms;        /* xf_posix_now_ms() when the link opened: --trace's and --json's times count from here */
+    online_hooks hooks;    /* the command's callbacks, called after --trace's */
+    int client_on;         /* the client was started: online_free() lets it settle first */
     unsigned submit_flags; /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
 } online;
 
@@ -80,7 +85,11 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
 
 /** Zeroed storage for a session (it is large); NULL when out of memory, after printing why. */
 online *online_new(void);
-/** Close the link and free @p o (may be NULL). */
+/**
+ * Let the client settle (xf_client_settled(): no reply to one of its commands still on the
+ * link, where the next program could take it for its own), for at most twice --timeout plus
+ * --reorder, with a note if it does not; then close the link and free @p o (may be NULL).
+ */
 void online_free(online *o);
 
 /** What point and rate do once the gimbal is in their mode. @return an exit code. */
@@ -100,6 +109,22 @@ void online_poll(online *o, int max_wait_ms);
 
 /** Keep the loop going (null packets, or whatever control is set) until @p packets more were sent. */
 void online_linger(online *o, uint32_t packets);
+/** Keep the loop going for @p ms (send: with --reorder, until its last packet has surely landed). */
+void online_linger_ms(online *o, uint32_t ms);
+
+/* ---- JSON lines (--json of send, point, rate, monitor, probe) ------------------------ */
+
+/**
+ * Add the two times every --json object carries: "time_mono", seconds on the monotonic clock
+ * (CLOCK_MONOTONIC: for intervals, never steps), and "time_utc", the wall clock as ISO 8601
+ * with milliseconds ("2026-11-26T10:00:00.123Z"). @return @p obj
+ */
+json_t *cli_json_times(json_t *obj);
+/** Print @p obj (taken: it is freed) on one line of stdout, flushed. @return 0, or -1 if out of memory. */
+int cli_json_line(json_t *obj);
+/** A command's result as JSON: status ("ok", "failed", "timeout", "link_lost", "cancelled",
+ *  "operating"), order, order_name, state, failed_cameras, packets, elapsed_ms, and the times. */
+json_t *online_result_json(const xf_cmd_result *r);
 
 /** Prints progress of a command (operating) as it runs; NULL for none. */
 typedef void (*online_progress_fn)(void *user, const xf_cmd_result *r, uint32_t operating_ms);

@@ -1,0 +1,282 @@
+/*
+ * test_cli_mistaken.c - nothing mistaken, every bad input one line: the red team's cases against
+ * the program (issue 15). A simulator whose replies come 1.5 s late, one whose packets overtake
+ * one another and arrive twice; --rate and --timeout that cannot work; contradicting link
+ * options; link options after COMMAND; help; send --json and --trace.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <poll.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+#include <cmocka.h>
+#include <jansson.h>
+
+#include "run_tool.h"
+#include "sim_proc.h"
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec / 1e9;
+}
+
+/* A UDP port for the client to bind, the same for every process of a test (as the default 2338
+ * is), so that one process's late replies reach the next one. */
+static const char *fixed_port(char *buf, size_t cap)
+{
+    snprintf(buf, cap, "%d", 20000 + (int)(getpid() % 20000));
+    return buf;
+}
+
+/* `xfgcu --udp 127.0.0.1 --gcu-port P --local-port L [--timeout T] [extra...] send shutter --json` */
+static tool_result send_shutter(const sim_proc *s, const char *local, const char *timeout, const char *extra)
+{
+    const char *args[16];
+    int n = 0;
+    args[n++] = "--udp";
+    args[n++] = "127.0.0.1";
+    args[n++] = "--gcu-port";
+    args[n++] = s->port;
+    args[n++] = "--local-port";
+    args[n++] = local;
+    args[n++] = "--timeout";
+    args[n++] = timeout;
+    if (extra != NULL) {
+        args[n++] = "--reorder";
+        args[n++] = extra;
+    }
+    args[n++] = "send";
+    args[n++] = "shutter";
+    args[n++] = "--json";
+    return run_tool_argv(n, args, NULL);
+}
+
+/* How many "executed shutter" lines the simulator (--verbose) has printed so far. */
+static unsigned shutters_executed(const sim_proc *s, char *log, size_t cap, size_t *len)
+{
+    struct pollfd p;
+    unsigned n = 0;
+    const char *at = log;
+    p.fd = s->out_fd;
+    p.events = POLLIN;
+    while (poll(&p, 1, 300) > 0 && *len + 1u < cap) {
+        ssize_t got = read(s->out_fd, log + *len, cap - 1u - *len);
+        if (got <= 0) {
+            break;
+        }
+        *len += (size_t)got;
+    }
+    log[*len] = '\0';
+    while ((at = strstr(at, "executed shutter")) != NULL) {
+        n++;
+        at++;
+    }
+    return n;
+}
+
+/* Every reply 1.5 s late, one `send shutter` after another on the same local port: with the
+ * default 1 s timeout none can be ok (its own reply comes after 1.5 s), and an earlier process's
+ * late "ok" must not be taken (the red team saw ok after 0.5 s and 0.1 s); with a 4 s timeout
+ * each is ok, and never sooner than its own reply can come. */
+static void test_late_replies(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char port[16];
+    int i;
+    sim_start(s, SIM_UDP, "--delay", "1500", NULL);
+    fixed_port(port, sizeof(port));
+    for (i = 0; i < 5; i++) {
+        int long_timeout = i >= 3;
+        double t0 = now_s(), took;
+        tool_result r = send_shutter(s, port, long_timeout ? "4000" : "1000", NULL);
+        took = now_s() - t0;
+        if (strstr(r.out, "\"ok\"") != NULL) {
+            json_t *o = parse_line(r.out);
+            assert_true(long_timeout);
+            assert_true(int_key(o, "elapsed_ms") >= 1500); /* its own reply, not a late one */
+            assert_true(took >= 1.5);
+            json_decref(o);
+        } else {
+            assert_false(long_timeout);
+            assert_int_equal(r.status, 3);
+            assert_int_equal(count_lines(r.err), 1); /* one line: no answer, or no state in time */
+        }
+        tool_result_free(&r);
+    }
+}
+
+/* Packets overtake one another (0..60 ms each way) and 30 % arrive twice: with --reorder 100, 12
+ * shutters in a row, each ok, and the GCU ran exactly 12 (no false ok: a taken "ok" that was
+ * another's would leave a shutter unrun or run twice). */
+static void test_reordering_link(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char port[16], log[16384];
+    size_t len = 0;
+    unsigned k, oks = 0;
+    sim_start(s, SIM_UDP, "--jitter", "60", "--dup", "300", "--verbose", NULL);
+    fixed_port(port, sizeof(port));
+    for (k = 0; k < 12u; k++) {
+        tool_result r = send_shutter(s, port, "2000", "100");
+        if (r.status != 0) {
+            print_error("send %u: status %d\nstdout %s\nstderr %s\n", k, r.status, r.out, r.err);
+        }
+        assert_int_equal(r.status, 0);
+        oks += strstr(r.out, "\"status\":\"ok\"") != NULL;
+        tool_result_free(&r);
+    }
+    assert_int_equal(oks, 12);
+    assert_int_equal(shutters_executed(s, log, sizeof(log), &len), 12);
+}
+
+/* send --json: one object with the documented keys and both times; --trace: on an idle link a
+ * send is two packets, a null and the command (it returns as soon as the result is in), each
+ * on one stderr line, and the replies too. */
+static void test_send_json_and_trace(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    const char *link[8];
+    const char *keys[] = {"time_mono", "time_utc", "status", "order", "order_name", "state", "failed_cameras",
+                          "packets", "elapsed_ms", "command", "link"};
+    const char *args[16];
+    tool_result r;
+    json_t *o;
+    size_t i;
+    int n;
+    sim_start(s, SIM_TCP, NULL);
+    n = sim_link_args(s, link);
+    /* the link options after COMMAND, too */
+    args[0] = "send";
+    args[1] = "shutter";
+    args[2] = "--json";
+    for (i = 0; i < (size_t)n; i++) {
+        args[3 + i] = link[i];
+    }
+    args[3 + n] = "--trace";
+    r = run_tool_argv(4 + n, args, NULL);
+    assert_int_equal(r.status, 0);
+    assert_int_equal(count_lines(r.out), 1);
+    o = parse_line(r.out);
+    for (i = 0; i < sizeof(keys) / sizeof(keys[0]); i++) {
+        assert_non_null(json_object_get(o, keys[i]));
+    }
+    assert_string_equal(str_key(o, "status"), "ok");
+    assert_string_equal(str_key(o, "order_name"), "shutter");
+    assert_int_equal(int_key(o, "packets"), 1);
+    assert_int_equal(strlen(str_key(o, "time_utc")), 24); /* 2026-11-26T10:00:00.123Z */
+    json_decref(o);
+    assert_non_null(strstr(r.err, "trace 0.0"));
+    assert_non_null(strstr(r.err, " > null (0x00), 72 bytes\n"));
+    assert_non_null(strstr(r.err, " > shutter (0x20), 73 bytes\n"));
+    assert_non_null(strstr(r.err, " < shutter (0x20), 73 bytes, mode"));
+    {
+        unsigned sent = 0;
+        const char *at = r.err;
+        while ((at = strstr(at, " > ")) != NULL) {
+            sent++;
+            at++;
+        }
+        assert_int_equal(sent, 2);
+    }
+    tool_result_free(&r);
+}
+
+/* Settings that cannot work, and options that contradict each other, are one-line usage errors. */
+static void test_impossible_settings(void **state)
+{
+    tool_result r;
+    (void)state;
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--rate", "1", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--rate 1", "stale after 250 ms", "--rate 5 or more", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--timeout", "30", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--timeout 30", "round trip", "--timeout 40 or more", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--reorder", "100", "--timeout", "200", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--timeout 200", "twice --reorder", "--timeout 240 or more", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--reorder", "1001", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--reorder 1001", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--baud", "115200", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--baud is for --serial", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--serial", "/dev/null", "--gcu-port", "2337", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--gcu-port is for --udp or --tcp", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--tcp", "127.0.0.1", "--local-port", "5", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--local-port is for --udp", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--tcp", "127.0.0.1:2332", "--gcu-port", "2332", "send", "shutter", NULL);
+    assert_failure(&r, 2, "give the port once", NULL);
+    tool_result_free(&r);
+    /* after COMMAND as well */
+    r = run_tool(NULL, "send", "shutter", "--udp", "127.0.0.1", "--tcp", "127.0.0.1", NULL);
+    assert_failure(&r, 2, "give only one of --serial, --udp, --tcp", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "send", "shutter", "--rate", "1", "--udp", "127.0.0.1", NULL);
+    assert_failure(&r, 2, "--rate 1", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "send", "shutter", "--reorder", "x", NULL);
+    assert_failure(&r, 2, "--reorder x", "0..1000", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "send", "shutter", "--version", NULL);
+    assert_failure(&r, 2, "unknown option '--version'", NULL);
+    tool_result_free(&r);
+    /* a command's own option of the same name wins: zoom-to's --rate is the zoom */
+    r = run_tool(NULL, "encode", "zoom-to", "--rate", "5.5", NULL);
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+}
+
+/* xfgcu help [COMMAND], -h anywhere a command's help is asked for. */
+static void test_help_forms(void **state)
+{
+    tool_result r;
+    (void)state;
+    r = run_tool(NULL, "help", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: xfgcu"));
+    assert_non_null(strstr(r.out, "--reorder MS"));
+    assert_non_null(strstr(r.out, "--trace"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "help", "send", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: xfgcu [LINK OPTIONS] send"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "send", "-h", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: xfgcu [LINK OPTIONS] send"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "-h", NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "usage: xfgcu"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "help", "nothing", NULL);
+    assert_failure(&r, 2, "unknown command 'nothing'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "help", "send", "more", NULL);
+    assert_failure(&r, 2, "help: unexpected argument 'more'", NULL);
+    tool_result_free(&r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_late_replies, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_reordering_link, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_send_json_and_trace, sim_setup_none, sim_teardown),
+        cmocka_unit_test(test_impossible_settings),
+        cmocka_unit_test(test_help_forms),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
