@@ -13,6 +13,7 @@
 
 #include "cli.h"
 #include "cmdargs.h"
+#include "encode.h"
 #include "hexin.h"
 #include "jsonpkt.h"
 
@@ -85,26 +86,35 @@ static int encode_lines(uint8_t version)
 
 /* ---- COMMAND ------------------------------------------------------------------ */
 
-static int encode_named(const cmd_line *l)
+int encode_command(const cmd_spec *spec, const xf_command *command, uint8_t version, uint8_t *out, size_t cap,
+                   size_t *len)
 {
     xf_host_packet pkt;
-    xf_command cmd = l->cmd;
-    uint8_t buf[XF_PACKET_MAX_LEN];
-    size_t len = 0;
+    xf_command cmd = *command;
     xf_field bad = XF_F_NONE;
     xf_err err;
-    cmdargs_for_version(&cmd, l->version); /* --protocol N: N's meaning */
-    xf_host_packet_init(&pkt, l->version); /* no carrier data; sub_request = 0x01 */
+    cmdargs_for_version(&cmd, version); /* --protocol N: N's meaning */
+    xf_host_packet_init(&pkt, version); /* no carrier data; sub_request = 0x01 */
     err = xf_host_set_command(&pkt, &cmd, &bad);
     if (err == XF_OK) {
-        err = xf_host_pack(&pkt, buf, sizeof(buf), &len);
+        err = xf_host_pack(&pkt, out, cap, len);
     }
     if (err != XF_OK) {
-        return cli_fail("encode %s: %s%s%s", cmdargs_name(l->spec), xf_strerror(err), bad != XF_F_NONE ? ": " : "",
+        return cli_fail("encode %s: %s%s%s", cmdargs_name(spec), xf_strerror(err), bad != XF_F_NONE ? ": " : "",
                         bad != XF_F_NONE ? xf_field_name(bad) : "");
     }
-    print_hex(buf, len);
     return XFGCU_EXIT_OK;
+}
+
+static int encode_named(const cmd_line *l)
+{
+    uint8_t buf[XF_PACKET_MAX_LEN];
+    size_t len = 0;
+    int rc = encode_command(l->spec, &l->cmd, l->version, buf, sizeof(buf), &len);
+    if (rc == XFGCU_EXIT_OK) {
+        print_hex(buf, len);
+    }
+    return rc;
 }
 
 int cmd_encode(const cli_link *link, int argc, char **argv)

@@ -1,0 +1,191 @@
+"""The client and the simulator over UDP, TCP and a pty."""
+
+from __future__ import annotations
+
+import json
+import time
+
+import pytest
+
+import xfgcu
+from conftest import run
+
+
+def wait_until(predicate, timeout: float = 3.0) -> bool:  # type: ignore[no-untyped-def]
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.02)
+    return predicate()
+
+
+def test_photo_and_results(sim: xfgcu.Simulator) -> None:
+    with xfgcu.connect(sim.spec) as g:
+        r = g.send("shutter")
+        assert r.status == "ok" and r.ok and r.name == "shutter" and r.packets >= 1
+        r = g.send("zoom-to", rate=5.5)
+        assert r.status == "ok"
+        assert wait_until(lambda: g.telemetry()["units"]["zoom_cam1"] == 5.5)  # type: ignore[index]
+        health = g.health()
+        assert health["link"] == "up" and health["replies"] > 0 and health["crc_errors"] == 0
+    stats = sim.stats()
+    assert stats["photos"] == 1 and stats["executed"]["zoom_to"] == 1
+
+
+def test_angles_in_euler(sim: xfgcu.Simulator) -> None:
+    with xfgcu.connect(sim.spec) as g:
+        assert g.send("euler").status == "ok"
+        assert wait_until(lambda: g.set_angles(0.0, -30.0, 45.0) == "sent")
+        assert wait_until(
+            lambda: abs(g.telemetry()["units"]["cam_pitch_deg"] + 30.0) < 0.5  # type: ignore[index]
+            and abs(g.telemetry()["units"]["cam_yaw_deg"] - 45.0) < 0.5  # type: ignore[index]
+        )
+        g.clear_control()
+
+
+def test_rates_carrier_gnss(udp_sim: xfgcu.Simulator) -> None:
+    with xfgcu.connect(udp_sim.spec, rate_hz=50) as g:
+        assert g.send("head-lock").status == "ok"
+        assert wait_until(lambda: g.set_rates(0.0, 0.0, 20.0) == "sent")
+        yaw0 = g.telemetry()["units"]["cam_yaw_deg"]  # type: ignore[index]
+        assert wait_until(lambda: g.set_rates(0.0, 0.0, 20.0) == "sent" and g.telemetry()["units"]["cam_yaw_deg"] != yaw0)  # type: ignore[index]
+        g.set_rates(0.0, 0.0, 0.0)
+        g.set_carrier(1.0, 2.0, 90.0, vel_north=3.0)
+        g.set_gnss(22.5, 113.9, 50.0, satellites=12)
+        assert wait_until(lambda: udp_sim.stats()["ins_valid_packets"] > 0)
+
+
+def test_failed_with_cameras() -> None:
+    with xfgcu.Simulator("udp:127.0.0.1:0", fail={"zoom_in": 0x02}) as s, xfgcu.connect(s.spec) as g:
+        r = g.send("zoom-in")
+        assert r.status == "failed" and r.failed_cameras == 0x02
+
+
+def test_timeout_and_link_lost(udp_sim: xfgcu.Simulator) -> None:
+    with xfgcu.connect(udp_sim.spec, command_timeout_ms=300, stale_ms=100, down_ms=2000) as g:
+        udp_sim.fault(silent=1)
+        assert g.send("shutter").status == "timeout"
+        udp_sim.fault(silent=0)
+        assert wait_until(lambda: g.health()["link"] == "up")
+    with xfgcu.connect(udp_sim.spec, command_timeout_ms=5000, stale_ms=100, down_ms=300) as g:
+        udp_sim.fault(silent=1)
+        assert g.send("shutter").status == "link_lost"
+        assert g.health()["link"] == "down"
+        udp_sim.fault(silent=0)
+
+
+def test_unsupported_model_and_force() -> None:
+    # Z-6A (code 0) has no palette by V2.0.6's list: refused, unless forced
+    with xfgcu.Simulator("udp:127.0.0.1:0", model="Z-6A") as s, xfgcu.connect(s.spec) as g:
+        with pytest.raises(xfgcu.UnsupportedCommandError, match="Z-6A .code 0. does not support it"):
+            g.send("palette", mode=1)
+        assert s.stats()["executed"] == {}
+        assert g.send("palette", mode=1, force=True).status == "failed"  # the simulated Z-6A refuses it too
+
+
+def test_bad_arguments_raise(udp_sim: xfgcu.Simulator) -> None:
+    with xfgcu.connect(udp_sim.spec) as g:
+        with pytest.raises(xfgcu.CommandError, match="--level"):
+            g.send("lighting", level=999)
+        with pytest.raises(TypeError):
+            xfgcu.connect(udp_sim.spec, no_such_option=1)
+
+
+def test_no_gcu_is_a_link_error() -> None:
+    with pytest.raises(xfgcu.LinkError, match="no reply"):
+        xfgcu.connect("udp:127.0.0.1:9,local=0", connect_timeout_ms=300)
+    with pytest.raises(xfgcu.LinkError):
+        xfgcu.connect("bogus:thing")
+
+
+def test_telemetry_has_the_keys_of_monitor_json(program: str, udp_sim: xfgcu.Simulator) -> None:
+    port = udp_sim.spec.split(":")[2].split(",")[0]
+    r = run(program, "--udp", "127.0.0.1", "--gcu-port", port, "--local-port", "0", "monitor", "--json", "--count", "1")
+    assert r.returncode == 0, r.stderr
+    monitor = json.loads(r.stdout.splitlines()[0])
+    with xfgcu.connect(udp_sim.spec) as g:
+        t = g.telemetry()
+    assert t is not None
+    units = t.pop("units")
+    assert list(t) == list(monitor)
+    assert {"cam_roll_deg", "cam_pitch_deg", "cam_yaw_deg", "zoom_cam1", "target_distance_m"} <= set(units)
+    assert xfgcu.decode(xfgcu.encode(t)) == t
+
+
+def test_telemetry_callback(udp_sim: xfgcu.Simulator) -> None:
+    seen = []
+    with xfgcu.connect(udp_sim.spec, rate_hz=50) as g:
+        remove = g.on_telemetry(seen.append)
+        assert wait_until(lambda: len(seen) >= 10)
+        remove()
+    assert all(t["direction"] == "gcu" and "units" in t for t in seen)
+
+
+def test_protocol_2(program: str) -> None:
+    with xfgcu.Simulator("tcp:127.0.0.1:0", protocol=2) as s, xfgcu.connect(s.spec, protocol=2) as g:
+        assert g.send("osd", hide=True).status == "ok"
+        t = g.telemetry()
+        assert t is not None and t["version"] == 2 and "camera_status" in t
+
+
+def test_program_simulator_interop(program: str) -> None:
+    import subprocess
+
+    proc = subprocess.Popen([program, "sim", "--udp", "0"], stdout=subprocess.PIPE, text=True)
+    try:
+        line = proc.stdout.readline()  # type: ignore[union-attr]
+        port = line.strip().rsplit(":", 1)[1]
+        with xfgcu.connect(f"udp:127.0.0.1:{port},local=0") as g:
+            assert g.send("shutter").status == "ok"
+    finally:
+        proc.terminate()
+        proc.wait(10)
+
+
+def test_calibration_operating_then_ok() -> None:
+    with xfgcu.Simulator("udp:127.0.0.1:0", calibration_ms=300) as s, xfgcu.connect(s.spec) as g:
+        r = g.send("calibration")
+        assert r.status == "ok" and r.elapsed_ms >= 250
+
+
+def test_pty_with_a_stable_link(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    link = str(tmp_path / "gcu")
+    with xfgcu.Simulator("pty:" + link) as s:
+        assert s.spec == "serial:" + link
+        with xfgcu.connect(s.spec) as g:
+            assert g.send("shutter").ok
+            assert g.set_rates(0.0, 0.0, 0.0) in ("sent", "wrong_kind")
+            assert g.health()["control"] in ("sent", "wrong_kind")
+
+
+def test_simulator_spec_errors() -> None:
+    with pytest.raises(ValueError):
+        xfgcu.Simulator("carrier-pigeon")
+    with pytest.raises(ValueError):
+        xfgcu.Simulator("udp:127.0.0.1:0", no_such_setting=1)
+    with pytest.raises(ValueError):
+        xfgcu.Simulator("udp:127.0.0.1:0", model="no such model")
+
+
+def test_reordering_link_no_false_ok() -> None:
+    # Packets overtake one another (0..60 ms each way) and 30 % arrive twice: with reorder_ms
+    # bounding that, every shutter is ok on its own reply and the GCU takes each once.
+    with xfgcu.Simulator("udp:127.0.0.1:0", jitter_ms=60, dup_permille=300) as sim:
+        with xfgcu.connect(sim.spec, reorder_ms=100) as gimbal:
+            results = [gimbal.send("shutter") for _ in range(10)]
+        assert [r.status for r in results] == ["ok"] * 10
+        assert sim.stats()["photos"] == 10
+
+
+def test_close_settles() -> None:
+    # Replies 300 ms late: a command that timed out after 200 ms still has its "ok" on the way;
+    # close() waits for it (and a null's reply after it), so that the next client cannot take it.
+    with xfgcu.Simulator("udp:127.0.0.1:0", delay_ms=300) as sim:
+        gimbal = xfgcu.connect(sim.spec, command_timeout_ms=200)
+        assert gimbal.send("shutter").status == "timeout"
+        t0 = time.monotonic()
+        gimbal.close()
+        assert time.monotonic() - t0 >= 0.25
+        with xfgcu.connect(sim.spec, command_timeout_ms=200) as second:
+            assert second.send("shutter").status == "timeout"  # never the first one's late ok

@@ -1,0 +1,145 @@
+"""The native library (libxfgcu_py.so) through ctypes, and its flat C API (python/native/xfpy.h).
+
+Found, in this order: the file named by the environment variable XFGCU_PY_LIB; the copy that
+`pip install` put inside this package; ``ctypes.util.find_library("xfgcu_py")``.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+import os
+import threading
+import warnings
+from typing import List, Sequence
+
+__all__ = ["lib", "codec_lock", "take_error", "argv", "PACKET_MAX"]
+
+PACKET_MAX = 255  # XF_PACKET_MAX_LEN: a buffer that holds any packet
+
+
+def _load() -> ctypes.CDLL:
+    here = os.path.dirname(os.path.abspath(__file__))
+    candidates = []
+    env = os.environ.get("XFGCU_PY_LIB")
+    if env:
+        candidates.append(env)
+    candidates.append(os.path.join(here, "libxfgcu_py.so"))
+    found = ctypes.util.find_library("xfgcu_py")
+    if found:
+        candidates.append(found)
+    errors = []
+    for path in candidates:
+        if path != env and not os.path.exists(path) and os.sep in path:
+            continue
+        try:
+            return ctypes.CDLL(path)
+        except OSError as exc:
+            errors.append(f"{path}: {exc}")
+    raise ImportError(
+        "xfgcu: the native library libxfgcu_py.so was not found (install the package with pip, "
+        "or set XFGCU_PY_LIB to the file a CMake build with -DXFGCU_BUILD_PYTHON=ON made)"
+        + ("; " + "; ".join(errors) if errors else "")
+    )
+
+
+lib = _load()
+
+_c = ctypes
+_vp = _c.c_void_p
+_sz = _c.c_size_t
+_u8p = _c.POINTER(_c.c_uint8)
+_charpp = _c.POINTER(_c.c_char_p)
+
+_PROTOTYPES = {
+    "xfpy_error": (_c.c_char_p, []),
+    "xfpy_notes": (_c.c_char_p, []),
+    "xfpy_clear": (None, []),
+    "xfpy_version": (_c.c_char_p, []),
+    "xfpy_decode": (_c.c_int, [_c.c_char_p, _sz, _c.c_int, _c.c_char_p, _sz]),
+    "xfpy_encode": (_c.c_int, [_c.c_char_p, _c.c_int, _c.c_char_p, _sz, _c.POINTER(_sz)]),
+    "xfpy_command": (_c.c_int, [_c.c_int, _charpp, _c.c_int, _c.c_char_p, _sz, _c.POINTER(_sz)]),
+    "xfpy_model_name": (_c.c_char_p, [_c.c_int]),
+    "xfpy_command_names": (_c.c_char_p, []),
+    "xfpy_parser_new": (_vp, []),
+    "xfpy_parser_free": (None, [_vp]),
+    "xfpy_parser_feed": (_c.c_long, [_vp, _c.c_char_p, _sz, _c.c_char_p, _sz]),
+    "xfpy_wait": (None, [_c.c_int, _c.c_int]),
+    "xfpy_client_new": (_vp, []),
+    "xfpy_client_config": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
+    "xfpy_client_open": (_c.c_int, [_vp, _c.c_char_p]),
+    "xfpy_client_step": (_c.c_int, [_vp, _c.POINTER(_c.c_int)]),
+    "xfpy_client_replies": (_c.c_uint32, [_vp]),
+    "xfpy_client_settled": (_c.c_int, [_vp]),
+    "xfpy_client_telemetry": (_c.c_int, [_vp, _c.c_uint32, _c.c_char_p, _sz]),
+    "xfpy_client_health": (_c.c_int, [_vp, _c.c_char_p, _sz]),
+    "xfpy_client_submit": (_c.c_int, [_vp, _c.c_int, _charpp, _c.c_int, _c.POINTER(_c.c_uint32)]),
+    "xfpy_client_result": (
+        _c.c_int,
+        [_vp, _c.c_uint32, _c.POINTER(_c.c_int), _c.POINTER(_c.c_int), _c.POINTER(_c.c_long), _c.POINTER(_c.c_int)],
+    ),
+    "xfpy_client_cancel_all": (None, [_vp]),
+    "xfpy_client_set_rates": (_c.c_int, [_vp, _c.c_double, _c.c_double, _c.c_double]),
+    "xfpy_client_set_angles": (_c.c_int, [_vp, _c.c_double, _c.c_double, _c.c_double]),
+    "xfpy_client_clear_control": (None, [_vp]),
+    "xfpy_client_set_carrier": (None, [_vp, _c.POINTER(_c.c_double)]),
+    "xfpy_client_set_gnss": (
+        None,
+        [_vp, _c.c_double, _c.c_double, _c.c_double, _c.c_int, _c.c_int, _c.c_long, _c.c_double],
+    ),
+    "xfpy_client_describe": (_c.c_char_p, [_vp]),
+    "xfpy_client_free": (None, [_vp]),
+    "xfpy_sim_new": (_vp, []),
+    "xfpy_sim_config": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
+    "xfpy_sim_fault": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
+    "xfpy_sim_fail": (None, [_vp, _c.c_int, _c.c_int]),
+    "xfpy_sim_open": (_c.c_int, [_vp, _c.c_char_p, _c.c_char_p, _c.c_int]),
+    "xfpy_sim_spec": (_c.c_char_p, [_vp]),
+    "xfpy_sim_step": (_c.c_int, [_vp, _c.POINTER(_c.c_int)]),
+    "xfpy_sim_stats": (_c.c_int, [_vp, _c.c_char_p, _sz]),
+    "xfpy_sim_disconnect": (None, [_vp, _c.c_long]),
+    "xfpy_sim_free": (None, [_vp]),
+}
+
+for _name, (_res, _args) in _PROTOTYPES.items():
+    _f = getattr(lib, _name)
+    _f.restype = _res
+    _f.argtypes = _args
+
+#: Serialises what uses the library's process-wide state: the message buffers and the command
+#: parser (getopt's globals). Taken for every codec call and every command submitted.
+codec_lock = threading.RLock()
+
+
+def take_error() -> str:
+    """The last failure's message, after issuing the notes as warnings (call under codec_lock)."""
+    notes = lib.xfpy_notes().decode("utf-8", "replace")
+    for note in notes.splitlines():
+        warnings.warn(note, stacklevel=3)
+    return lib.xfpy_error().decode("utf-8", "replace")
+
+
+def _option_value(value: object) -> str:
+    if isinstance(value, (list, tuple)):
+        return ",".join(_option_value(v) for v in value)
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def argv(name: str, args: dict) -> List[bytes]:
+    """A command's argument vector as the command line gives it: option ``rate=5.5`` is
+    ``--rate 5.5``, ``show=True`` the switch ``--show`` (False and None: left out), a list or a
+    tuple ``box=(0, 0, 10, 10)`` is ``--box 0,0,10,10``."""
+    out = [name.encode()]
+    for key, value in args.items():
+        if value is None or value is False:
+            continue
+        out.append(("--" + key.replace("_", "-")).encode())
+        if value is not True:
+            out.append(_option_value(value).encode())
+    return out
+
+
+def c_argv(items: Sequence[bytes]) -> "ctypes.Array[ctypes.c_char_p]":
+    return (ctypes.c_char_p * (len(items) + 1))(*items, None)

@@ -1,0 +1,147 @@
+"""Packets to and from the JSON objects of `xfgcu decode --json` / `xfgcu encode --json`,
+named commands, and a stream parser: the xfgcu program's own code, through the native library."""
+
+from __future__ import annotations
+
+import ctypes
+import json
+from typing import Any, Dict, List, Optional
+
+from ._native import PACKET_MAX, argv, c_argv, codec_lock, lib, take_error
+from .errors import (
+    CRCError,
+    DecodeError,
+    EncodeError,
+    HeaderError,
+    LengthError,
+    TruncatedError,
+)
+
+__all__ = ["decode", "encode", "encode_command", "commands", "Parser"]
+
+# xf_err codes (include/xfgcu/xf_error.h) of the four faults xf_packet_check() reports.
+_FAULTS = {
+    -10: (HeaderError, "bad header: a packet starts with A8 E5 (host) or 8A 5E (GCU)"),
+    -11: (LengthError, "bad length: the length field must be 72..255 and match the bytes"),
+    -12: (CRCError, "bad CRC"),
+    -13: (TruncatedError, "truncated packet"),
+}
+_POD = {"auto": 0, "le": 1, "be": 2}
+
+
+def _fault(data: bytes, code: int) -> DecodeError:
+    cls, text = _FAULTS.get(code, (DecodeError, f"not a packet (error {code})"))
+    if cls is CRCError and len(data) >= 4:
+        field = data[2] | data[3] << 8
+        text += f": the packet says {data[field - 2]:02X} {data[field - 1]:02X}"
+    elif cls is TruncatedError and len(data) >= 4:
+        text += f": {len(data)} bytes, the length field says {data[2] | data[3] << 8}"
+    elif cls is TruncatedError:
+        text += f": {len(data)} bytes, a packet has at least 72"
+    elif cls is HeaderError and len(data) >= 2:
+        text += f" (got {data[0]:02X} {data[1]:02X})"
+    return cls(text)
+
+
+def decode(data: bytes, pod_order: str = "auto") -> Dict[str, Any]:
+    """One whole packet (host or GCU, found from its header) as the object `xfgcu decode --json`
+    prints for it: the same keys, in the same order, with the same values.
+
+    ``pod_order`` is decode's ``--pod-order``: how to read the flags of pod_status.
+    Raises a DecodeError subclass (HeaderError, LengthError, CRCError, TruncatedError)."""
+    data = bytes(data)
+    if pod_order not in _POD:
+        raise ValueError("pod_order must be 'auto', 'le' or 'be'")
+    out = ctypes.create_string_buffer(16384)
+    rc = lib.xfpy_decode(data, len(data), _POD[pod_order], out, len(out))
+    if rc > 0:
+        out = ctypes.create_string_buffer(rc)
+        rc = lib.xfpy_decode(data, len(data), _POD[pod_order], out, len(out))
+    if rc != 0:
+        raise _fault(data, rc)
+    result: Dict[str, Any] = json.loads(out.value.decode())
+    return result
+
+
+def encode(obj: Dict[str, Any], protocol: int = 1) -> bytes:
+    """The packet an object of `xfgcu encode --json` describes (the inverse of decode()).
+    ``protocol`` is the version when the object gives none. Raises EncodeError."""
+    text = json.dumps(obj).encode()
+    out = ctypes.create_string_buffer(PACKET_MAX)
+    n = ctypes.c_size_t(0)
+    with codec_lock:
+        lib.xfpy_clear()
+        rc = lib.xfpy_encode(text, protocol, out, len(out), ctypes.byref(n))
+        message = take_error()
+    if rc != 0:
+        raise EncodeError(message)
+    return out.raw[: n.value]
+
+
+def encode_command(name: str, protocol: int = 1, **args: Any) -> bytes:
+    """The packet `xfgcu encode --protocol PROTOCOL NAME --OPTION VALUE ...` prints: the
+    program's command names ("zoom-to" or "zoom_to") and option names, ``-`` written ``_``.
+    ``encode_command("zoom-to", rate=5.5)`` is ``xfgcu encode zoom-to --rate 5.5``; a switch is
+    ``True`` (``osd`` with ``show=True``); a list is a comma list (``box=(0, 0, 100, 100)``).
+    Notes of the program (an order of another version) come as warnings. Raises EncodeError."""
+    items = argv(name, args)
+    out = ctypes.create_string_buffer(PACKET_MAX)
+    n = ctypes.c_size_t(0)
+    with codec_lock:
+        lib.xfpy_clear()
+        rc = lib.xfpy_command(len(items), c_argv(items), protocol, out, len(out), ctypes.byref(n))
+        message = take_error()
+    if rc != 0:
+        raise EncodeError(message)
+    return out.raw[: n.value]
+
+
+def commands() -> List[str]:
+    """The command names, as the program spells them."""
+    with codec_lock:
+        return lib.xfpy_command_names().decode().split()
+
+
+class Parser:
+    """A stream parser: bytes in any chunking, decoded packets out, each from the call that
+    feeds its last byte (the codec's xf_parser; noise, bad CRCs and truncated packets are
+    skipped). ``direction`` keeps only "host" or "gcu" packets; None (the default) keeps both."""
+
+    def __init__(self, direction: Optional[str] = None) -> None:
+        if direction not in (None, "host", "gcu"):
+            raise ValueError("direction must be None, 'host' or 'gcu'")
+        self._direction = direction
+        self._handle = lib.xfpy_parser_new()
+        if not self._handle:
+            raise MemoryError("xfgcu: parser")
+
+    def __del__(self) -> None:
+        handle = getattr(self, "_handle", None)
+        if handle:
+            lib.xfpy_parser_free(handle)
+            self._handle = None
+
+    def feed_packets(self, data: bytes) -> List[bytes]:
+        """Like feed(), but the packets' bytes, undecoded."""
+        data = bytes(data)
+        found: List[tuple] = []
+        for at in range(0, len(data), 4096):
+            chunk = data[at : at + 4096]
+            cap = 2 * (len(chunk) // 72 + 2) * (PACKET_MAX + 6)
+            out = ctypes.create_string_buffer(cap)
+            n = lib.xfpy_parser_feed(self._handle, chunk, len(chunk), out, cap)
+            if n < 0:
+                raise RuntimeError("xfgcu: parser output buffer too small")
+            raw, i = out.raw, 0
+            while i < n:
+                end = int.from_bytes(raw[i : i + 4], "little")
+                direction, length = raw[i + 4], raw[i + 5]
+                found.append((end, direction, raw[i + 6 : i + 6 + length]))
+                i += 6 + length
+        found.sort(key=lambda f: f[0])  # both directions, in the order they ended in the stream
+        want = {None: (0, 1), "host": (0,), "gcu": (1,)}[self._direction]
+        return [packet for _, direction, packet in found if direction in want]
+
+    def feed(self, data: bytes) -> List[Dict[str, Any]]:
+        """Feed bytes; the packets they complete, decoded as decode() does."""
+        return [decode(p) for p in self.feed_packets(data)]
