@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite: what CI runs (.ci/run). Installs what it needs first (Debian packages).
-# Stages: gcc -Werror Debug build + ctest; the README's recipes as printed (Release gcc -O3 + ctest,
-# install to a fresh prefix, find_package / pkg-config / add_subdirectory consumers run, the clang
+# Stages: gcc -Werror Debug build + ctest (the Wireshark dissector's tests with tshark among them);
+# the Python package's pytest suite; the README's recipes as printed (Release gcc -O3 + ctest,
+# install to a fresh prefix, find_package / pkg-config / add_subdirectory consumers run, the Python
+# package installed into a venv and tested, a capture dissected by tshark, the clang
 # ASan+UBSan preset + ctest, the bare-metal presets); gcc -O2, clang -O2 and -O3 builds + ctest;
 # fuzz smoke; compiler matrix; docs (Doxygen with warnings as errors, man page, no references
 # outside the project); static analysis; MCU sizes; big-endian tests under qemu; benchmark figures
@@ -13,10 +15,13 @@ jobs=$(nproc)
 t0=$(date +%s)
 stage() { printf '\n=== %s  (%ss)\n' "$*" "$(($(date +%s) - t0))"; }
 
-stage "gcc: Debug build with -Werror, run the tests"
-cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc >/dev/null
+stage "gcc: Debug build with -Werror (the Python package's native library too), run the tests"
+cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc -DXFGCU_BUILD_PYTHON=ON >/dev/null
 cmake --build build/gcc --parallel "$jobs"
 ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"
+
+stage "Python: the package's tests (pytest, hypothesis) over build/gcc's library and program"
+python/run_tests.sh build/gcc
 
 stage "README: every recipe it prints, run as printed (Release, install, consumers, presets)"
 scripts/check_readme.sh

@@ -22,14 +22,19 @@
  * Commands run the way the protocol wants: null packets by default; a
  * command is sent in every packet until a reply carries its execution
  * state; then null packets again, so two commands of the same order are
- * always separated by a null. A command of the same order as the last one
- * (or the exit of a stopped external-track stream) starts only once a
- * reply to a later, different packet has come back (nulls are sent until
- * then; not while the link is down), so a late reply to the previous
- * command of that order is never mistaken for this one's, however long
- * the link's delay. Calibration's "operating" keeps it going until its final
- * state. Results: ok, failed (with the failed-camera mask), timeout,
- * link lost; by callback and by polling the command's id.
+ * always separated by a null. A new client runs no command until a reply
+ * to one of its nulls has come back (a late reply to an earlier program's
+ * command is not its own). A command of the same order as the last one
+ * (or the exit of a stopped external-track stream), while a packet of that
+ * one has no reply yet, starts only once a reply to a later, different
+ * packet has come back (nulls are sent until then; not while the link is
+ * down), so a late reply to the previous command of that order is never
+ * mistaken for this one's, however long the link's delay. Before it stops,
+ * a program lets the client settle (xf_client_settled()). On a link that
+ * reorders or duplicates, reorder_ms bounds how far (docs/protocol.md
+ * §7.4 says what each rule guarantees). Calibration's "operating" keeps it
+ * going until its final state. Results: ok, failed (with the failed-camera
+ * mask), timeout, link lost; by callback and by polling the command's id.
  *
  * Rate watchdog: rates not refreshed for rate_watchdog_ms are replaced by
  * zero rates, so a stalled application never leaves a gimbal spinning.

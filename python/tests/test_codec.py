@@ -19,6 +19,8 @@ COMMANDS: List[Tuple[str, Dict[str, Any]]] = [
     ("shutter", {"cameras": "1,2"}),
     ("zoom-to", {"rate": 5.5}),
     ("zoom_to", {"fraction": 300, "cameras": 2}),
+    ("zoom_in", {"cameras": "3"}),
+    ("zoom_in", {"cameras": "0x03"}),
     ("gaze-geo", {"lat": 22.5, "lon": 113.9, "alt": 30}),
     ("track", {"start": True, "box": (10, 20, 110, 220)}),
     ("track", {"stop": True}),
@@ -227,3 +229,11 @@ def test_parser_direction_filter() -> None:
     assert [d["direction"] for d in xfgcu.Parser().feed(host + gcu + host)] == ["host", "gcu", "host"]
     assert [d["direction"] for d in xfgcu.Parser("gcu").feed(host + gcu + host)] == ["gcu"]
     assert xfgcu.Parser("host").feed_packets(host + gcu) == [host]
+
+
+def test_cameras_int_is_a_mask_string_is_the_programs() -> None:
+    # an int is a mask; a string is the program's syntax, where a decimal number is a camera
+    assert xfgcu.encode_command("zoom-in", cameras=3) == xfgcu.encode_command("zoom-in", cameras="1,2")
+    assert xfgcu.encode_command("zoom-in", cameras="3") == xfgcu.encode_command("zoom-in", cameras=0x04)
+    with pytest.raises(xfgcu.EncodeError, match="--cameras 3,"):
+        xfgcu.encode_command("zoom-in", cameras="3,")

@@ -130,13 +130,17 @@ def _option_value(value: object) -> str:
 def argv(name: str, args: dict) -> List[bytes]:
     """A command's argument vector as the command line gives it: option ``rate=5.5`` is
     ``--rate 5.5``, ``show=True`` the switch ``--show`` (False and None: left out), a list or a
-    tuple ``box=(0, 0, 10, 10)`` is ``--box 0,0,10,10``."""
+    tuple ``box=(0, 0, 10, 10)`` is ``--box 0,0,10,10``. ``cameras`` takes the program's syntax
+    as a string ("1,2", "0x03", "all"), a list of camera numbers, or an int, which is a mask
+    (``cameras=3`` is cameras 1 and 2, as "0x03")."""
     out = [name.encode()]
     for key, value in args.items():
         if value is None or value is False:
             continue
         out.append(("--" + key.replace("_", "-")).encode())
-        if value is not True:
+        if key == "cameras" and isinstance(value, int) and not isinstance(value, bool):
+            out.append(f"0x{value:02X}".encode())
+        elif value is not True:
             out.append(_option_value(value).encode())
     return out
 

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 #include <cmocka.h>
@@ -238,6 +239,38 @@ static void test_impossible_settings(void **state)
     tool_result_free(&r);
 }
 
+/* Run `XFGCU_EXE ARGS` through the shell with stdin redirected as @p redirect; returns the exit
+ * status, the output (stdout and stderr) in @p out. */
+static int shell_run(const char *args, const char *redirect, char *out, size_t cap)
+{
+    char cmd[512];
+    FILE *p;
+    size_t n;
+    int st;
+    snprintf(cmd, sizeof(cmd), "'%s' %s %s 2>&1", XFGCU_EXE, args, redirect);
+    p = popen(cmd, "r");
+    assert_non_null(p);
+    n = fread(out, 1, cap - 1u, p);
+    out[n] = '\0';
+    st = pclose(p);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* Read errors on stdin are errors, not an empty input (encode --json - exited 0, silent). */
+static void test_stdin_read_errors(void **state)
+{
+    char out[1024];
+    (void)state;
+    assert_int_equal(shell_run("encode --json -", "< /", out, sizeof(out)), 2);
+    assert_non_null(strstr(out, "xfgcu: encode: cannot read stdin: Is a directory\n"));
+    assert_int_equal(shell_run("encode --json -", "<&-", out, sizeof(out)), 2);
+    assert_non_null(strstr(out, "xfgcu: encode: cannot read stdin: Bad file descriptor\n"));
+    assert_int_equal(shell_run("decode", "< /", out, sizeof(out)), 2);
+    assert_non_null(strstr(out, "cannot read stdin"));
+    assert_int_equal(shell_run("encode --json -", "< /dev/null", out, sizeof(out)), 0); /* empty: fine */
+    assert_string_equal(out, "");
+}
+
 /* xfgcu help [COMMAND], -h anywhere a command's help is asked for. */
 static void test_help_forms(void **state)
 {
@@ -277,6 +310,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_send_json_and_trace, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_impossible_settings),
         cmocka_unit_test(test_help_forms),
+        cmocka_unit_test(test_stdin_read_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

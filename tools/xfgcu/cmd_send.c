@@ -40,7 +40,9 @@ void help_send(FILE *out)
           "commands (the same names and arguments as `xfgcu encode`):\n",
           out);
     cmdargs_list(out);
-    fputs("\n  --cameras MASK: a number (1, 0x03), a list of cameras (1,2 = 0x03) or all (0xFF).\n\n", out);
+    fputs("\n  --cameras CAMS: camera numbers (1, or 1,2 = 0x03), a hex mask (0x03) or all (0xFF); a\n"
+          "                  decimal number is a camera: 3 is camera 3 (0x04).\n\n",
+          out);
     help_link_options(out);
     fputs("\nexample: xfgcu --tcp 192.168.144.108 send zoom-to --rate 5.5\n", out);
 }

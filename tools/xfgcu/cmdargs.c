@@ -591,7 +591,7 @@ static void usage_text(const cmd_spec *spec, char *buf, size_t cap)
         }
     }
     if (takes_cameras(spec)) {
-        append(buf, cap, buf[0] != '\0' ? " [--cameras MASK]" : "[--cameras MASK]");
+        append(buf, cap, buf[0] != '\0' ? " [--cameras CAMS]" : "[--cameras CAMS]");
     }
 }
 
@@ -619,8 +619,8 @@ void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out)
         fprintf(out, "  %-22s %s\n", left, spec->extra->opts[i].help);
     }
     if (takes_cameras(spec)) {
-        fprintf(out, "  %-22s camera mask: a number (1, 0x03), a list (1,2 = cameras 1 and 2) or all; default 0x%02X\n",
-                "--cameras MASK", info->default_cameras);
+        fprintf(out, "  %-22s cameras: numbers (1, or 1,2 = 0x03), a hex mask (0x03) or all; default 0x%02X\n",
+                "--cameras CAMS", info->default_cameras);
     }
 }
 
@@ -671,34 +671,39 @@ static int parse_int_list(const char *text, long long *vals, size_t n)
     return (k == n) ? 0 : -1;
 }
 
-/* A camera mask: a number (1, 0x03), a list of camera numbers (1,2) or "all". 0 means no camera: refused. */
+/* --cameras, one syntax: "all", a mask in hex ("0x03"), or camera numbers 1..8 separated by
+ * commas ("1", "1,2"). A decimal number is always a camera, never a mask: "3" is camera 3
+ * (0x04), and "3," (an empty item) is refused, as are a camera given twice and the mask 0. */
 static int parse_cameras(const parse_state *st, const char *text, uint8_t *mask)
 {
-    long long v;
+    static const char syntax[] = "camera numbers 1..8 (1 or 1,2), a hex mask (0x03) or all";
+    const char *p = text;
+    unsigned m = 0;
     if (strcmp(text, "all") == 0) {
         *mask = XF_CAM_ALL;
         return XFGCU_EXIT_OK;
     }
-    if (strchr(text, ',') != NULL) {
-        const char *p = text;
-        unsigned m = 0;
-        while (*p != '\0') {
-            char *end = NULL;
-            long cam = (*p >= '0' && *p <= '9') ? strtol(p, &end, 10) : 0; /* no sign, no space */
-            if (cam < 1 || cam > 8 || (*end != ',' && *end != '\0')) {
-                return cli_fail_in(st->where, "--cameras %s: a list holds camera numbers 1..8, like 1,2", text);
-            }
-            m |= 1u << (cam - 1);
-            p = (*end == ',') ? end + 1 : end;
+    if (text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+        long long v;
+        if (cli_parse_int(text, &v) != 0 || v < 1 || v > 255) {
+            return cli_fail_in(st->where, "--cameras %s: a hex mask is 0x01..0xFF", text);
         }
-        *mask = (uint8_t)m;
+        *mask = (uint8_t)v;
         return XFGCU_EXIT_OK;
     }
-    if (cli_parse_int(text, &v) != 0 || v < 1 || v > 255) {
-        return cli_fail_in(st->where,
-                           "--cameras %s: expected a mask 1..255 (1, 0x03), a list of cameras 1..8 (1,2) or all", text);
-    }
-    *mask = (uint8_t)v;
+    do {
+        char *end = NULL;
+        long cam = (*p >= '0' && *p <= '9') ? strtol(p, &end, 10) : 0; /* no sign, no space */
+        if (cam < 1 || cam > 8 || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0')) {
+            return cli_fail_in(st->where, "--cameras %s: expected %s", text, syntax);
+        }
+        if (m & (1u << (cam - 1))) {
+            return cli_fail_in(st->where, "--cameras %s: camera %ld given twice", text, cam);
+        }
+        m |= 1u << (cam - 1);
+        p = (*end == ',') ? end + 1 : end;
+    } while (*p != '\0');
+    *mask = (uint8_t)m;
     return XFGCU_EXIT_OK;
 }
 
@@ -780,7 +785,7 @@ static int set_value(parse_state *st, const opt_spec *o, const char *text)
 static int take_cameras(parse_state *st, const char *text)
 {
     if (text == NULL) {
-        return cli_fail_in(st->where, "--cameras needs a value: a mask (1, 0x03), a list (1,2) or all");
+        return cli_fail_in(st->where, "--cameras needs a value: camera numbers (1 or 1,2), a hex mask (0x03) or all");
     }
     if (st->cameras != NULL) {
         return cli_fail_in(st->where, "--cameras given twice");

@@ -9,6 +9,7 @@
 
 #include <jansson.h>
 #include <stdlib.h>
+#include <errno.h>
 #include <string.h>
 
 #include "cli.h"
@@ -33,7 +34,8 @@ void help_encode(FILE *out)
           "                  sub_request = 0x01) carrying the command:\n\n",
           out);
     cmdargs_list(out);
-    fputs("\n  --cameras MASK: a number (1, 0x03), a list of cameras (1,2 = 0x03) or all (0xFF).\n"
+    fputs("\n  --cameras CAMS: camera numbers (1, or 1,2 = 0x03), a hex mask (0x03) or all (0xFF); a\n"
+          "                  decimal number is a camera: 3 is camera 3 (0x04).\n"
           "  --protocol 1|2: the version byte (default 1).\n",
           out);
 }
@@ -81,6 +83,9 @@ static int encode_lines(uint8_t version)
         rc = encode_object(line, version, where);
     }
     free(line);
+    if (rc == XFGCU_EXIT_OK && ferror(stdin)) { /* closed, a directory, an I/O error: not an empty input */
+        rc = cli_fail("encode: cannot read stdin: %s", strerror(errno));
+    }
     return rc;
 }
 
