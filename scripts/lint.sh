@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Static analysis gates: cppcheck and clang-tidy on the library, the program and the examples,
-# and the clang-format check on every C file of the project.
+# Static analysis gates: cppcheck and clang-tidy on the library, the program, the dissector's
+# generator, the Python package's native library and the examples, and the clang-format check on
+# every C file of the project.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,14 +12,15 @@ echo "generated files: fresh"
 
 echo "--- cppcheck"
 cppcheck --enable=warning,style,performance,portability --std=c99 --error-exitcode=2 --inline-suppr --quiet \
-  --suppress=variableScope -UXF_CONFIG_HEADER -Iinclude src include tools/xfgcu examples
+  --suppress=variableScope -UXF_CONFIG_HEADER -Iinclude -Itools/xfgcu src include tools/xfgcu tools/wireshark \
+  examples python/native
 echo "cppcheck: clean"
 
 echo "--- clang-tidy (.clang-tidy)"
 cmake -S . -B build/tidy -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_C_COMPILER=clang \
-      -DXFGCU_BUILD_TESTS=OFF -DXFGCU_BUILD_BENCH=OFF >/dev/null
+      -DXFGCU_BUILD_TESTS=OFF -DXFGCU_BUILD_BENCH=OFF -DXFGCU_BUILD_PYTHON=ON >/dev/null
 cmake --build build/tidy --parallel "$(nproc)" >/dev/null # generated headers, if any, exist
-files=(src/*.c tools/xfgcu/*.c examples/*.c)
+files=(src/*.c tools/xfgcu/*.c tools/wireshark/*.c examples/*.c python/native/*.c)
 # One file per run: clang-tidy 14 reports false va_list findings when given several.
 printf '%s\n' "${files[@]}" | xargs -P "$(nproc)" -n 1 clang-tidy -p build/tidy --quiet 2>/dev/null
 echo "clang-tidy: clean (${#files[@]} files)"

@@ -199,7 +199,7 @@ static void xf__update_link(xf_client *c)
     c->health.link = s;
     if (s == XF_LINK_DOWN) {
         xf__fail_all(c, XF_CMD_LINK_LOST); /* fail fast: never run a stale command later */
-        c->guard_wait = 0; /* down_ms without a reply: what was sent before went unanswered */
+        c->guard_wait = 0;                 /* down_ms without a reply: what was sent before went unanswered */
     }
     if (c->cfg.on_link != NULL) {
         c->cfg.on_link(c->cfg.user, s);
@@ -556,8 +556,7 @@ static int xf__may_start(xf_client *c)
      * command's state. Replies come in order: send nulls until one of theirs is back, then every
      * reply of this order answers this command. Where the link reorders, every command waits so
      * (a late reply could be of any earlier command's order). Not while the link is down. */
-    return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u) &&
-             c->health.link != XF_LINK_DOWN);
+    return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u) && c->health.link != XF_LINK_DOWN);
 }
 
 /* The order of the next packet: a command, an owed null, the stream, or null; or -1: send

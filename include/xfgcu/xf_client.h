@@ -425,7 +425,8 @@ typedef struct xf_client {
     uint8_t awaiting;                     /**< private: the last packet sent has had no reply yet */
     uint8_t window_awaiting;              /**< private: the same, when the window started */
     uint8_t busy; /**< private: in xf_client_step() or xf_client_cancel_all(): a nested step returns ::XF_ERR_BUSY */
-    uint8_t synced; /**< private: 0; 1 a reply to a null has come back; 2 and reorder_ms has passed: commands may start */
+    /** private: 0; 1: a reply to a null has come back; 2: and reorder_ms has passed, commands may start */
+    uint8_t synced;
     /** @var xf_client::last_tx_ms
      *  private: when the last packet went out */
     /** @var xf_client::sync_ms

@@ -66,7 +66,7 @@ typedef struct xf_sim_faults {
     uint16_t jitter_ms;
     uint16_t dup_permille; /**< this many packets per thousand, in each direction, arrive twice (the copy has its
                                 own jitter) */
-    uint8_t silent;            /**< answer nothing (replies are not even counted as dropped) */
+    uint8_t silent;        /**< answer nothing (replies are not even counted as dropped) */
 } xf_sim_faults;
 
 /** What the simulator has seen and done. */
@@ -86,9 +86,9 @@ typedef struct xf_sim_stats {
 
 /** A packet held back by the delay, jitter or duplicate faults (a member of xf_sim). */
 typedef struct xf_sim_delayed {
-    uint32_t due_ms;                                       /**< when it goes out (a reply) or is read (a host packet) */
-    uint8_t len;                                           /**< its length */
-    uint8_t to_gcu;                                        /**< 1: a host packet on its way in; 0: a reply */
+    uint32_t due_ms; /**< when it goes out (a reply) or is read (a host packet) */
+    uint8_t len;     /**< its length */
+    uint8_t to_gcu;  /**< 1: a host packet on its way in; 0: a reply */
     uint8_t bytes[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX]; /**< the packet */
 } xf_sim_delayed;
 

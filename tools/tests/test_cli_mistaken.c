@@ -146,8 +146,8 @@ static void test_send_json_and_trace(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
     const char *link[8];
-    const char *keys[] = {"time_mono", "time_utc", "status", "order", "order_name", "state", "failed_cameras",
-                          "packets", "elapsed_ms", "command", "link"};
+    const char *keys[] = {"time_mono",      "time_utc", "status",     "order",   "order_name", "state",
+                          "failed_cameras", "packets",  "elapsed_ms", "command", "link"};
     const char *args[16];
     tool_result r;
     json_t *o;

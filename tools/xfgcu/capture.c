@@ -151,7 +151,7 @@ static xf_err xf__capture_time(xf_capture_reader *r, const char *p, xf_capture_r
     if (*p == '-') {
         return xf__capture_bad(r, "negative time");
     }
-    while (isdigit((unsigned char)p[k]) && k < 12u) {
+    while (k < 12u && isdigit((unsigned char)p[k])) {
         sec = sec * 10u + (unsigned)(p[k++] - '0');
     }
     if (k == 0u || p[k] != '.') {

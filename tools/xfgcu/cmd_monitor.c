@@ -1,15 +1,24 @@
 /*
- * cmd_monitor.c - `xfgcu [LINK] monitor [--json] [--count N] [--duration S]`.
+ * cmd_monitor.c - `xfgcu [LINK] monitor [--json] [--count N] [--duration S] [--wait S]`.
  *
- * --json: one object per GCU packet received (the keys of decode --json),
- * flushed line by line so a pipe sees them live. Without it: on a
- * terminal, a screen redrawn in place a few times per second; elsewhere
- * (a pipe, a file, CI), one plain line per second. The client keeps the
- * link going meanwhile (null packets); a lost link is shown and retried.
- * Ends after N packets, S seconds, or SIGINT/SIGTERM (exit 0).
+ * --json: one object per GCU packet received (the keys of decode --json,
+ * after time_mono and time_utc), and one per change of the link's state once
+ * it was up ({"event": "link", "state": "down", ...}), flushed line by line so a
+ * pipe sees them live. Without it: on a terminal, a screen redrawn in
+ * place a few times per second; elsewhere (a pipe, a file, CI), one plain
+ * line per second. Every figure shown carries its age: how long since the
+ * reply it came from (the main frame's for the attitude, the sub frame's
+ * for the zoom...), so that a lost link never shows old figures as if
+ * they were current. The client keeps the link going meanwhile (null
+ * packets); a lost link is shown and retried. Ends after N packets, S
+ * seconds, or SIGINT/SIGTERM (exit 0).
+ *
+ * --wait S: the GCU may take S seconds to come up (a gimbal powering on);
+ * a person at a terminal waits until Ctrl-C by default, a script --timeout.
  */
 #define _POSIX_C_SOURCE 200809L /* isatty, fileno */
 
+#include <stdarg.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -17,22 +26,28 @@
 #include "jsonpkt.h"
 #include "online.h"
 
-#define SCREEN_MS 250u  /* terminal redraw period */
-#define LINE_MS   1000u /* plain line period */
+#define SCREEN_MS 250u      /* terminal redraw period */
+#define LINE_MS   1000u     /* plain line period */
+#define MAX_WAIT  1000000.0 /* --wait, seconds: its milliseconds fit 32 bits */
 
 void help_monitor(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] monitor [--json] [--count N] [--duration S]\n\n"
+    fputs("usage: xfgcu [LINK OPTIONS] monitor [--json] [--count N] [--duration S] [--wait S]\n\n"
           "Live telemetry while the link is kept up with null packets.\n"
           "On a terminal: a screen redrawn in place (mode, attitude, relative angles, rates, zoom,\n"
           "distance, target position, status flags, link state, reply rate, missing replies,\n"
-          "model and versions). Otherwise (a pipe or a file): one plain line per second.\n\n"
-          "  --json        one JSON object per GCU packet received, with the keys of\n"
-          "                `xfgcu decode --json`, one per line\n"
+          "model and versions), each figure with its age: how long since the reply it came from.\n"
+          "Otherwise (a pipe or a file): one plain line per second, with the ages in brackets.\n\n"
+          "  --json        one JSON object per line: each GCU packet received, with time_mono and\n"
+          "                time_utc then the keys of `xfgcu decode --json`, and each change of the\n"
+          "                link once it was up, {\"event\": \"link\", \"state\": \"stale\"|\"down\"|\"up\", ...}\n"
           "  --count N     stop after N packets from the GCU (1..1000000000)\n"
           "  --duration S  stop after S seconds (0.1..31536000)\n"
+          "  --wait S      wait up to S seconds (0..1000000) for the GCU to come up: the link to\n"
+          "                open and the first reply. Default: on a terminal, until Ctrl-C; otherwise\n"
+          "                --timeout, as --wait 0\n"
           "Without --count or --duration it runs until Ctrl-C (exit 0). A lost link is shown (with\n"
-          "--json: a note on stderr) and the link is retried.\n\n",
+          "--json: a link event, and a note on stderr) and the link is retried.\n\n",
           out);
     help_link_options(out);
     fputs("\nexample: xfgcu --udp 192.168.144.108 monitor --json --count 50 > telemetry.jsonl\n", out);
@@ -42,22 +57,23 @@ typedef struct monitor {
     online *o;
     int json, help, tty;
     long count;
-    double duration;
-    int has_count, has_duration;
+    double duration, wait_s;
+    int has_count, has_duration, has_wait;
     uint32_t received;
-    uint32_t start_ms; /* when the link was opened */
+    uint32_t start_ms; /* when the GCU came up */
     uint8_t link_seen; /* the link state last seen, for notes */
     uint8_t was_up;
 } monitor;
 
 /* ---- arguments ---------------------------------------------------------------------- */
 
-enum { O_JSON = 256, O_COUNT, O_DURATION, O_HELP };
+enum { O_JSON = 256, O_COUNT, O_DURATION, O_WAIT, O_HELP };
 
 static const struct option monitor_options[] = {
     {"json", no_argument, NULL, O_JSON},
     {"count", required_argument, NULL, O_COUNT},
     {"duration", required_argument, NULL, O_DURATION},
+    {"wait", required_argument, NULL, O_WAIT},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
@@ -70,6 +86,7 @@ static int take_arg(monitor *m, const cli_args *a, int id)
         return cli_value_long(a, 1, 1000000000L, "a number of packets, 1..1000000000", &m->count, &m->has_count);
     case O_DURATION:
         return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &m->duration, &m->has_duration);
+    case O_WAIT: return cli_value_real(a, 0.0, MAX_WAIT, "seconds, 0..1000000", &m->wait_s, &m->has_wait);
     case O_HELP: m->help = 1; return XFGCU_EXIT_OK;
     case CLI_ARG: return cli_unexpected(a);
     default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
@@ -77,6 +94,19 @@ static int take_arg(monitor *m, const cli_args *a, int id)
 }
 
 /* ---- callbacks ------------------------------------------------------------------------ */
+
+/* --json: the packet's object of decode --json, after the two times. */
+static void json_packet(const uint8_t *data, size_t len)
+{
+    json_t *pkt = jsonpkt_from_wire(data, len, XF_DIR_GCU, POD_READ_AUTO);
+    json_t *obj = cli_json_times(json_object());
+    if (pkt == NULL || obj == NULL || json_object_update(obj, pkt) != 0) {
+        json_decref(obj);
+        obj = NULL; /* cli_json_line() fails on it: out of memory */
+    }
+    json_decref(pkt);
+    (void)cli_json_line(obj);
+}
 
 static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
 {
@@ -87,21 +117,65 @@ static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t l
     }
     m->received++;
     if (m->json) {
-        (void)jsonpkt_print(data, len, XF_DIR_GCU, POD_READ_AUTO, stdout);
-        fflush(stdout);
+        json_packet(data, len);
     }
+}
+
+/* --json: {"event": "link", "state": ..., "link": ..., "reply_age_ms": ..., times}. */
+static void json_link_event(const monitor *m, xf_link_state state)
+{
+    const xf_health *h = xf_client_health(&m->o->client);
+    json_t *obj = cli_json_times(json_object());
+    if (obj != NULL) {
+        json_object_set_new(obj, "event", json_string("link"));
+        json_object_set_new(obj, "state", json_string(xf_link_state_name(state)));
+        json_object_set_new(obj, "link", json_string(m->o->desc));
+        json_object_set_new(obj, "reply_age_ms",
+                            h->replies == 0u ? json_null()
+                                             : json_integer((json_int_t)xf_ms_since(xf_posix_now_ms(), h->last_rx_ms)));
+    }
+    (void)cli_json_line(obj);
 }
 
 static void on_link(void *user, xf_link_state state)
 {
     monitor *m = (monitor *)user;
     int changed = (state == XF_LINK_DOWN) != (m->link_seen == XF_LINK_DOWN);
+    if (m->json && m->was_up) { /* monitor starts when the link is up: the changes after that */
+        json_link_event(m, state);
+    }
     if (m->json && m->was_up && changed) {
         cli_note("link %s on %s%s", state == XF_LINK_DOWN ? "down" : "back", m->o->desc,
                  state == XF_LINK_DOWN ? ": no reply for a second; retrying" : "");
     }
     m->was_up |= (uint8_t)(state == XF_LINK_UP);
     m->link_seen = (uint8_t)state;
+}
+
+/* ---- ages --------------------------------------------------------------------------------- */
+
+/* Each figure comes from the main frame (in every reply: mode, attitude, rates, pod status) or
+ * the sub frame (kept from the last one: model, versions, zoom, distance, V0.2 status). */
+typedef struct ages {
+    char main[24], sub[24]; /* "0.02 s", or "-" when none came yet */
+} ages;
+
+static void age_text(char *buf, size_t cap, int have, uint32_t at_ms, uint32_t now)
+{
+    if (have) {
+        snprintf(buf, cap, "%.2f s", cli_seconds(xf_ms_since(now, at_ms)));
+    } else {
+        snprintf(buf, cap, "-");
+    }
+}
+
+static void get_ages(const monitor *m, ages *a)
+{
+    const xf_telemetry *t = xf_client_telemetry(&m->o->client);
+    const xf_health *h = xf_client_health(&m->o->client);
+    uint32_t now = xf_posix_now_ms();
+    age_text(a->main, sizeof(a->main), t->have_main, h->last_rx_ms, now);
+    age_text(a->sub, sizeof(a->sub), t->have_sub, t->sub_ms, now);
 }
 
 /* ---- the screen ------------------------------------------------------------------------- */
@@ -136,14 +210,50 @@ static void rate_text(const monitor *m, char *buf, size_t cap)
     }
 }
 
-static void draw_v2(const xf_telemetry *t)
+/* One row of the screen: its label, its text, and the age of what it shows (NULL: none). */
+static void row(const char *label, const char *age, const char *fmt, ...) CLI_PRINTF(3, 4);
+
+static void row(const char *label, const char *age, const char *fmt, ...)
 {
-    if (t->version < XF_PROTOCOL_V2) {
-        return;
+    char text[200];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof(text), fmt, ap);
+    va_end(ap);
+    printf("%-12s%-58s %s\n", label, text, age != NULL ? age : ""); /* 77 columns with the age */
+}
+
+static void draw_gimbal(const xf_telemetry *t, const ages *a)
+{
+    const char *model = xf_gimbal_model(t->gimbal_code);
+    row("gimbal", a->sub, "%s (code %u), hardware %u, firmware %u, protocol %u", model ? model : "unknown model",
+        t->gimbal_code, t->hw_version, t->fw_version, t->version);
+    row("error code", a->sub, "0x%04X", t->error_code);
+    if (t->version >= XF_PROTOCOL_V2) {
+        row("thermal", a->sub, "status 0x%02X", t->thermal_status);
+        row("camera", a->sub, "status 0x%04X (%s%s)", t->camera_status,
+            yes_no(t->camera_status & XF_CAMERA_RECORDING, "recording", "not recording"),
+            yes_no(t->camera_status & XF_CAMERA_OSD_ON, ", OSD on", ""));
+        row("time zone", a->sub, "UTC%+d", t->time_zone);
     }
-    printf("thermal     status 0x%02X   camera status 0x%04X (%s%s)   time zone UTC%+d\n", t->thermal_status,
-           t->camera_status, yes_no(t->camera_status & XF_CAMERA_RECORDING, "recording", "not recording"),
-           yes_no(t->camera_status & XF_CAMERA_OSD_ON, ", OSD on", ""), t->time_zone);
+}
+
+static void draw_main(const xf_telemetry *t, const xf_telemetry_units *u, const ages *a)
+{
+    const char *mode = xf_mode_name(t->gimbal_mode);
+    row("mode", a->main, "%s (0x%02X)", mode ? mode : "unknown", t->gimbal_mode);
+    row("attitude", a->main, "roll %8.2f   pitch %8.2f   yaw %8.2f deg", (double)u->cam_roll_deg,
+        (double)u->cam_pitch_deg, (double)u->cam_yaw_deg);
+    row("relative", a->main, "x    %8.2f   y     %8.2f   z   %8.2f deg", (double)u->rel_x_deg, /* to the carrier */
+        (double)u->rel_y_deg, (double)u->rel_z_deg);
+    row("rates", a->main, "x    %8.2f   y     %8.2f   z   %8.2f deg/s", (double)u->rate_x_dps, (double)u->rate_y_dps,
+        (double)u->rate_z_dps);
+    row("tracking", a->main, "%s, target offset x %d y %d", yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "on", "off"),
+        t->target_offset_x, t->target_offset_y);
+    row("flags", a->main, "ranging %s, night vision %s, lighting %s",
+        yes_no(pod_flags(t) & XF_POD_RANGING_ON, "on", "off"),
+        yes_no(pod_flags(t) & XF_POD_NIGHT_VISION_ON, "on", "off"),
+        yes_no(pod_flags(t) & XF_POD_LIGHTING_ON, "on", "off"));
 }
 
 static void draw_screen(const monitor *m)
@@ -151,37 +261,27 @@ static void draw_screen(const monitor *m)
     const xf_telemetry *t = xf_client_telemetry(&m->o->client);
     const xf_health *h = xf_client_health(&m->o->client);
     const xf_parser_stats *ps = xf_client_parser_stats(&m->o->client);
-    const char *model = xf_gimbal_model(t->gimbal_code);
     xf_telemetry_units u;
     char dist[160], rate[64];
-    const char *mode = xf_mode_name(t->gimbal_mode);
+    ages a;
     (void)xf_telemetry_convert(t, &u);
     distance_text(t, &u, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
+    get_ages(m, &a);
     printf("\033[H\033[2J"); /* cursor home, clear */
-    printf("xfgcu monitor: %s   (Ctrl-C to quit)\n\n", m->o->desc);
-    printf("gimbal      %s (code %u), hardware %u, firmware %u, protocol %u\n", model ? model : "unknown model",
-           t->gimbal_code, t->hw_version, t->fw_version, t->version);
-    printf("mode        %s (0x%02X)\n", mode ? mode : "unknown", t->gimbal_mode);
-    printf("attitude    roll %8.2f   pitch %8.2f   yaw %8.2f deg\n", (double)u.cam_roll_deg, (double)u.cam_pitch_deg,
-           (double)u.cam_yaw_deg);
-    printf("relative    x    %8.2f   y     %8.2f   z   %8.2f deg (to the carrier)\n", (double)u.rel_x_deg,
-           (double)u.rel_y_deg, (double)u.rel_z_deg);
-    printf("rates       x    %8.2f   y     %8.2f   z   %8.2f deg/s\n", (double)u.rate_x_dps, (double)u.rate_y_dps,
-           (double)u.rate_z_dps);
-    printf("zoom        camera 1 %.1fx   camera 2 %.1fx\n", (double)u.zoom_cam1, (double)u.zoom_cam2);
-    printf("distance    %s\n", dist);
-    printf("tracking    %s, target offset x %d y %d\n", yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "on", "off"),
-           t->target_offset_x, t->target_offset_y);
-    printf("flags       ranging %s, night vision %s, lighting %s, error code 0x%04X\n",
-           yes_no(pod_flags(t) & XF_POD_RANGING_ON, "on", "off"),
-           yes_no(pod_flags(t) & XF_POD_NIGHT_VISION_ON, "on", "off"),
-           yes_no(pod_flags(t) & XF_POD_LIGHTING_ON, "on", "off"), t->error_code);
-    draw_v2(t);
-    printf("link        %s, %s, %u sent, %u received\n", xf_link_state_name(h->link), rate, (unsigned)h->packets_sent,
-           (unsigned)h->replies);
-    printf("parser      %u CRC errors, %u length errors, %u bytes skipped\n", (unsigned)ps->crc_errors,
-           (unsigned)ps->length_errors, (unsigned)ps->bytes_skipped);
+    printf("xfgcu monitor: %s   (Ctrl-C to quit)\n", m->o->desc);
+    printf("%s\n\n", h->link == XF_LINK_UP ? ""
+                                           : "NO CURRENT DATA: the link is not up; the figures are the last received, "
+                                             "as old as their age says");
+    printf("%-70s %s\n", "", "age");
+    draw_gimbal(t, &a);
+    draw_main(t, &u, &a);
+    row("zoom", a.sub, "camera 1 %.1fx   camera 2 %.1fx", (double)u.zoom_cam1, (double)u.zoom_cam2);
+    row("distance", a.sub, "%s", dist);
+    row("link", a.main, "%s, %s, %u sent, %u received", xf_link_state_name(h->link), rate, (unsigned)h->packets_sent,
+        (unsigned)h->replies);
+    row("parser", NULL, "%u CRC errors, %u length errors, %u bytes skipped", (unsigned)ps->crc_errors,
+        (unsigned)ps->length_errors, (unsigned)ps->bytes_skipped);
     fflush(stdout);
 }
 
@@ -192,13 +292,16 @@ static void print_line(const monitor *m, uint32_t elapsed)
     const char *mode = xf_mode_name(t->gimbal_mode);
     xf_telemetry_units u;
     char dist[160], rate[64];
+    ages a;
     (void)xf_telemetry_convert(t, &u);
     distance_text(t, &u, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
-    printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg  zoom %.1fx/%.1fx  %s%s\n",
+    get_ages(m, &a);
+    printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg%s (age %s)  zoom %.1fx/%.1fx  %s "
+           "(age %s)\n",
            cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", (double)u.cam_roll_deg,
-           (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, (double)u.zoom_cam1, (double)u.zoom_cam2, dist,
-           yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "  tracking", ""));
+           (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "  tracking", ""),
+           a.main, (double)u.zoom_cam1, (double)u.zoom_cam2, dist, a.sub);
     fflush(stdout);
 }
 
@@ -233,6 +336,17 @@ static void run_loop(monitor *m)
     }
 }
 
+/* --wait S, or its default: a person at a terminal waits until Ctrl-C, a script --timeout. */
+static void set_wait(monitor *m, int terminal)
+{
+    if (m->has_wait) {
+        m->o->wait_ms = (uint32_t)(m->wait_s * 1000.0 + 0.5);
+    } else if (terminal) {
+        m->o->wait_ms = ONLINE_WAIT_FOREVER;
+    }
+    m->o->wait_note = terminal;
+}
+
 int cmd_monitor(const cli_link *link, int argc, char **argv)
 {
     monitor m;
@@ -256,10 +370,13 @@ int cmd_monitor(const cli_link *link, int argc, char **argv)
     hooks.on_link = on_link;
     hooks.user = &m;
     cli_signals_init();
-    m.start_ms = xf_posix_now_ms();
     m.o = online_new();
+    if (m.o != NULL) {
+        set_wait(&m, isatty(fileno(stdin)) && m.tty);
+    }
     rc = (m.o != NULL) ? online_open(m.o, link, "monitor", &hooks) : XFGCU_EXIT_USAGE;
     if (rc == XFGCU_EXIT_OK) {
+        m.start_ms = xf_posix_now_ms(); /* the GCU is up: the reply rate counts from here */
         run_loop(&m);
     }
     online_free(m.o);

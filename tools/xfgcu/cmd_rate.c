@@ -5,6 +5,8 @@
  * then the desired rates in every packet for S seconds, refreshed each
  * time round the loop (the client's watchdog zeroes rates that are not),
  * then zero rates for a few packets so the gimbal holds where it is.
+ * Prints where it started and stopped; with --json, two JSON lines
+ * instead: the mode's result and the motion's.
  */
 #include <string.h>
 
@@ -16,13 +18,17 @@
 
 void help_rate(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] rate --pitch DPS --yaw DPS --duration S\n\n"
+    fputs("usage: xfgcu [LINK OPTIONS] rate --pitch DPS --yaw DPS --duration S [--json]\n\n"
           "Turn the gimbal at a steady rate: switch it to head lock (the head_lock command, run the\n"
           "protocol's way), send the desired angular velocities in every packet for S seconds, then\n"
           "zero rates so it holds still. Prints where it started and where it stopped.\n\n"
           "  --pitch DPS     pitch rate, -150..150 deg/s (positive: the pitch angle grows)\n"
           "  --yaw DPS       yaw rate, -150..150 deg/s (positive: the yaw angle grows)\n"
-          "  --duration S    how long, 0.02..3600 s\n\n"
+          "  --duration S    how long, 0.02..3600 s\n"
+          "  --json          one JSON object per line instead, each with time_mono and time_utc: the\n"
+          "                  mode's result ({\"step\": \"mode\", \"status\": \"ok\", ...}, as send --json),\n"
+          "                  then the motion's ({\"step\": \"rate\", \"status\": \"done\", \"yaw\": 64.98,\n"
+          "                  \"rate_z\": 0.0, ...}); docs/cli.md lists the keys. Errors stay one line on stderr.\n\n"
           "The protocol scales rates by the zoom of the main camera (at 5x, 150 deg/s is sent as\n"
           "30 deg/s); the library does the scaling, so the gimbal turns at the rate asked as long\n"
           "as it is within 150 / zoom deg/s.\n\n"
@@ -34,15 +40,16 @@ void help_rate(FILE *out)
 
 typedef struct rate_args {
     double pitch, yaw, duration;
-    int has_pitch, has_yaw, has_duration, help;
+    int has_pitch, has_yaw, has_duration, json, help;
 } rate_args;
 
-enum { O_PITCH = 256, O_YAW, O_DURATION, O_HELP };
+enum { O_PITCH = 256, O_YAW, O_DURATION, O_JSON, O_HELP };
 
 static const struct option rate_options[] = {
     {"pitch", required_argument, NULL, O_PITCH},
     {"yaw", required_argument, NULL, O_YAW},
     {"duration", required_argument, NULL, O_DURATION},
+    {"json", no_argument, NULL, O_JSON},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
@@ -53,6 +60,7 @@ static int take_arg(rate_args *r, const cli_args *a, int id)
     case O_PITCH: return cli_value_real(a, -MAX_DPS, MAX_DPS, "deg/s, -150..150", &r->pitch, &r->has_pitch);
     case O_YAW: return cli_value_real(a, -MAX_DPS, MAX_DPS, "deg/s, -150..150", &r->yaw, &r->has_yaw);
     case O_DURATION: return cli_value_real(a, 0.02, 3600.0, "seconds, 0.02..3600", &r->duration, &r->has_duration);
+    case O_JSON: r->json = 1; return XFGCU_EXIT_OK;
     case O_HELP: r->help = 1; return XFGCU_EXIT_OK;
     case CLI_ARG: return cli_unexpected(a);
     default: return XFGCU_EXIT_USAGE; /* CLI_BAD: said */
@@ -98,18 +106,60 @@ static void stream_rates(online *o, const rate_args *a, uint32_t *elapsed)
     online_linger(o, ZERO_PACKETS);
 }
 
+/* --json: the motion's line, with where it started (@p start, raw 0.01 deg: roll, pitch, yaw). */
+static void motion_json(const online *o, const rate_args *a, const int32_t start[3], uint32_t elapsed_ms)
+{
+    const xf_telemetry *t = xf_client_telemetry(&o->client);
+    const char *status = xf_client_link(&o->client) == XF_LINK_DOWN ? "link_lost"
+                         : cli_stop_requested()                     ? "interrupted"
+                                                                    : "done";
+    xf_telemetry_units u;
+    json_t *obj = cli_json_times(json_object());
+    (void)xf_telemetry_convert(t, &u);
+    if (obj != NULL) {
+        json_object_set_new(obj, "step", json_string("rate"));
+        json_object_set_new(obj, "status", json_string(status));
+        json_object_set_new(obj, "pitch_dps", json_real(a->pitch));
+        json_object_set_new(obj, "yaw_dps", json_real(a->yaw));
+        json_object_set_new(obj, "duration_s", json_real(a->duration));
+        json_object_set_new(obj, "elapsed_ms", json_integer((json_int_t)elapsed_ms));
+        json_object_set_new(obj, "start_roll", json_real((double)xf_cdeg(start[0])));
+        json_object_set_new(obj, "start_pitch", json_real((double)xf_cdeg(start[1])));
+        json_object_set_new(obj, "start_yaw", json_real((double)xf_cdeg(start[2])));
+        json_object_set_new(obj, "roll", json_real((double)xf_cdeg(t->cam_roll)));
+        json_object_set_new(obj, "pitch", json_real((double)xf_cdeg(t->cam_pitch)));
+        json_object_set_new(obj, "yaw", json_real((double)xf_cdeg(t->cam_yaw)));
+        json_object_set_new(obj, "rate_x", json_real((double)u.rate_x_dps));
+        json_object_set_new(obj, "rate_y", json_real((double)u.rate_y_dps));
+        json_object_set_new(obj, "rate_z", json_real((double)u.rate_z_dps));
+        json_object_set_new(
+            obj, "attitude_age_ms",
+            json_integer((json_int_t)xf_ms_since(xf_posix_now_ms(), xf_client_health(&o->client)->last_rx_ms)));
+        json_object_set_new(obj, "link", json_string(o->desc));
+    }
+    (void)cli_json_line(obj);
+}
+
 /* Once in head lock (online_mode_fn). */
 static int turn(online *o, const void *args)
 {
     const rate_args *a = (const rate_args *)args;
     const xf_telemetry *t = xf_client_telemetry(&o->client);
-    double pitch0 = (double)xf_cdeg(t->cam_pitch), yaw0 = (double)xf_cdeg(t->cam_yaw);
+    int32_t start[3];
     uint32_t elapsed = 0;
     char where[96];
+    start[0] = t->cam_roll;
+    start[1] = t->cam_pitch;
+    start[2] = t->cam_yaw;
     stream_rates(o, a, &elapsed);
-    online_attitude_text(t, where, sizeof(where));
-    printf("turned %.2f s: pitch %.2f -> %.2f deg, yaw %.2f -> %.2f deg; holding at %s\n", cli_seconds(elapsed), pitch0,
-           (double)xf_cdeg(t->cam_pitch), yaw0, (double)xf_cdeg(t->cam_yaw), where);
+    if (a->json) {
+        motion_json(o, a, start, elapsed);
+    } else {
+        online_attitude_text(t, where, sizeof(where));
+        printf("turned %.2f s: pitch %.2f -> %.2f deg, yaw %.2f -> %.2f deg; holding at %s\n", cli_seconds(elapsed),
+               (double)xf_cdeg(start[1]), (double)xf_cdeg(t->cam_pitch), (double)xf_cdeg(start[2]),
+               (double)xf_cdeg(t->cam_yaw), where);
+    }
     if (xf_client_link(&o->client) == XF_LINK_DOWN) {
         return cli_fail_link("rate: link lost on %s after %.2f s", o->desc, cli_seconds(elapsed));
     }
@@ -127,7 +177,7 @@ int cmd_rate(const cli_link *link, int argc, char **argv)
     if (rc == XFGCU_EXIT_OK && a.help) {
         help_rate(stdout);
     } else if (rc == XFGCU_EXIT_OK) {
-        rc = online_run_in_mode(link, "rate", XF_ORDER_HEAD_LOCK, "rate: head_lock", turn, &a);
+        rc = online_run_in_mode(link, "rate", XF_ORDER_HEAD_LOCK, "rate: head_lock", a.json, turn, &a);
     }
     return rc;
 }

@@ -11,10 +11,15 @@
  *     xfgcu sim: listening on serial /dev/ttyUSB0 at 115200 baud
  *
  * then runs until SIGINT or SIGTERM (exit 0), or --duration, printing
- * nothing more unless --verbose.
+ * nothing more unless --verbose. With --json, the same log as JSON Lines,
+ * each object with time_mono and time_utc: {"event": "listening", ...},
+ * then {"event": "executed", ...} with --verbose.
  */
+#define _POSIX_C_SOURCE 200809L /* getpid */
+
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
 #include "online.h"
@@ -50,7 +55,10 @@ void help_sim(FILE *out)
           "  --dup PERMILLE        this share of packets, both ways, arrive twice, 0..1000\n"
           "  --calibration-ms MS   how long calibration answers \"operating\", 0..600000 (default 1500)\n"
           "  --duration S          stop by itself after S seconds\n"
-          "  --verbose             print each order it executes\n\n"
+          "  --verbose             print each order it executes\n"
+          "  --json                its lines as JSON objects instead, one per line, with time_mono and\n"
+          "                        time_utc: {\"event\": \"listening\", \"link\": \"tcp\", \"port\": 2332, ...},\n"
+          "                        {\"event\": \"executed\", \"order_name\": \"shutter\", ...} (docs/cli.md)\n\n"
           "example: xfgcu sim --udp 0 &   then   xfgcu --udp 127.0.0.1 --gcu-port PORT --local-port 0 monitor\n",
           out);
 }
@@ -69,7 +77,7 @@ typedef struct sim_args {
     long drop, delay, jitter, dup, calibration_ms;
     int has_baud, has_drop, has_delay, has_calibration;
     double duration;
-    int has_duration, verbose, help;
+    int has_duration, verbose, json, help;
 } sim_args;
 
 /* ---- arguments ------------------------------------------------------------------------- */
@@ -91,6 +99,7 @@ enum {
     O_CALIBRATION,
     O_DURATION,
     O_VERBOSE,
+    O_JSON,
     O_HELP
 };
 
@@ -113,6 +122,7 @@ static const struct option sim_options[] = {
     {"calibration-ms", required_argument, NULL, O_CALIBRATION},
     {"duration", required_argument, NULL, O_DURATION},
     {"verbose", no_argument, NULL, O_VERBOSE},
+    {"json", no_argument, NULL, O_JSON},
     {"help", no_argument, NULL, O_HELP},
     {NULL, 0, NULL, 0},
 };
@@ -181,6 +191,7 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_DURATION:
         return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &s->duration, &s->has_duration);
     case O_VERBOSE: s->verbose = 1; return XFGCU_EXIT_OK;
+    case O_JSON: s->json = 1; return XFGCU_EXIT_OK;
     case O_HELP: s->help = 1; return XFGCU_EXIT_OK;
     case CLI_ARG: return cli_unexpected(a);
     case CLI_BAD: return XFGCU_EXIT_USAGE;
@@ -280,8 +291,42 @@ static int open_gcu_link(sim_run *s, const sim_args *a)
     return XFGCU_EXIT_OK;
 }
 
+static const char *const kind_names[] = {"tcp", "udp", "pty", "serial"};
+
+/* --json: the ready line as {"event": "listening", "link": KIND, ...where..., times}. */
+static void json_ready(const sim_run *s, const sim_args *a)
+{
+    json_t *obj = cli_json_times(json_object());
+    if (obj != NULL) {
+        json_object_set_new(obj, "event", json_string("listening"));
+        json_object_set_new(obj, "link", json_string(kind_names[a->kind]));
+        switch ((sim_kind)a->kind) {
+        case SIM_SERIAL:
+            json_object_set_new(obj, "path", json_string(a->serial));
+            json_object_set_new(obj, "baud", json_integer(a->baud));
+            break;
+        case SIM_PTY:
+            json_object_set_new(obj, "path", json_string(s->link.pty_path));
+            json_object_set_new(obj, "link_path", a->link != NULL ? json_string(a->link) : json_null());
+            break;
+        default:
+            json_object_set_new(obj, "host", json_string(s->link.bind_host));
+            json_object_set_new(obj, "port", json_integer(s->link.port));
+            json_object_set_new(obj, "reply_to", a->reply_to != NULL ? json_string(a->reply_to) : json_null());
+            break;
+        }
+        json_object_set_new(obj, "protocol", json_integer(a->version));
+        json_object_set_new(obj, "pid", json_integer((json_int_t)getpid()));
+    }
+    (void)cli_json_line(obj);
+}
+
 static void print_ready(const sim_run *s, const sim_args *a)
 {
+    if (a->json) {
+        json_ready(s, a);
+        return;
+    }
     switch ((sim_kind)a->kind) {
     case SIM_SERIAL: printf("xfgcu sim: listening on serial %s at %ld baud\n", a->serial, a->baud); break;
     case SIM_PTY:
@@ -322,15 +367,34 @@ static int start_sim(sim_run *s, const sim_args *a)
     return XFGCU_EXIT_OK;
 }
 
-static void report_executed(sim_run *s, uint32_t elapsed)
+/* --verbose --json: {"event": "executed", "t": ..., "order": ..., "order_name": ..., "state": ..., times}. */
+static void json_executed(uint32_t elapsed, int order, const char *name, unsigned state)
+{
+    json_t *obj = cli_json_times(json_object());
+    if (obj != NULL) {
+        json_object_set_new(obj, "event", json_string("executed"));
+        json_object_set_new(obj, "t", json_real(cli_seconds(elapsed)));
+        json_object_set_new(obj, "order", json_integer(order));
+        json_object_set_new(obj, "order_name", name != NULL ? json_string(name) : json_null());
+        json_object_set_new(obj, "state", json_integer(state));
+    }
+    (void)cli_json_line(obj);
+}
+
+static void report_executed(sim_run *s, uint32_t elapsed, int json)
 {
     int k;
     for (k = 0; k < 256; k++) {
         if (s->sim.stats.executed[k] != s->executed[k]) {
             const char *name = xf_order_name((uint8_t)k);
+            unsigned state = s->sim.fb_order == k ? s->sim.fb_state : 0u;
             s->executed[k] = s->sim.stats.executed[k];
+            if (json) {
+                json_executed(elapsed, k, name, state);
+                continue;
+            }
             printf("xfgcu sim: %.3f s: executed %s (0x%02X), state 0x%02X\n", cli_seconds(elapsed),
-                   name ? name : "unknown order", (unsigned)k, s->sim.fb_order == k ? s->sim.fb_state : 0u);
+                   name ? name : "unknown order", (unsigned)k, state);
             fflush(stdout);
         }
     }
@@ -345,7 +409,7 @@ static void run_sim(sim_run *s, const sim_args *a)
         (void)xf_posix_poll(NULL, 0, sims, 1, 50);
         elapsed = xf_ms_since(xf_posix_now_ms(), start);
         if (a->verbose) {
-            report_executed(s, elapsed);
+            report_executed(s, elapsed, a->json);
         }
     }
 }

@@ -413,21 +413,20 @@ static int hex_error(const stream *s, const hex_fault *fault)
 /* digits[.digits]: the length, 0 if none; *frac tells whether a point was there. */
 static size_t seconds_at(const char *p, double *sec, int *frac)
 {
-    size_t k = strspn(p, "0123456789"), f = 0;
-    char *end;
+    size_t k = strspn(p, "0123456789");
     *frac = 0;
     if (k == 0u || k > 12u) {
         return 0;
     }
     if (p[k] == '.') {
-        f = strspn(p + k + 1, "0123456789");
+        size_t f = strspn(p + k + 1, "0123456789");
         if (f == 0u || f > 9u) {
             return 0;
         }
         *frac = 1;
         k += 1u + f;
     }
-    *sec = strtod(p, &end);
+    *sec = strtod(p, NULL);
     return k;
 }
 

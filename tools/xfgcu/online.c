@@ -7,6 +7,7 @@
 #include "online.h"
 #include "cmdargs.h"
 
+#include <poll.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -145,10 +146,46 @@ static int options_spec(online *o, xf_link_spec *spec)
     return (err == XF_OK) ? XFGCU_EXIT_OK : cli_fail("%s: %s", o->option, reason);
 }
 
-static int open_link(online *o)
+/* ---- waiting for the GCU (monitor --wait) ---------------------------------------------- */
+
+/* online_open() began waiting at @p start and the GCU is not up: is there time left for it, by
+ * online.wait_ms (never less than --timeout)? Past --timeout, a note says once that it waits, and @p why. */
+static int keep_waiting(online *o, uint32_t start, const char *why)
+{
+    uint32_t waited = xf_ms_since(xf_posix_now_ms(), start);
+    uint32_t limit = (o->wait_ms > (uint32_t)o->opt->timeout_ms) ? o->wait_ms : (uint32_t)o->opt->timeout_ms;
+    if (o->wait_ms == 0u || cli_stop_requested() || (o->wait_ms != ONLINE_WAIT_FOREVER && waited >= limit)) {
+        return 0;
+    }
+    if (o->wait_note && waited >= (uint32_t)o->opt->timeout_ms) {
+        o->wait_note = 0;
+        if (o->wait_ms == ONLINE_WAIT_FOREVER) {
+            cli_note("waiting for the GCU on %s (%s); Ctrl-C to stop", o->desc[0] ? o->desc : o->option, why);
+        } else {
+            cli_note("waiting up to %.1f s for the GCU on %s (%s)", cli_seconds(o->wait_ms),
+                     o->desc[0] ? o->desc : o->option, why);
+        }
+    }
+    return 1;
+}
+
+/* The one line when a wait (online.wait_ms) ends with no GCU. */
+static int waited_in_vain(const online *o, uint32_t start, const char *why)
+{
+    const char *where = o->desc[0] ? o->desc : o->option;
+    if (cli_stop_requested()) {
+        return cli_fail_link("%s: interrupted while waiting for the GCU on %s", o->context, where);
+    }
+    return cli_fail_link("no answer from the GCU on %s within %.1f s%s%s", where,
+                         cli_seconds(xf_ms_since(xf_posix_now_ms(), start)), why ? ": " : "", why ? why : "");
+}
+
+static int open_link(online *o, uint32_t start)
 {
     const cli_link *opt = o->opt;
     const char *name = "tcp", *value = opt->tcp;
+    uint32_t slice = (o->wait_ms > 0u) ? 100u : (uint32_t)opt->timeout_ms; /* waiting: look at signals often */
+    xf_err err;
     xf_link_spec spec;
     int rc;
     if (opt->serial != NULL) {
@@ -163,8 +200,18 @@ static int open_link(online *o)
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }
-    if (xf_link_open_spec(&o->link, &spec) != XF_OK || xf_link_wait(&o->link, (uint32_t)opt->timeout_ms) != XF_OK) {
-        return cli_fail_link("%s: %s", o->option, xf_link_error(&o->link)->text);
+    for (;;) { /* with a wait, a link that cannot open yet (no device, TCP refused) is tried again */
+        err = o->link.is_open ? XF_OK : xf_link_open_spec(&o->link, &spec);
+        if (err == XF_OK && xf_link_wait(&o->link, slice) == XF_OK) {
+            break;
+        }
+        if (!keep_waiting(o, start, xf_link_error(&o->link)->text)) {
+            return (o->wait_ms > 0u) ? waited_in_vain(o, start, xf_link_error(&o->link)->text)
+                                     : cli_fail_link("%s: %s", o->option, xf_link_error(&o->link)->text);
+        }
+        if (!o->link.is_open) {
+            (void)poll(NULL, 0, 100);
+        }
     }
     (void)xf_link_describe(&o->link, o->desc, sizeof(o->desc));
     return xf_link_hal(&o->link, &o->raw) == XF_OK ? XFGCU_EXIT_OK : cli_fail_link("%s: not open", o->option);
@@ -244,16 +291,19 @@ static int check_timing(const cli_link *l, const xf_client_config *cc)
     if (period + 2 * l->reorder_ms >= (long)cc->stale_ms) {
         if (low == 0) {
             return cli_fail("--reorder %ld: too long; silence of twice that around each command would read as a "
-                            "stale link (%u ms)", l->reorder_ms, (unsigned)cc->stale_ms);
+                            "stale link (%u ms)",
+                            l->reorder_ms, (unsigned)cc->stale_ms);
         }
         return cli_fail("--rate %ld: a packet every %ld ms%s, but the link reads stale after %u ms without a reply: "
-                        "give --rate %ld or more", l->rate_hz, period, l->reorder_ms > 0 ? " and twice --reorder" : "",
-                        (unsigned)cc->stale_ms, low);
+                        "give --rate %ld or more",
+                        l->rate_hz, period, l->reorder_ms > 0 ? " and twice --reorder" : "", (unsigned)cc->stale_ms,
+                        low);
     }
     if (l->timeout_ms < 2 * period + 2 * l->reorder_ms) {
         return cli_fail("--timeout %ld: shorter than a round trip at --rate %ld (two packets, %ld ms%s): give "
-                        "--timeout %ld or more", l->timeout_ms, l->rate_hz, 2 * period,
-                        l->reorder_ms > 0 ? ", plus twice --reorder" : "", 2 * period + 2 * l->reorder_ms);
+                        "--timeout %ld or more",
+                        l->timeout_ms, l->rate_hz, 2 * period, l->reorder_ms > 0 ? ", plus twice --reorder" : "",
+                        2 * period + 2 * l->reorder_ms);
     }
     return XFGCU_EXIT_OK;
 }
@@ -298,7 +348,8 @@ static const char *link_error(const online *o)
     return xf_client_health(&o->client)->transport_closed && text[0] != '\0' ? text : NULL;
 }
 
-static int wait_first_reply(online *o)
+/* The first reply within --timeout, or within the wait (online.wait_ms) that began at @p wait_start. */
+static int wait_first_reply(online *o, uint32_t wait_start)
 {
     uint32_t start = xf_posix_now_ms();
     uint32_t limit = (uint32_t)o->opt->timeout_ms;
@@ -309,6 +360,13 @@ static int wait_first_reply(online *o)
         }
         if (xf_ms_since(xf_posix_now_ms(), start) >= limit) {
             why = link_error(o);
+            if (keep_waiting(o, wait_start, why ? why : "no answer yet")) {
+                online_poll(o, 20);
+                continue;
+            }
+            if (o->wait_ms > 0u) {
+                return waited_in_vain(o, wait_start, why);
+            }
             return cli_fail_link("no answer from the GCU on %s within %u ms%s%s", o->desc, (unsigned)limit,
                                  why ? ": " : "", why ? why : "");
         }
@@ -328,19 +386,30 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
     }
     if (rc == XFGCU_EXIT_OK) {
         o->t0_ms = xf_posix_now_ms();
-        rc = open_link(o);
+        rc = open_link(o, o->t0_ms);
     }
     if (rc == XFGCU_EXIT_OK) {
         rc = start_client(o, hooks);
     }
     if (rc == XFGCU_EXIT_OK) {
-        rc = wait_first_reply(o);
+        rc = wait_first_reply(o, o->t0_ms);
     }
     return rc;
 }
 
-int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, online_mode_fn then,
-                       const void *args)
+/* --json of point and rate: the mode's result, one line. */
+static void mode_json(const online *o, const xf_cmd_result *r)
+{
+    json_t *obj = online_result_json(r);
+    if (obj != NULL) {
+        json_object_set_new(obj, "step", json_string("mode"));
+        json_object_set_new(obj, "link", json_string(o->desc));
+    }
+    (void)cli_json_line(obj);
+}
+
+int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, int json,
+                       online_mode_fn then, const void *args)
 {
     online *o = online_new();
     xf_command cmd;
@@ -354,6 +423,9 @@ int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, 
         xf_client_clear_control(&o->client); /* nothing the mode before would read its own way */
         xf_command_init(&cmd, order);
         rc = online_run(o, &cmd, &r, NULL, NULL);
+    }
+    if (rc == XFGCU_EXIT_OK && json) {
+        mode_json(o, &r);
     }
     if (rc == XFGCU_EXIT_OK) {
         rc = online_result_exit(o, what, &r);
@@ -414,7 +486,8 @@ json_t *cli_json_times(json_t *obj)
 
 int cli_json_line(json_t *obj)
 {
-    char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER) : NULL;
+    /* 15 significant digits: a double's decimal value without its binary tail (0.673, not 0.67300000000000004) */
+    char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(15)) : NULL;
     json_decref(obj);
     if (text == NULL) {
         return -1;

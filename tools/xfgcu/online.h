@@ -71,7 +71,13 @@ typedef struct online {
     online_hooks hooks;    /* the command's callbacks, called after --trace's */
     int client_on;         /* the client was started: online_free() lets it settle first */
     unsigned submit_flags; /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
+    uint32_t wait_ms;      /* set before online_open() (monitor --wait): 0, --timeout as usual; else how long the
+                              link may take to open and the GCU to answer first, ONLINE_WAIT_FOREVER: until a signal */
+    int wait_note;         /* print one note on stderr when the wait goes on past --timeout (a person is watching) */
 } online;
+
+/** online.wait_ms: wait for the GCU until SIGINT or SIGTERM. */
+#define ONLINE_WAIT_FOREVER UINT32_MAX
 
 /** The link options name a link? Prints the usage error if not. @return an exit code. */
 int online_check_link(const cli_link *opt, const char *context);
@@ -99,10 +105,12 @@ typedef int (*online_mode_fn)(online *o, const void *args);
  * Open the link (online_open()), switch the gimbal's mode with @p order, run
  * as send runs it, with no control quantities until the mode reads them,
  * then @p then(o, @p args); close the link. Catches SIGINT and SIGTERM.
- * @p what names the order in the messages. @return an exit code.
+ * @p what names the order in the messages. With @p json, the mode's result is
+ * printed first as one JSON line (online_result_json() with "step": "mode" and
+ * "link"), whatever it is. @return an exit code.
  */
-int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, online_mode_fn then,
-                       const void *args);
+int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, int json,
+                       online_mode_fn then, const void *args);
 
 /** One round of the loop: wait at most @p max_wait_ms for the link or the next packet, then step the client. */
 void online_poll(online *o, int max_wait_ms);
