@@ -609,28 +609,23 @@ static void xf__hold(xf_sim *s, const uint8_t *bytes, size_t len, uint8_t to_gcu
     s->n_delayed++;
 }
 
-static void xf__on_packet(xf_sim *s, const xf_host_packet *p);
+/* How many copies of a packet arrive: two with the duplicate fault. */
+static int xf__copies(xf_sim *s) { return 1 + xf__chance(s, s->fault.dup_permille); }
 
-/* One packet through the jitter and duplicate faults: each copy goes now or waits its turn.
- * Replies also wait delay_ms. xf_sim_process() has no later: it never holds. */
-static void xf__send_copies(xf_sim *s, const uint8_t *bytes, size_t len, uint8_t to_gcu)
+/* When one copy is due: after @p delay and its own draw of the jitter. */
+static uint32_t xf__due(xf_sim *s, uint32_t delay)
 {
-    int copies = 1 + xf__chance(s, s->fault.dup_permille);
-    uint32_t delay = to_gcu ? 0u : s->fault.delay_ms;
-    for (; copies > 0; copies--) {
-        uint32_t extra = (s->fault.jitter_ms > 0u) ? xf__rand(s) % (s->fault.jitter_ms + 1u) : 0u;
-        if (s->cap_buf == NULL && (delay + extra > 0u || s->n_delayed > 0u)) {
-            xf__hold(s, bytes, len, to_gcu, s->now_ms + delay + extra); /* never ahead of one held */
-        } else if (to_gcu) {
-            xf_host_packet p;
-            if (xf_host_unpack(bytes, len, &p) == XF_OK) {
-                xf__on_packet(s, &p);
-            }
-        } else {
-            xf__write_reply(s, bytes, len);
-        }
-    }
+    return s->now_ms + delay + ((s->fault.jitter_ms > 0u) ? xf__rand(s) % (s->fault.jitter_ms + 1u) : 0u);
 }
+
+/* Whether a copy due at @p due waits in the queue: it is due later, or another waits (a packet
+ * never overtakes one held). xf_sim_process() has no later: it never holds. */
+static int xf__waits(const xf_sim *s, uint32_t due)
+{
+    return s->cap_buf == NULL && (due != s->now_ms || s->n_delayed > 0u);
+}
+
+static void xf__on_packet(xf_sim *s, const xf_host_packet *p);
 
 static void xf__release_delayed(xf_sim *s)
 {
@@ -652,6 +647,7 @@ static void xf__release_delayed(xf_sim *s)
 /* Faults, then the link (now or later). */
 static void xf__send_reply(xf_sim *s, uint8_t *bytes, size_t len)
 {
+    int copies;
     if (s->fault.silent) {
         return;
     }
@@ -669,7 +665,14 @@ static void xf__send_reply(xf_sim *s, uint8_t *bytes, size_t len)
         bytes[5u + xf__rand(s) % (len - 7u)] ^= 0x5Au; /* inside the frames: only the CRC can tell */
         s->stats.corrupted++;
     }
-    xf__send_copies(s, bytes, len, 0u);
+    for (copies = xf__copies(s); copies > 0; copies--) { /* jitter and duplicates; replies wait delay_ms */
+        uint32_t due = xf__due(s, s->fault.delay_ms);
+        if (xf__waits(s, due)) {
+            xf__hold(s, bytes, len, 0u, due);
+        } else {
+            xf__write_reply(s, bytes, len);
+        }
+    }
 }
 
 /* The state byte this reply carries for the last executed order, if any. */
@@ -734,23 +737,33 @@ static void xf__on_packet(xf_sim *s, const xf_host_packet *p)
     }
 }
 
+/* A host packet in: now, or (jitter, duplicates) each copy when it is due. */
+static void xf__arrive(xf_sim *s, const xf_frame *f)
+{
+    int copies;
+    for (copies = xf__copies(s); copies > 0; copies--) {
+        uint32_t due = xf__due(s, 0u);
+        xf_host_packet p;
+        if (xf__waits(s, due)) {
+            xf__hold(s, f->data, f->len, 1u, due);
+        } else if (xf_frame_host(f, &p) == XF_OK) {
+            xf__on_packet(s, &p);
+        }
+    }
+}
+
 static void xf__feed(xf_sim *s, const uint8_t *data, size_t n)
 {
     size_t off = 0;
     for (;;) {
         size_t used = 0;
         xf_frame f;
-        xf_host_packet p;
         xf_parse_status r = xf_parser_feed(&s->parser, data + off, n - off, &used, &f);
         off += used;
         if (r != XF_PARSE_FRAME) {
             break;
         }
-        if (s->cap_buf == NULL && (s->fault.jitter_ms > 0u || s->fault.dup_permille > 0u || s->n_delayed > 0u)) {
-            xf__send_copies(s, f.data, f.len, 1u); /* on its way in: read when due */
-        } else if (xf_frame_host(&f, &p) == XF_OK) {
-            xf__on_packet(s, &p);
-        }
+        xf__arrive(s, &f);
     }
 }
 

@@ -123,17 +123,37 @@ static xf_err xf__capture_bad(xf_capture_reader *r, const char *why)
 
 static int xf__hexval(int c) { return isdigit(c) ? c - '0' : (isxdigit(c) ? (tolower(c) - 'a' + 10) : -1); }
 
-/* "# start 2026-11-26T10:00:00.123Z": the wall clock of the first chunk. */
+/* @p n digits at *p, a number in lo..hi, then the character @p after (0: none); moves *p on. */
+static int xf__field(const char **p, size_t n, int lo, int hi, char after, int *out)
+{
+    int v = 0;
+    size_t k;
+    for (k = 0; k < n; k++) {
+        if (!isdigit((unsigned char)(*p)[k])) {
+            return -1;
+        }
+        v = v * 10 + ((*p)[k] - '0');
+    }
+    if (v < lo || v > hi || (after != '\0' && (*p)[n] != after)) {
+        return -1;
+    }
+    *out = v;
+    *p += n + (after != '\0');
+    return 0;
+}
+
+/* "# start 2026-11-26T10:00:00.123Z": the wall clock of the first chunk (every field in its range:
+ * month 13 or hour 24 is not a time). */
 static xf_err xf__capture_start(xf_capture_reader *r, const char *line)
 {
     struct tm tm;
-    int ms = 0, n = 0;
+    int ms = 0;
+    const char *p = line + strlen(XF_CAPTURE_START);
     memset(&tm, 0, sizeof(tm));
-    if (sscanf(line + strlen(XF_CAPTURE_START), "%4d-%2d-%2dT%2d:%2d:%2d.%3dZ%n", &tm.tm_year, &tm.tm_mon, &tm.tm_mday,
-               &tm.tm_hour, &tm.tm_min, &tm.tm_sec, &ms, &n) != 7 ||
-        n == 0 ||
-        (line[strlen(XF_CAPTURE_START) + (size_t)n] != '\n' && line[strlen(XF_CAPTURE_START) + (size_t)n] != '\0' &&
-         line[strlen(XF_CAPTURE_START) + (size_t)n] != '\r')) {
+    if (xf__field(&p, 4, 1970, 9999, '-', &tm.tm_year) != 0 || xf__field(&p, 2, 1, 12, '-', &tm.tm_mon) != 0 ||
+        xf__field(&p, 2, 1, 31, 'T', &tm.tm_mday) != 0 || xf__field(&p, 2, 0, 23, ':', &tm.tm_hour) != 0 ||
+        xf__field(&p, 2, 0, 59, ':', &tm.tm_min) != 0 || xf__field(&p, 2, 0, 60, '.', &tm.tm_sec) != 0 ||
+        xf__field(&p, 3, 0, 999, 'Z', &ms) != 0 || (*p != '\n' && *p != '\0' && *p != '\r')) {
         return xf__capture_bad(r, "bad start time (expected \"# start 2026-11-26T10:00:00.123Z\", UTC)");
     }
     tm.tm_year -= 1900;

@@ -117,17 +117,17 @@ int cli_value_protocol(const cli_args *a, uint8_t *version);
 
 /** The options before COMMAND (cli.md "Link options"), already validated. */
 typedef struct cli_link {
-    const char *serial; /**< --serial PATH, or NULL */
-    const char *udp;    /**< --udp HOST, or NULL */
-    const char *tcp;    /**< --tcp HOST[:PORT], or NULL */
-    long baud;          /**< --baud, default 115200 */
-    long gcu_port;      /**< --gcu-port, 0 = the link's default */
-    long local_port;    /**< --local-port, default 2338; 0 = any free port */
-    uint8_t protocol;   /**< --protocol, default 1 */
-    long rate_hz;       /**< --rate, 1..200, default 50 */
-    long timeout_ms;    /**< --timeout, default 1000 */
-    long reorder_ms;    /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
-    int trace;          /**< --trace: every packet on stderr, one line each */
+    const char *serial;                         /**< --serial PATH, or NULL */
+    const char *udp;                            /**< --udp HOST, or NULL */
+    const char *tcp;                            /**< --tcp HOST[:PORT], or NULL */
+    long baud;                                  /**< --baud, default 115200 */
+    long gcu_port;                              /**< --gcu-port, 0 = the link's default */
+    long local_port;                            /**< --local-port, default 2338; 0 = any free port */
+    uint8_t protocol;                           /**< --protocol, default 1 */
+    long rate_hz;                               /**< --rate, 1..200, default 50 */
+    long timeout_ms;                            /**< --timeout, default 1000 */
+    long reorder_ms;                            /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
+    int trace;                                  /**< --trace: every packet on stderr, one line each */
     int has_baud, has_gcu_port, has_local_port; /**< given: for options that only one kind of link takes */
 } cli_link;
 

@@ -126,8 +126,9 @@ static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
             putchar('\n');
         }
         if (r->has_start) {
-            xf_capture_format_wall(r->start_ms + t, wall + 2, sizeof(wall) - 2u);
-            memcpy(wall, ", ", 2);
+            char stamp[sizeof(wall) - 2u];
+            xf_capture_format_wall(r->start_ms + t, stamp, sizeof(stamp));
+            snprintf(wall, sizeof(wall), ", %s", stamp);
         }
         snprintf(where, sizeof(where), "t %.3f s%s, %s", cli_seconds(t), wall,
                  dir == XF_DIR_HOST ? "host to GCU" : "GCU to host");

@@ -190,7 +190,8 @@ static int checked_option(cli_args *a, int id)
     return o->val;
 }
 
-int cli_next(cli_args *a)
+/* cli_next() without the anywhere options it takes (0: one was taken, look again). */
+static int next_once(cli_args *a)
 {
     int id;
     a->opt = NULL;
@@ -206,7 +207,7 @@ int cli_next(cli_args *a)
                 return CLI_ARG;
             }
             if (id == '?' && long_option(a->opts, text) == NULL && (took = taken_anywhere(a, text)) != 0) {
-                return (took == CLI_BAD) ? CLI_BAD : cli_next(a); /* taken: on to the next */
+                return (took == CLI_BAD) ? CLI_BAD : 0; /* taken: on to the next */
             }
             return checked_option(a, id);
         }
@@ -218,6 +219,14 @@ int cli_next(cli_args *a)
     a->index = a->tail++;
     a->value = a->argv[a->index];
     return CLI_ARG;
+}
+
+int cli_next(cli_args *a)
+{
+    int id;
+    while ((id = next_once(a)) == 0) {
+    }
+    return id;
 }
 
 void cli_optional_next(cli_args *a)
