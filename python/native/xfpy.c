@@ -227,6 +227,7 @@ typedef struct reply {
     uint8_t bytes[XF_PACKET_MAX_LEN];
     uint8_t len;
     xf_telemetry tele;
+    struct timespec mono, wall; /* when it came: monitor --json's time_mono and time_utc */
 } reply;
 
 typedef struct xfpy_client {
@@ -259,6 +260,8 @@ static void on_telemetry(void *user, const xf_telemetry *t)
     memcpy(r->bytes, h->last, h->last_len);
     r->len = (uint8_t)h->last_len;
     r->tele = *t;
+    clock_gettime(CLOCK_MONOTONIC, &r->mono);
+    clock_gettime(CLOCK_REALTIME, &r->wall);
     h->replies++;
 }
 
@@ -367,11 +370,23 @@ static json_t *units_json(const xf_telemetry *t)
     return u;
 }
 
+/* "time_mono" (seconds, CLOCK_MONOTONIC) and "time_utc" (ISO 8601, ms) of when @p r came. */
+static void times_json(json_t *obj, const reply *r)
+{
+    struct tm utc;
+    char text[80];
+    gmtime_r(&r->wall.tv_sec, &utc);
+    snprintf(text, sizeof(text), "%04d-%02d-%02dT%02d:%02d:%02d.%03ldZ", utc.tm_year + 1900, utc.tm_mon + 1,
+             utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, r->wall.tv_nsec / 1000000L);
+    json_object_set_new(obj, "time_mono", json_real((double)r->mono.tv_sec + (double)r->mono.tv_nsec / 1e9));
+    json_object_set_new(obj, "time_utc", json_string(text));
+}
+
 int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
 {
     xfpy_client *h = (xfpy_client *)p;
     const reply *r;
-    json_t *obj;
+    json_t *obj, *pkt;
     int rc;
     if (seq == 0u) {
         seq = h->replies;
@@ -380,10 +395,16 @@ int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
         return -1;
     }
     r = &h->ring[(seq - 1u) % RING];
-    obj = jsonpkt_from_wire(r->bytes, r->len, XF_DIR_GCU, POD_READ_AUTO);
-    if (obj == NULL) {
+    pkt = jsonpkt_from_wire(r->bytes, r->len, XF_DIR_GCU, POD_READ_AUTO);
+    obj = json_object();
+    if (pkt == NULL || obj == NULL) {
+        json_decref(pkt);
+        json_decref(obj);
         return -1;
     }
+    times_json(obj, r); /* first, as monitor --json has them */
+    json_object_update(obj, pkt);
+    json_decref(pkt);
     json_object_set_new(obj, "units", units_json(&r->tele));
     rc = dump_json(obj, out, cap);
     json_decref(obj);

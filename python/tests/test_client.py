@@ -108,7 +108,9 @@ def test_telemetry_has_the_keys_of_monitor_json(program: str, udp_sim: xfgcu.Sim
         t = g.telemetry()
     assert t is not None
     units = t.pop("units")
-    assert list(t) == list(monitor)
+    assert list(t) == list(monitor)  # the times first, as monitor --json has them
+    assert t["time_utc"].endswith("Z") and abs(t["time_mono"] - time.monotonic()) < 5.0
+    del t["time_mono"], t["time_utc"]  # what decode and encode know
     assert {"cam_roll_deg", "cam_pitch_deg", "cam_yaw_deg", "zoom_cam1", "target_distance_m"} <= set(units)
     assert xfgcu.decode(xfgcu.encode(t)) == t
 

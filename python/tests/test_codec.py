@@ -66,7 +66,7 @@ def test_decode_matches_program(program: str, udp_sim: xfgcu.Simulator) -> None:
         g.send("zoom-to", rate=3.0)
         t = g.telemetry()
     assert t is not None
-    packets.append(xfgcu.encode({k: v for k, v in t.items() if k != "units"}))
+    packets.append(xfgcu.encode({k: v for k, v in t.items() if k != "units"}))  # the times are ignored
     expected = program_decode(program, packets)
     for packet, obj in zip(packets, expected):
         got = xfgcu.decode(packet)

@@ -271,6 +271,23 @@ static void test_stdin_read_errors(void **state)
     assert_string_equal(out, "");
 }
 
+/* What monitor --json and replay --json print, with their times, encode reads back. */
+static void test_encode_takes_timed_lines(void **state)
+{
+    tool_result plain, timed;
+    (void)state;
+    plain = run_tool(NULL, "encode", "--json", "{\"direction\":\"gcu\",\"order\":\"shutter\"}", NULL);
+    timed = run_tool(NULL, "encode", "--json",
+                     "{\"time_mono\":12.5,\"time_utc\":\"2026-11-26T10:00:00.123Z\",\"t\":0.02,"
+                     "\"time\":\"2026-11-26T10:00:00.143Z\",\"direction\":\"gcu\",\"order\":\"shutter\"}",
+                     NULL);
+    assert_int_equal(plain.status, 0);
+    assert_int_equal(timed.status, 0);
+    assert_string_equal(timed.out, plain.out);
+    tool_result_free(&plain);
+    tool_result_free(&timed);
+}
+
 /* xfgcu help [COMMAND], -h anywhere a command's help is asked for. */
 static void test_help_forms(void **state)
 {
@@ -311,6 +328,7 @@ int main(void)
         cmocka_unit_test(test_impossible_settings),
         cmocka_unit_test(test_help_forms),
         cmocka_unit_test(test_stdin_read_errors),
+        cmocka_unit_test(test_encode_takes_timed_lines),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

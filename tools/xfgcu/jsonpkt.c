@@ -221,7 +221,10 @@ typedef struct reader {
     int has_params;
 } reader;
 
-static const char *const common_keys[] = {"direction", "version", "length", "order", "order_name", "params", NULL};
+/* The times that monitor --json ("time_mono", "time_utc") and replay --json ("t", "time") put
+ * on a packet are taken and ignored: what those commands print, encode reads back. */
+static const char *const common_keys[] = {"direction", "version",  "length", "order", "order_name", "params",
+                                          "time_mono", "time_utc", "t",      "time",  NULL};
 static const char *const host_extra_keys[] = {"command", "command_error", NULL};
 static const char *const gcu_extra_keys[] = {"feedback",  "mode_name",    "pod_status_order",
                                              "pod_flags", "gimbal_model", NULL};
