@@ -15,7 +15,7 @@
  *   xfgcu_bench gen KIND N_BYTES FILE      write an N_BYTES test stream (deterministic; a
  *                                          shorter stream is a prefix of a longer one);
  *                                          prints the number of intact frames first.
- *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense
+ *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -53,7 +53,11 @@
  *                than the one before, so each is checked as a contender), near-valid
  *                frames with a bad CRC, false headers with bad lengths, 8A runs
  *   dense        only the densest false candidates: 8A 5E LL 00 with LL random in
- *                [72, 255]; no frame at all (the parser's worst case)
+ *                [72, 255]; no frame at all
+ *   storm        8A 5E 8A 00 repeated: a candidate (length 138) every four bytes
+ *                whose length byte is an h0 too, so every other byte needs a look
+ *                (with h0run, the most costly streams measured: the parser's worst case)
+ *   h0run        nothing but 8A: every byte is an h0 and the fourth byte after one
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
  * before uart4 and uart3 were added, so older figures stay comparable.
@@ -206,9 +210,20 @@ static void xb_false_cand(xb_out *o, uint8_t len)
 }
 
 /* The values of the first four are their seeds: keep them (and their order). */
-typedef enum xb_kind { XB_VALID, XB_NOISY, XB_ADVERSARIAL, XB_DENSE, XB_UART4, XB_UART3, XB_KINDS } xb_kind;
+typedef enum xb_kind {
+    XB_VALID,
+    XB_NOISY,
+    XB_ADVERSARIAL,
+    XB_DENSE,
+    XB_UART4,
+    XB_UART3,
+    XB_STORM,
+    XB_H0RUN,
+    XB_KINDS
+} xb_kind;
 
-static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense", "uart4", "uart3"};
+static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense",
+                                                    "uart4", "uart3", "storm",       "h0run"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -365,6 +380,8 @@ static void xb_generate(xb_kind kind, xb_out *o)
         }
         case XB_UART4: xb_uart(o, &r, XB_BER_1E4); break;
         case XB_UART3: xb_uart(o, &r, XB_BER_1E3); break;
+        case XB_STORM: xb_false_cand(o, XF_GCU_HEADER0); break; /* 8A 5E 8A 00: its length byte is an h0 too */
+        case XB_H0RUN: xb_put1(o, XF_GCU_HEADER0); break;
         default: /* XB_DENSE */ xb_false_cand(o, xb_len(&r)); break;
         }
     }
@@ -652,7 +669,7 @@ static int xb_usage(void)
     fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
                     "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
                     "       xfgcu_bench crc FILE [--chunk N]\n"
-                    "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense N_BYTES FILE\n"
+                    "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run N_BYTES FILE\n"
                     "       xfgcu_bench pack N | unpack N\n"
                     "       xfgcu_bench time KIND N_BYTES [REPS]\n"
                     "       xfgcu_bench selftest\n"
@@ -785,7 +802,7 @@ static int xb_cmd_time(const char *kind_s, const char *size_s, const char *reps_
  * 4096). Fails (exit 1) when the parser misses an intact frame of a stream
  * that is not crafted against it (valid, noisy, uart4, uart3: found >=
  * inserted; more is a false candidate whose CRC matched, possible but very
- * rare), or when the byte counters do not add up. On adversarial and dense
+ * rare), or when the byte counters do not add up. On adversarial, dense, storm and h0run
  * streams the parser may give up candidates by design: found / inserted is
  * printed, not checked. The frames found in each chunking and the worst
  * delay are printed. */
@@ -801,7 +818,8 @@ static int xb_cmd_selftest(void)
         return 1;
     }
     for (k = 0; k < (int)XB_KINDS; k++) {
-        const int crafted = (k == (int)XB_ADVERSARIAL || k == (int)XB_DENSE);
+        const int crafted =
+            (k == (int)XB_ADVERSARIAL || k == (int)XB_DENSE || k == (int)XB_STORM || k == (int)XB_H0RUN);
         size_t c, worst = 0, lo = (size_t)-1, hi = 0;
         xb_result res;
         xb_generate((xb_kind)k, &o);

@@ -1006,6 +1006,60 @@ static void test_adversarial_lengths(void **state)
     stream_free(&s);
 }
 
+/* Crafted storms, each followed by a real frame, fed in several chunk sizes
+ * and compared with the model after every call: a run of h0 bytes (every
+ * byte the fourth after an h0), header pairs with bad lengths, h0 h1 h0 00
+ * (a candidate and an h0 look every four bytes), nested lengths (each
+ * candidate ends before the last one pending), the largest length every
+ * four bytes. They drive the paths a clean stream never takes. */
+static void test_crafted_storms(void **state)
+{
+    static const size_t chunks[] = {1, 2, 3, 5, 16, 64, 4096};
+    stream s;
+    test_rng r;
+    uint8_t f[256];
+    size_t i, c, k, fl;
+    (void)state;
+    stream_init(&s);
+    rng_seed(&r, 0x5708);
+    for (k = 0; k < 5; k++) {
+        for (i = 0; i < 600; i++) {
+            static const uint8_t pair8a[4] = {0x8A, 0x5E, 0x8A, 0x00};
+            static const uint8_t dense[4] = {0x8A, 0x5E, XF_PACKET_MAX_LEN, 0x00};
+            uint8_t nested[4] = {0x8A, 0x5E, 0, 0x00};
+            nested[2] = (uint8_t)(XF_PACKET_MAX_LEN - 5u * (i % ((XF_PACKET_MAX_LEN - 72u) / 5u + 1u)));
+            switch (k) {
+            case 0: put1(&s, 0x8A); break;
+            case 1: put(&s, pair8a, 2); break;
+            case 2: put(&s, pair8a, 4); break;
+            case 3: put(&s, nested, 4); break;
+            default: put(&s, dense, 4); break;
+            }
+        }
+        fl = make_frame(&r, XF_DIR_GCU, k & 1u, f);
+        put(&s, f, fl);
+    }
+    for (c = 0; c < sizeof(chunks) / sizeof(chunks[0]); c++) {
+        harness h;
+        pr_model m;
+        model_run(&s, XF_DIR_GCU, &m);
+        harness_init(&h, XF_DIR_GCU);
+        h.model = &m;
+        h.base = s.buf;
+        for (i = 0; i < s.len; i += chunks[c]) {
+            harness_feed(&h, s.buf + i, (i + chunks[c] <= s.len) ? chunks[c] : s.len - i);
+        }
+        check_output(&h, &s, &m);
+        assert_true(h.p.stats.length_errors > 0u && h.p.stats.crc_errors > 0u);
+        if (XF_PARSER_SLOTS >= 4 && XF_PACKET_MAX_LEN == 255) {
+            assert_true(h.nframes >= 3u); /* the frames after the h0 run, the pairs and the nested lengths */
+        }
+        harness_free(&h);
+        pr_free(&m);
+    }
+    stream_free(&s);
+}
+
 static void test_parser_args(void **state)
 {
     xf_parser p;
@@ -1052,6 +1106,7 @@ int main(void)
         cmocka_unit_test(test_max_length_frame),
         cmocka_unit_test(test_reset),
         cmocka_unit_test(test_adversarial_lengths),
+        cmocka_unit_test(test_crafted_storms),
         cmocka_unit_test(test_parser_args),
         cmocka_unit_test(test_random_stream_whole),
         cmocka_unit_test(test_random_stream_byte_at_a_time),

@@ -253,27 +253,45 @@ static inline unsigned xf__h1(const xf_parser *p)
  * header is not complete yet (its fourth byte has not come). */
 static inline unsigned xf__prefix(const xf_parser *p)
 {
-    unsigned held = xf__held(p), k;
-    for (k = 3u; k > 0u; k--) {
-        if (held >= k && p->ring[XF__IX(p->end - k)] == p->h0) {
-            return k;
-        }
-    }
-    return 0;
+    const uint8_t *r = p->ring;
+    unsigned e = p->end, held = xf__held(p), h0 = p->h0;
+    return (held >= 3u && r[XF__IX(e - 3u)] == h0)   ? 3u
+           : (held >= 2u && r[XF__IX(e - 2u)] == h0) ? 2u
+           : (held >= 1u && r[XF__IX(e - 1u)] == h0) ? 1u
+                                                     : 0u;
 }
 
-/* Set next: just past the next byte that needs a look, the soonest of a
- * candidate's last byte and the fourth byte of a header an h0 held begins;
- * with nothing held, the next byte. Every byte before it, unless it is an
- * h0, is only stored (the fast paths). */
-static void xf__plan(xf_parser *p)
+/* Set next: just past the next byte that needs a look, the soonest of the
+ * first candidate's last byte and the fourth byte of a header an h0 among
+ * the last three bytes begins; with no candidate, the fourth byte of head's
+ * h0, or with nothing held the next byte. Every byte before it, unless it
+ * is an h0, is only stored (the fast paths). */
+XF__COLD void xf__plan(xf_parser *p)
 {
-    unsigned k = xf__prefix(p), stop = (k > 0u) ? 4u - k : 1u;
-    XF_ASSERT(p->n > 0u || xf__held(p) == k); /* settled: an h0 and what follows it, or nothing */
-    if (p->n > 0u && (k == 0u || xf__left(p, 0) < stop)) {
-        stop = xf__left(p, 0);
+    const uint8_t *r = p->ring;
+    unsigned e = p->end, h0 = p->h0, stop, k;
+    if (p->n == 0u) {
+        p->next = XF__IX(p->head + ((e == p->head) ? 1u : 4u));
+        return;
     }
-    p->next = XF__IX(p->end + stop);
+    /* a candidate is pending, so its four header bytes at least are held */
+    stop = xf__left(p, 0);
+    k = (r[XF__IX(e - 3u)] == h0) ? 1u : (r[XF__IX(e - 2u)] == h0) ? 2u : (r[XF__IX(e - 1u)] == h0) ? 3u : stop;
+    p->next = XF__IX(e + ((k < stop) ? k : stop));
+}
+
+/* Bring crc up to the last byte held: bytes are stored first and CRC'd
+ * only when a candidate needs it, four at a time (xf__crc_run). */
+static void xf__sum(xf_parser *p)
+{
+    unsigned s = p->sum, e = p->end;
+    uint32_t c = (uint32_t)p->crc << 16;
+    if (e < s) {
+        c = xf__crc_run(c, p->ring + s, XF_PARSER_RING - s);
+        s = 0;
+    }
+    p->crc = (uint16_t)(xf__crc_run(c, p->ring + s, e - s) >> 16);
+    p->sum = (uint8_t)e;
 }
 
 /* Move head up to the first byte that can still begin a frame: the earliest
@@ -297,20 +315,6 @@ static void xf__settle(xf_parser *p)
     p->head = XF__IX(p->end - keep);
 }
 
-/* Bring crc up to the last byte held: bytes are stored first and CRC'd
- * only when a candidate needs it, four at a time (xf__crc_run). */
-static void xf__sum(xf_parser *p)
-{
-    unsigned s = p->sum, e = p->end;
-    uint32_t c = (uint32_t)p->crc << 16;
-    if (e < s) {
-        c = xf__crc_run(c, p->ring + s, XF_PARSER_RING - s);
-        s = 0;
-    }
-    p->crc = (uint16_t)(xf__crc_run(c, p->ring + s, e - s) >> 16);
-    p->sum = (uint8_t)e;
-}
-
 /* Drop candidate 0 (its end has come), keeping the others in order. */
 static void xf__shift(xf_parser *p)
 {
@@ -327,20 +331,16 @@ static void xf__shift(xf_parser *p)
  * contributes at its end: the frame is intact exactly when the running CRC
  * then equals want * x^(8 (len - 4)) (xf__crc_zeros); with no other
  * candidate the running CRC restarts at the candidate, and want is 0. When
- * every slot is taken, the candidate that ends last is given up. 1 when a
- * pending one was, and held the first byte held. */
+ * every slot is taken, the pending one that ends last is given up (it ends
+ * after the new one: xf__open). 1, or 3 when it held the first byte held. */
 static int xf__admit(xf_parser *p, unsigned len)
 {
     unsigned left = len - 4u, k = p->n;
     uint32_t c = (uint32_t)((p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC) << 16;
-    int moved = 0;
+    int moved = 1;
     if (k == XF_PARSER_SLOTS) {
-        p->stats.given_up++;
-        if (left >= xf__left(p, k - 1u)) {
-            return 0;
-        }
-        k--; /* the candidate that ends last makes room */
-        moved = (p->at[k] == p->head);
+        k--; /* the candidate that ends last makes room (xf__open counted it) */
+        moved = (p->at[k] == p->head) ? 3 : 1;
     }
     c = xf__crc_step(xf__crc_step(c, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
     if (p->n == 0u) {
@@ -356,13 +356,16 @@ static int xf__admit(xf_parser *p, unsigned len)
     }
     p->want[k] = (uint16_t)(p->crc ^ (c >> 16));
     p->at[k] = XF__IX(p->end - 4u);
-    XF_ASSERT(p->n <= XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left) && xf__len(p, k) == len);
+    XF_ASSERT(p->n <= XF_PARSER_SLOTS && k < XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left) &&
+              xf__len(p, k) == len);
     return moved;
 }
 
-/* The last byte held is the fourth after an h0 held: a candidate, a length
- * error, or nothing. 1 when a pending candidate was given up. */
-static int xf__open(xf_parser *p)
+/* The last byte held may be the fourth of a header: a candidate, a length
+ * error, or nothing. When every slot is taken, the candidate that ends last
+ * is given up, the new one included. Returns as xf__admit(), or 0 when
+ * nothing changed. */
+static inline int xf__open(xf_parser *p)
 {
     const uint8_t *r = p->ring;
     unsigned s = XF__IX(p->end - 4u), len;
@@ -373,6 +376,12 @@ static int xf__open(xf_parser *p)
     if (!xf__len_ok(len)) {
         p->stats.length_errors++;
         return 0;
+    }
+    if (p->n == XF_PARSER_SLOTS) {
+        p->stats.given_up++; /* the new candidate, or the pending one that ends last */
+        if (len - 4u >= xf__left(p, XF_PARSER_SLOTS - 1u)) {
+            return 0;
+        }
     }
     return xf__admit(p, len);
 }
@@ -412,25 +421,74 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
 }
 
 /* Candidates that end with the last byte held, in order of start: the first
- * intact one is returned (1), failed ones go (0; *moved when one of them
- * held the first byte held). */
-static int xf__ends(xf_parser *p, xf_frame *frame, int *moved)
+ * intact one is returned (4), failed ones go (1, or 3 when one of them held
+ * the first byte held). */
+XF__COLD int xf__ends(xf_parser *p, xf_frame *frame)
 {
+    int moved = 1;
     if (p->n == 0u || xf__fin(p, 0) != p->end) {
-        return 0;
+        return 1;
     }
     xf__sum(p);
     do {
         uint16_t w = p->want[0];
         if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u))) {
             xf__emit(p, frame);
-            return 1;
+            return 4;
         }
         p->stats.crc_errors++;
-        *moved |= (p->at[0] == p->head);
+        moved |= (p->at[0] == p->head) ? 3 : 1;
         xf__shift(p);
     } while (p->n > 0u && xf__fin(p, 0) == p->end);
+    return moved;
+}
+
+/* After a look that changed something (look: as xf__admit() returns), or
+ * with no candidate: move head up when the first byte held may have lost
+ * its candidate, then set next. */
+XF__COLD void xf__after(xf_parser *p, int look)
+{
+    if ((look & 2) || p->n == 0u) {
+        xf__settle(p);
+    }
+    xf__plan(p);
+}
+
+/* No candidate, and the last byte held is the fourth after head's h0 (or
+ * comes before it): a header there opens a candidate; else head moves to
+ * the next h0 among the three bytes after it, or nothing is held. */
+XF__COLD int xf__hunt(xf_parser *p)
+{
+    XF_ASSERT(xf__held(p) <= 4u && p->ring[p->head] == p->h0);
+    if (xf__held(p) == 4u && (p->ring[XF__IX(p->head + 1u)] != xf__h1(p) || xf__open(p) == 0)) {
+        xf__settle(p);
+    }
+    xf__plan(p);
     return 0;
+}
+
+/* The byte at next: the end of candidate 0 (and maybe others), which are
+ * checked before the byte is looked at as a header's fourth. */
+XF__COLD int xf__at_next(xf_parser *p, xf_frame *frame)
+{
+    int look = xf__ends(p, frame);
+    if (look == 4) {
+        return 1;
+    }
+    xf__after(p, look | xf__open(p));
+    return 0;
+}
+
+/* Store an h0 that comes before next: it only brings next to its own
+ * fourth byte. */
+static inline void xf__h0(xf_parser *p)
+{
+    XF_ASSERT(p->head != p->end);
+    p->ring[p->end] = (uint8_t)p->h0;
+    p->end = XF__IX(p->end + 1u);
+    if (XF__IX(p->next - p->end) > 3u) {
+        p->next = XF__IX(p->end + 3u);
+    }
 }
 
 /* Take one byte that needs a look: an h0, or the byte before next. Every
@@ -439,24 +497,26 @@ static int xf__ends(xf_parser *p, xf_frame *frame, int *moved)
  * its own fourth byte. 1 when it completes a frame. */
 static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
 {
-    int moved = 0;
-    p->ring[p->end] = b;
-    p->end = XF__IX(p->end + 1u);
-    if (p->next != p->end) {
-        XF_ASSERT(b == p->h0 && p->head != p->end);
-        if (XF__IX(p->next - p->end) > 3u) {
-            p->next = XF__IX(p->end + 3u);
-        }
+    int look;
+    if (p->next != XF__IX(p->end + 1u)) {
+        XF_ASSERT(b == p->h0);
+        xf__h0(p);
         return 0;
     }
-    if (xf__ends(p, frame, &moved)) {
-        return 1;
+    p->ring[p->end] = b;
+    p->end = XF__IX(p->end + 1u);
+    if (p->n == 0u) {
+        return xf__hunt(p);
     }
-    moved |= xf__open(p);
-    if (moved || p->n == 0u) {
-        xf__settle(p);
+    if (xf__fin(p, 0) == p->end) {
+        return xf__at_next(p, frame);
     }
-    xf__plan(p);
+    look = xf__open(p); /* the fourth byte after an h0: a header, or nothing */
+    if (look != 0) {
+        xf__after(p, look);
+    } else {
+        xf__plan(p);
+    }
     return 0;
 }
 
@@ -565,7 +625,9 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf
             continue;
         } else {
             size_t m = len - i, quiet = (unsigned)XF__IX(p->next - p->end) - 1u;
-            i += xf__quiet(p, d + i, (m < quiet) ? m : quiet);
+            if (quiet > 0u && d[i] != p->h0) {
+                i += xf__quiet(p, d + i, (m < quiet) ? m : quiet);
+            }
         }
         if (i < len && xf__byte(p, d[i++], frame)) {
             *used = i;
@@ -576,24 +638,42 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf
     return 0;
 }
 
-/* Everything but the one-byte fast case, out of line so that the fast case
- * in xf_parser_feed() needs no stack frame. One byte skips the main loop. */
+/* Everything but one byte, out of line so that the one-byte path in
+ * xf_parser_feed() needs no stack frame. */
 XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     size_t used = len;
-    int found = 0;
-    if (len != 1u) {
-        found = xf__take(p, data, len, &used, frame);
-    } else if (p->end == p->head && data[0] != p->h0) {
-        p->stats.bytes_skipped++; /* nothing held, and no header begins here */
-    } else {
-        found = xf__byte(p, data[0], frame);
-    }
+    int found = xf__take(p, data, len, &used, frame);
     p->stats.bytes_in += (uint32_t)used;
     if (consumed != NULL) {
         *consumed = used;
     }
     return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
+}
+
+/* One byte that needs a look, or comes while nothing is held. */
+XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
+{
+    p->stats.bytes_in++;
+    if (consumed != NULL) {
+        *consumed = 1;
+    }
+    if (p->end == p->head && b != p->h0) {
+        p->stats.bytes_skipped++; /* nothing held, and no header begins here */
+        return XF_PARSE_MORE;
+    }
+    return (xf_parse_status)xf__byte(p, b, frame); /* 1 is XF_PARSE_FRAME, 0 XF_PARSE_MORE */
+}
+
+/* One h0 before next. */
+XF__COLD xf_parse_status xf__feed_h0(xf_parser *p, size_t *consumed)
+{
+    p->stats.bytes_in++;
+    if (consumed != NULL) {
+        *consumed = 1;
+    }
+    xf__h0(p);
+    return XF_PARSE_MORE;
 }
 
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
@@ -603,8 +683,12 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
     }
     if (len == 1u) {
         unsigned e = p->end, b = data[0];
-        if (p->next != XF__IX(e + 1u) && b != p->h0) {
-            /* A UART's byte that needs no look (xf__plan): store it. */
+        if (p->next != XF__IX(e + 1u)) {
+            /* A UART's byte that needs no look (xf__plan): store it; an h0
+             * brings next to its fourth byte (out of line: no stack frame). */
+            if (b == p->h0) {
+                return xf__feed_h0(p, consumed);
+            }
             p->ring[e] = (uint8_t)b;
             p->end = XF__IX(e + 1u);
             p->stats.bytes_in++;
@@ -613,6 +697,7 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
             }
             return XF_PARSE_MORE;
         }
+        return xf__feed1(p, (uint8_t)b, consumed, frame);
     }
     return xf__feed(p, data, len, consumed, frame);
 }
