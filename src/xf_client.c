@@ -42,22 +42,20 @@ const char *xf_client_config_problem(const xf_client_config *cfg)
         return NULL; /* the defaults */
     }
     if (cfg->rate_hz == 0u || cfg->rate_hz > 200u) {
-        return "rate_hz must be 1..200 packets per second";
+        return "rate_hz: 1..200";
     }
     period = (1000u + cfg->rate_hz / 2u) / cfg->rate_hz;
     if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u) {
-        return "protocol_version and operating_timeout_ms must be >= 1, reorder_ms <= 1000";
+        return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000";
     }
     /* A reply comes once a packet, and with reorder_ms the client is silent up to twice that
      * around a command: a link that reads stale (or down) between two good replies cannot work. */
     if (cfg->stale_ms <= period + 2u * cfg->reorder_ms || cfg->down_ms <= cfg->stale_ms) {
-        return "the link would read stale between two packets: stale_ms must exceed one packet period "
-               "(1000 / rate_hz) plus twice reorder_ms, and down_ms must exceed stale_ms";
+        return "stale_ms: > 1000 / rate_hz + 2 reorder_ms (stale between packets); down_ms: > stale_ms";
     }
     /* The command goes out at the next slot and its reply comes back before the one after. */
     if (cfg->command_timeout_ms < 2u * period + 2u * cfg->reorder_ms) {
-        return "command_timeout_ms is shorter than a round trip: it must be at least two packet periods "
-               "(2000 / rate_hz) plus twice reorder_ms";
+        return "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)";
     }
     return NULL;
 }

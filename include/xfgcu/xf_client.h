@@ -483,7 +483,7 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
 
 /**
  * Why xf_client_init() would refuse @p cfg with ::XF_ERR_RANGE, as one
- * English sentence naming the members: a rate outside 1..200; a version or
+ * short line naming the members and their limits: a rate outside 1..200; a version or
  * operating timeout of 0; reorder_ms over 1000; stale_ms not above one packet
  * period plus twice reorder_ms (the link would read stale between two good
  * replies: at 1 Hz the default 250 ms is), down_ms not above stale_ms;
