@@ -59,6 +59,7 @@ stage "benchmarks: parser instructions per byte (callgrind), client latency and 
 scripts/bench.sh
 build/gcc/bench/xfgcu_client_bench latency 500
 build/gcc/bench/xfgcu_client_bench cpu 3
+scripts/bench_send.sh build/gcc/tools/xfgcu 30
 
 stage "mutation: named mutants of the parser, each killed by its tests (scripts/mutate.sh)"; scripts/mutate.sh
 
