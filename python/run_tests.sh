@@ -18,6 +18,8 @@ if [ -z "$build" ]; then
     build=$(mktemp -d "${TMPDIR:-/tmp}/xfgcu-python-tests.XXXXXX")
     trap 'rm -rf "$build"' EXIT
 fi
+mkdir -p "$build"
+build=$(cd "$build" && pwd) # the tests run from python/tests: no relative path may reach them
 if [ ! -f "$build/CMakeCache.txt" ] || [ ! -x "$build/tools/xfgcu" ] || [ ! -f "$build/python/libxfgcu_py.so" ]; then
     cmake -S "$here/.." -B "$build" -DXFGCU_BUILD_PYTHON=ON -DXFGCU_BUILD_TOOLS=ON >/dev/null
     cmake --build "$build" -j2 --target xfgcu xfgcu_py >/dev/null
