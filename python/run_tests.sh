@@ -20,10 +20,10 @@ if [ -z "$build" ]; then
 fi
 mkdir -p "$build"
 build=$(cd "$build" && pwd) # the tests run from python/tests: no relative path may reach them
-if [ ! -f "$build/CMakeCache.txt" ] || [ ! -x "$build/tools/xfgcu" ] || [ ! -f "$build/python/libxfgcu_py.so" ]; then
+if [ ! -f "$build/CMakeCache.txt" ] || [ ! -f "$build/python/libxfgcu_py.so" ]; then
     cmake -S "$here/.." -B "$build" -DXFGCU_BUILD_PYTHON=ON -DXFGCU_BUILD_TOOLS=ON >/dev/null
-    cmake --build "$build" -j2 --target xfgcu xfgcu_py >/dev/null
 fi
+cmake --build "$build" -j2 --target xfgcu xfgcu_py >/dev/null # incremental: never an old library
 export XFGCU_PROGRAM="$build/tools/xfgcu"
 if [ -z "${XFGCU_TEST_INSTALLED:-}" ]; then
     export XFGCU_PY_LIB="$build/python/libxfgcu_py.so"
@@ -31,4 +31,4 @@ if [ -z "${XFGCU_TEST_INSTALLED:-}" ]; then
 fi
 export PYTHONDONTWRITEBYTECODE=1 # nothing written into the source tree
 cd "$here/tests"
-exec "$python" -m pytest -q -p no:cacheprovider .
+"$python" -m pytest -q -p no:cacheprovider . # not exec: the EXIT trap removes a temporary build

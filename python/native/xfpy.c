@@ -67,7 +67,10 @@ void xfpy_clear(void)
 static int dump_json(json_t *obj, char *out, size_t cap)
 {
     size_t need = json_dumpb(obj, NULL, 0, JSON_COMPACT | JSON_PRESERVE_ORDER);
-    if (need == 0u || need + 1u > cap) {
+    if (need == 0u) {
+        return -1; /* jansson could not write it: an error, not a size to retry with */
+    }
+    if (need + 1u > cap) {
         return (int)need + 1;
     }
     (void)json_dumpb(obj, out, cap, JSON_COMPACT | JSON_PRESERVE_ORDER);
@@ -277,27 +280,33 @@ void *xfpy_client_new(void)
 int xfpy_client_config(void *p, const char *name, long v)
 {
     xf_client_config *c = &((xfpy_client *)p)->cfg;
-    if (v < 0 || v > 0xFFFFFFL) {
+    if (v < 0) {
         return -1;
     }
-#define XFPY_SET(member, type)                                                                                         \
+    /* each member's own limit: a value cut to its type would be another value */
+#define XFPY_SET(member, type, max)                                                                                    \
     if (strcmp(name, #member) == 0) {                                                                                  \
+        if (v > (long)(max)) {                                                                                         \
+            return -1;                                                                                                 \
+        }                                                                                                              \
         c->member = (type)v;                                                                                           \
         return 0;                                                                                                      \
     }
-    XFPY_SET(command_timeout_ms, uint32_t)
-    XFPY_SET(operating_timeout_ms, uint32_t)
-    XFPY_SET(rate_hz, uint16_t)
-    XFPY_SET(carrier_max_age_ms, uint16_t)
-    XFPY_SET(gnss_max_age_ms, uint16_t)
-    XFPY_SET(stale_ms, uint16_t)
-    XFPY_SET(down_ms, uint16_t)
-    XFPY_SET(rate_watchdog_ms, uint16_t)
-    XFPY_SET(protocol_version, uint8_t)
-    XFPY_SET(reorder_ms, uint16_t)
+    XFPY_SET(command_timeout_ms, uint32_t, 3600000L)
+    XFPY_SET(operating_timeout_ms, uint32_t, 3600000L)
+    XFPY_SET(rate_hz, uint16_t, 200)
+    XFPY_SET(carrier_max_age_ms, uint16_t, UINT16_MAX)
+    XFPY_SET(gnss_max_age_ms, uint16_t, UINT16_MAX)
+    XFPY_SET(stale_ms, uint16_t, UINT16_MAX)
+    XFPY_SET(down_ms, uint16_t, UINT16_MAX)
+    XFPY_SET(rate_watchdog_ms, uint16_t, UINT16_MAX)
+    XFPY_SET(protocol_version, uint8_t, 2)
+    XFPY_SET(reorder_ms, uint16_t, 1000)
 #undef XFPY_SET
     return -1;
 }
+
+const char *xfpy_client_config_problem(void *p) { return xf_client_config_problem(&((xfpy_client *)p)->cfg); }
 
 int xfpy_client_open(void *p, const char *spec)
 {

@@ -71,6 +71,8 @@ void xfpy_wait(int fd, int ms);
 void *xfpy_client_new(void);
 /** Set configuration @p name (an xf_client_config member) before open. @return 0, or -1 (unknown name). */
 int xfpy_client_config(void *h, const char *name, long value);
+/** Why the configuration set so far cannot work (xf_client_config_problem()), or NULL. */
+const char *xfpy_client_config_problem(void *h);
 /** Open the link @p spec and start the client. @return 0, or an xf_err (message: xfpy_error()). */
 int xfpy_client_open(void *h, const char *spec);
 /** Step the client; *fd receives the descriptor to wait on. @return ms until the next deadline. */

@@ -40,3 +40,21 @@ def test_async_concurrent_commands_and_control(udp_sim: xfgcu.Simulator) -> None
             await g.close()
 
     asyncio.run(asyncio.wait_for(main(), 20))
+
+
+def test_stream_ends_on_close(sim: xfgcu.Simulator) -> None:
+    async def main() -> None:
+        g = await xfgcu.aio.connect(sim.spec)
+        got: List[Dict[str, Any]] = []
+
+        async def consume() -> None:
+            async for t in g.telemetry_stream():
+                got.append(t)
+
+        task = asyncio.create_task(consume())
+        await asyncio.sleep(0.2)
+        await g.close()
+        await asyncio.wait_for(task, 2)  # ends with the gimbal, never hangs
+        assert got
+
+    asyncio.run(asyncio.wait_for(main(), 20))

@@ -191,3 +191,43 @@ def test_close_settles() -> None:
         assert time.monotonic() - t0 >= 0.25
         with xfgcu.connect(sim.spec, command_timeout_ms=200) as second:
             assert second.send("shutter").status == "timeout"  # never the first one's late ok
+
+
+def test_review_fixes() -> None:
+    # a configuration cut to its C type, or one the library would refuse, is a ValueError
+    with pytest.raises(ValueError):
+        xfgcu.connect("udp:127.0.0.1:9", rate_hz=65586)
+    with pytest.raises(ValueError, match="stale_ms"):
+        xfgcu.connect("udp:127.0.0.1:9", rate_hz=1)
+    with pytest.raises(xfgcu.EncodeError, match="must be 1 or 2"):
+        xfgcu.encode_command("shutter", protocol=257)
+    sim = xfgcu.Simulator("udp:127.0.0.1:0")
+    gimbal = xfgcu.connect(sim.spec)
+    # from a telemetry callback, send() would wait on its own thread
+    errors: list = []
+
+    def callback(t: dict) -> None:
+        try:
+            gimbal.send("shutter")
+        except RuntimeError as e:
+            errors.append(e)
+
+    remove = gimbal.on_telemetry(callback)
+    assert wait_until(lambda: len(errors) > 0)
+    remove()
+    # two threads closing at once: one closes, the other returns
+    import threading
+
+    closers = [threading.Thread(target=gimbal.close) for _ in range(2)]
+    for c in closers:
+        c.start()
+    for c in closers:
+        c.join()
+    with pytest.raises(xfgcu.LinkError):
+        gimbal.health()
+    sim.close()
+    sim.close()
+    with pytest.raises(xfgcu.LinkError):
+        sim.stats()
+    with pytest.raises(xfgcu.LinkError):
+        sim.fault(drop_next=1)

@@ -67,6 +67,7 @@ _PROTOTYPES = {
     "xfpy_wait": (None, [_c.c_int, _c.c_int]),
     "xfpy_client_new": (_vp, []),
     "xfpy_client_config": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
+    "xfpy_client_config_problem": (_c.c_char_p, [_vp]),
     "xfpy_client_open": (_c.c_int, [_vp, _c.c_char_p]),
     "xfpy_client_step": (_c.c_int, [_vp, _c.POINTER(_c.c_int)]),
     "xfpy_client_replies": (_c.c_uint32, [_vp]),

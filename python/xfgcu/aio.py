@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import asyncio
 import functools
-from typing import Any, AsyncIterator, Dict, Generator, Optional
+from typing import Any, AsyncIterator, Callable, Dict, Generator, Optional
 
-from .client import Gimbal, Result
+from .client import Gimbal, Result, TelemetryCallback
 
 __all__ = ["connect", "AsyncGimbal"]
 
@@ -30,6 +30,16 @@ class AsyncGimbal:
 
     async def submit(self, name: str, *, force: bool = False, **args: Any) -> int:
         return self.gimbal.submit(name, force=force, **args)
+
+    async def result(self, ident: int, name: str = "") -> Optional[Result]:
+        return self.gimbal.result(ident, name)
+
+    async def wait_reply(self, timeout: float = 1.0) -> bool:
+        return await self._call(self.gimbal.wait_reply, timeout)  # type: ignore[no-any-return]
+
+    def on_telemetry(self, callback: TelemetryCallback) -> Callable[[], None]:
+        """As Gimbal.on_telemetry (the callback runs on the client's thread, not the loop)."""
+        return self.gimbal.on_telemetry(callback)
 
     async def set_rates(self, roll: float = 0.0, pitch: float = 0.0, yaw: float = 0.0) -> str:
         return self.gimbal.set_rates(roll, pitch, yaw)
@@ -56,28 +66,38 @@ class AsyncGimbal:
         self.gimbal.cancel_all()
 
     async def telemetry_stream(self, maxsize: int = 256) -> AsyncIterator[Dict[str, Any]]:
-        """Every reply's telemetry (as telemetry() gives it), as it arrives. When the consumer
-        falls more than ``maxsize`` replies behind, the oldest are dropped."""
+        """Every reply's telemetry (as telemetry() gives it), as it arrives; it ends when the
+        gimbal is closed. When the consumer falls more than ``maxsize`` replies behind, the
+        oldest are dropped."""
         loop = asyncio.get_running_loop()
-        queue: "asyncio.Queue[Dict[str, Any]]" = asyncio.Queue(maxsize)
+        queue: "asyncio.Queue[Optional[Dict[str, Any]]]" = asyncio.Queue(maxsize)
 
-        def put(t: Dict[str, Any]) -> None:
+        def put(t: Optional[Dict[str, Any]]) -> None:
             if queue.full():
                 queue.get_nowait()
             queue.put_nowait(t)
 
-        def deliver(t: Dict[str, Any]) -> None:  # on the client's thread
+        def deliver(t: Optional[Dict[str, Any]]) -> None:  # on the client's thread (None: closed)
             try:
                 loop.call_soon_threadsafe(put, t)
             except RuntimeError:  # the loop has closed; the generator goes with it
                 pass
 
+        def closed() -> None:
+            deliver(None)
+
         remove = self.gimbal.on_telemetry(deliver)
+        self.gimbal._closers.append(closed)
         try:
             while True:
-                yield await queue.get()
+                t = await queue.get()
+                if t is None:
+                    return
+                yield t
         finally:
             remove()
+            if closed in self.gimbal._closers:
+                self.gimbal._closers.remove(closed)
 
     async def close(self) -> None:
         await self._call(self.gimbal.close)
@@ -99,7 +119,13 @@ class _Connecting:
 
     async def _open(self) -> AsyncGimbal:
         loop = asyncio.get_running_loop()
-        gimbal = await loop.run_in_executor(None, functools.partial(Gimbal, self._spec, **self._config))
+        future = loop.run_in_executor(None, functools.partial(Gimbal, self._spec, **self._config))
+        try:
+            gimbal = await asyncio.shield(future)
+        except asyncio.CancelledError:
+            # the connection goes on in the executor: close what it makes, or it would live on
+            future.add_done_callback(lambda f: f.exception() is None and f.result().close())
+            raise
         return AsyncGimbal(gimbal)
 
     def __await__(self) -> Generator[Any, None, AsyncGimbal]:

@@ -75,6 +75,8 @@ class Gimbal:
         self._cond = threading.Condition()
         self._subscribers: List[TelemetryCallback] = []
         self._stop = False
+        self._closing = False
+        self._closers: List[Callable[[], None]] = []  #: called once closed (telemetry_stream ends)
         self._seen = 0
         self._handle = lib.xfpy_client_new()
         if not self._handle:
@@ -106,6 +108,9 @@ class Gimbal:
             name = "protocol_version" if key == "protocol" else key
             if lib.xfpy_client_config(self._handle, name.encode(), int(value)) != 0:
                 raise ValueError(f"{key}={value!r} is out of range")
+        problem = lib.xfpy_client_config_problem(self._handle)
+        if problem:
+            raise ValueError(f"configuration that cannot work: {problem.decode()}")
 
     # ---- the thread ------------------------------------------------------------------
 
@@ -159,6 +164,7 @@ class Gimbal:
 
     def wait_reply(self, timeout: float = 1.0) -> bool:
         """Wait until the GCU has answered at least once. @return whether it has."""
+        self._not_from_callback("wait_reply")
         return self._wait_for(lambda: self._replies() > 0, timeout)
 
     def _replies(self) -> int:
@@ -182,14 +188,16 @@ class Gimbal:
 
     def result(self, ident: int, name: str = "") -> Optional[Result]:
         """The final result of command ``ident``, or None while it runs."""
-        cams, packets, state = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
-        elapsed = ctypes.c_long()
         with self._lock:
             self._check_open()
-            status = lib.xfpy_client_result(
-                self._handle, ident, ctypes.byref(cams), ctypes.byref(packets), ctypes.byref(elapsed),
-                ctypes.byref(state),
-            )
+            return self._result_locked(ident, name)
+
+    def _result_locked(self, ident: int, name: str) -> Optional[Result]:
+        cams, packets, state = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
+        elapsed = ctypes.c_long()
+        status = lib.xfpy_client_result(
+            self._handle, ident, ctypes.byref(cams), ctypes.byref(packets), ctypes.byref(elapsed), ctypes.byref(state)
+        )
         if status not in _FINAL:
             return None
         return Result(name, _FINAL[status], cams.value, packets.value, elapsed.value, state.value)
@@ -200,16 +208,28 @@ class Gimbal:
         end it (command_timeout_ms; operating_timeout_ms for calibration); ``timeout`` (seconds)
         bounds the wait besides, giving status "timeout". ``force``: send it even if the GCU's
         model lacks the order. Raises CommandError for bad arguments."""
+        self._not_from_callback("send")
         ident = self.submit(name, force=force, **args)
         box: List[Optional[Result]] = [None]
+        closed = [False]
 
         def done() -> bool:
-            box[0] = self.result(ident, name) if self._handle is not None else None
-            return box[0] is not None or self._handle is None
+            with self._lock:  # the check and the query at once: close() cannot come between
+                closed[0] = self._handle is None
+                if not closed[0]:
+                    box[0] = self._result_locked(ident, name)
+            return box[0] is not None or closed[0]
 
-        if not self._wait_for(done, timeout) or box[0] is None:
+        finished = self._wait_for(done, timeout)
+        if closed[0] and box[0] is None:
+            return Result(name, "cancelled", 0, 0, 0, 0)  # close() ended it
+        if not finished or box[0] is None:
             return Result(name, "timeout", 0, 0, 0, 0)
         return box[0]
+
+    def _not_from_callback(self, what: str) -> None:
+        if threading.current_thread() is getattr(self, "_thread", None):
+            raise RuntimeError(f"{what}() from a telemetry callback would wait on the thread that runs it")
 
     def cancel_all(self) -> None:
         """Cancel every queued or running command (status "cancelled")."""
@@ -299,7 +319,8 @@ class Gimbal:
         with self._lock:
             self._check_open()
             value = _json_call(lib.xfpy_client_health, self._handle)
-        assert value is not None
+        if value is None:
+            raise RuntimeError("xfgcu: health: the library gave no answer")
         return value
 
     def _check_open(self) -> None:
@@ -311,8 +332,14 @@ class Gimbal:
         next program could take it for its own; at most twice command_timeout_ms plus
         reorder_ms), stop the thread and close the link. Commands still running end
         "cancelled"."""
-        if getattr(self, "_handle", None) is None:
+        lock = getattr(self, "_lock", None)
+        if lock is None:
             return
+        with lock:
+            if self._handle is None or self._closing:
+                return  # closed, or another thread is closing it
+            self._closing = True
+        self._not_from_callback("close")
         deadline = time.monotonic() + self._settle_s
         while self._thread.is_alive() and time.monotonic() < deadline:
             with self._lock:
@@ -328,6 +355,8 @@ class Gimbal:
             self._handle = None
         with self._cond:
             self._cond.notify_all()
+        for closer in list(self._closers):
+            closer()
 
     def __enter__(self) -> "Gimbal":
         return self

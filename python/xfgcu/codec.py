@@ -63,9 +63,15 @@ def decode(data: bytes, pod_order: str = "auto") -> Dict[str, Any]:
     return result
 
 
+def _check_protocol(protocol: int) -> None:
+    if protocol not in (1, 2):  # as the program's --protocol: never cut to a byte
+        raise EncodeError(f"encode: protocol {protocol!r}: must be 1 or 2")
+
+
 def encode(obj: Dict[str, Any], protocol: int = 1) -> bytes:
     """The packet an object of `xfgcu encode --json` describes (the inverse of decode()).
     ``protocol`` is the version when the object gives none. Raises EncodeError."""
+    _check_protocol(protocol)
     text = json.dumps(obj).encode()
     out = ctypes.create_string_buffer(PACKET_MAX)
     n = ctypes.c_size_t(0)
@@ -84,6 +90,7 @@ def encode_command(name: str, protocol: int = 1, **args: Any) -> bytes:
     ``encode_command("zoom-to", rate=5.5)`` is ``xfgcu encode zoom-to --rate 5.5``; a switch is
     ``True`` (``osd`` with ``show=True``); a list is a comma list (``box=(0, 0, 100, 100)``).
     Notes of the program (an order of another version) come as warnings. Raises EncodeError."""
+    _check_protocol(protocol)
     items = argv(name, args)
     out = ctypes.create_string_buffer(PACKET_MAX)
     n = ctypes.c_size_t(0)

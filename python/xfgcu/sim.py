@@ -126,6 +126,7 @@ class Simulator:
         delay_ms, jitter_ms (each packet, both ways, held 0..jitter_ms more: they overtake one
         another), dup_permille (packets that arrive twice), silent (1: answer nothing)."""
         with self._lock:
+            self._check_open()
             for key, value in faults.items():
                 if key not in _FAULTS or lib.xfpy_sim_fault(self._handle, key.encode(), int(value)) != 0:
                     raise ValueError(f"simulator fault {key}={value!r} is unknown or out of range")
@@ -133,23 +134,38 @@ class Simulator:
     def disconnect(self, ms: int) -> None:
         """Take the link down for ``ms`` (a TCP client is dropped; nothing is answered)."""
         with self._lock:
+            self._check_open()
             lib.xfpy_sim_disconnect(self._handle, ms)
 
     def stats(self) -> Dict[str, Any]:
         """What it has seen and done: packets_in, replies, dropped, photos, recordings,
         executed (per order name), mode, roll/pitch/yaw (deg), zoom_cam1/zoom_cam2 (x)."""
-        with self._lock:
-            out = ctypes.create_string_buffer(16384)
-            if lib.xfpy_sim_stats(self._handle, out, len(out)) != 0:
+        size = 16384
+        while True:
+            with self._lock:
+                self._check_open()
+                out = ctypes.create_string_buffer(size)
+                rc = lib.xfpy_sim_stats(self._handle, out, len(out))
+            if rc == 0:
+                value: Dict[str, Any] = json.loads(out.value.decode())
+                return value
+            if rc < 0:
                 raise RuntimeError("simulator: stats")
-        value: Dict[str, Any] = json.loads(out.value.decode())
-        return value
+            size = rc  # the size it needs
+
+    def _check_open(self) -> None:
+        if self._handle is None:
+            raise LinkError("the simulator is closed")
 
     def close(self) -> None:
         """Stop the thread and close the link."""
-        if getattr(self, "_handle", None) is None:
+        lock = getattr(self, "_lock", None)
+        if lock is None:
             return
-        self._stop = True
+        with lock:
+            if self._handle is None or self._stop:
+                return  # closed, or another thread is closing it
+            self._stop = True
         self._thread.join()
         with self._lock:
             lib.xfpy_sim_free(self._handle)
