@@ -127,6 +127,18 @@ static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r
     }
 }
 
+/* Replies of @p order may still be in flight: no command of that order starts until a null's
+ * reply has come after them (@p wait: none of them has come yet, so one must come first). A
+ * guard still open for another order keeps its hold too: then every order waits. */
+static void xf__guard(xf_client *c, uint8_t order, int wait)
+{
+    c->guard_multi = (uint8_t)(c->guard_multi || (c->guard_open && (c->guard_order != order || c->guard_wait)));
+    c->guard_order = order;
+    c->guard_open = 1;
+    c->guard_wait = (uint8_t)wait;
+    c->guard_ms = c->now_ms;
+}
+
 /* End the running command (or the queue's head) with @p st. */
 static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
 {
@@ -137,15 +149,15 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
         r.failed_cameras = fb->failed_cameras;
     }
     if (c->active) {
-        c->nulls_owed = 1;        /* back to null packets: the next command of any order is separated */
-        c->guard_order = r.order; /* replies of this order may still be in flight... */
-        /* ...unless every packet that carried it has had its reply (a link that keeps order and
-         * does not duplicate: reorder_ms 0). A reply to another order closes the guard only once
-         * one of this order has come, if none had: before that, it answers a packet sent before
-         * the command (the link is slower than the command was long). */
-        c->guard_open = c->answered < c->packets || c->cfg.reorder_ms > 0u;
-        c->guard_wait = c->answered == 0u;
-        c->guard_ms = c->now_ms;
+        c->nulls_owed = 1; /* back to null packets: the next command of any order is separated */
+        /* Replies of this order may still be in flight, unless every packet that carried it has
+         * had its reply (a link that keeps order and does not duplicate: reorder_ms 0). A null's
+         * reply closes the guard only once one of this order has come, if none had: before
+         * that, it answers a null sent before the command (the link is slower than the command
+         * was long). */
+        if (c->answered < c->packets || c->cfg.reorder_ms > 0u) {
+            xf__guard(c, r.order, c->answered == 0u);
+        }
     }
     c->active = 0;
     c->operating = 0;
@@ -197,7 +209,6 @@ static void xf__update_link(xf_client *c)
     c->health.link = s;
     if (s == XF_LINK_DOWN) {
         xf__fail_all(c, XF_CMD_LINK_LOST); /* fail fast: never run a stale command later */
-        c->guard_wait = 0;                 /* down_ms without a reply: what was sent before went unanswered */
     }
     if (c->cfg.on_link != NULL) {
         c->cfg.on_link(c->cfg.user, s);
@@ -358,8 +369,12 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     }
     if (f->data[XF_OFF_ORDER] == c->guard_order) {
         c->guard_wait = 0;
-    } else if (!c->guard_wait || xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms) {
-        c->guard_open = 0; /* the separating null's reply: no late reply of guard_order can follow */
+    } else if (!c->guard_wait && (f->data[XF_OFF_ORDER] == XF_ORDER_NULL ||
+                                  (f->data[XF_OFF_ORDER] == XF_ORDER_EXTERNAL_TRACK && c->stream_on))) {
+        /* The reply to a null (or to the stream) sent after the guarded packets: in order, none
+         * of theirs can follow. A late reply to another command closes nothing. */
+        c->guard_open = 0;
+        c->guard_multi = 0;
     }
     if (!c->synced && f->data[XF_OFF_ORDER] == XF_ORDER_NULL) {
         /* A reply to a null: every reply to what was sent before (by an earlier client, on this
@@ -554,7 +569,8 @@ static int xf__may_start(xf_client *c)
      * command's state. Replies come in order: send nulls until one of theirs is back, then every
      * reply of this order answers this command. Where the link reorders, every command waits so
      * (a late reply could be of any earlier command's order). Not while the link is down. */
-    return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u) && c->health.link != XF_LINK_DOWN);
+    return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u || c->guard_multi) &&
+             !(c->guard_wait && xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms));
 }
 
 /* The order of the next packet: a command, an owed null, the stream, or null; or -1: send
@@ -591,8 +607,8 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
         c->nulls_owed--;
         return XF_ORDER_NULL;
     }
-    if (!c->stream_on) {
-        return XF_ORDER_NULL;
+    if (!c->stream_on || c->q_count > 0u) {
+        return XF_ORDER_NULL; /* a command waits (rule 5, or the start-up rule): nulls, not the stream */
     }
     *n = sizeof(c->stream);
     return XF_ORDER_EXTERNAL_TRACK;
@@ -671,8 +687,12 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
     if (!c->started) {
         c->started = 1;
         c->next_send_ms = now_ms;
-        c->head_ms = now_ms; /* a command submitted before the first step waits from here */
+        c->head_new = 1; /* a command submitted before the first step waits from here */
         c->window_start_ms = now_ms;
+    }
+    if (c->head_new) {
+        c->head_new = 0;
+        c->head_ms = now_ms;
     }
     rx = xf__receive(c);
     xf__update_link(c);
@@ -849,6 +869,9 @@ xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags,
     if (c->q_count >= XF_CLIENT_QUEUE) {
         return XF_ERR_BUSY;
     }
+    if (cmd->order == XF_ORDER_EXTERNAL_TRACK && c->stream_on) {
+        xf__guard(c, XF_ORDER_EXTERNAL_TRACK, 0); /* the stream's replies carry this order's state */
+    }
     slot = &c->queue[(c->q_head + c->q_count) % XF_CLIENT_QUEUE];
     *slot = encoded;
     if (id != NULL) {
@@ -859,7 +882,7 @@ xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags,
         c->next_id = 1; /* 0 never names a command */
     }
     if (c->q_count++ == 0u) {
-        c->head_ms = c->now_ms;
+        c->head_new = 1; /* it waits from the next step (now_ms may be old) */
     }
     return XF_OK;
 }
@@ -954,9 +977,7 @@ xf_err xf_client_external_track_stop(xf_client *c, uint32_t *id)
     if (err == XF_OK && c->stream_on) {
         /* The stream's replies (same order, with their own state) may still
          * be in flight: the exit's result must be its own. */
-        c->guard_order = XF_ORDER_EXTERNAL_TRACK;
-        c->guard_open = 1;
-        c->guard_wait = 0; /* the stream has been answered all along */
+        xf__guard(c, XF_ORDER_EXTERNAL_TRACK, 0); /* the stream has been answered all along */
         c->stream_on = 0;
     }
     return err;

@@ -26,10 +26,10 @@
  * to one of its nulls has come back (a late reply to an earlier program's
  * command is not its own). A command of the same order as the last one
  * (or the exit of a stopped external-track stream), while a packet of that
- * one has no reply yet, starts only once a reply to a later, different
- * packet has come back (nulls are sent until then; not while the link is
- * down), so a late reply to the previous command of that order is never
- * mistaken for this one's, however long the link's delay. Before it stops,
+ * one has no reply yet, starts only once the reply to a later null has
+ * come back (nulls are sent until then), so a late reply to the previous
+ * command of that order is never mistaken for this one's, however long
+ * the link's delay. Before it stops,
  * a program lets the client settle (xf_client_settled()). On a link that
  * reorders or duplicates, reorder_ms bounds how far (docs/protocol.md
  * §7.4 says what each rule guarantees). Calibration's "operating" keeps it
@@ -438,7 +438,9 @@ typedef struct xf_client {
      *  private: replies of the running command's order so far */
     uint32_t guard_ms;
     uint16_t answered;
-    uint8_t guard_wait; /**< private: a reply of guard_order must come first (none had come when it ended) */
+    uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
+    uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
+    uint8_t head_new;    /**< private: the queue's head is new: it waits from the next step's time */
 } xf_client;
 
 /**

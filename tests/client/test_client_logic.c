@@ -2046,11 +2046,13 @@ static void test_cb_resubmit_during_link_lost_sweep(void **state)
         assert_true(st == XF_CMD_QUEUED || st == XF_CMD_SENDING);
     }
     assert_int_equal(r->log.n_results, 3);
-    /* the survivors run once the GCU answers again */
+    /* the survivors run once the GCU answers again; the lost shutter's packets never had a reply,
+     * so the guard holds (one of its replies could still come, on a link that stalled) until it
+     * gives up, command_timeout_ms after the loss */
     g_probe.resubmit_on = 0;
     r->s.fault.silent = 0;
     for (i = 0; i < 3u; i++) {
-        assert_status(ct_run_cmd(r, g_probe.resubmitted[i], 3000, NULL), XF_CMD_OK);
+        assert_status(ct_run_cmd(r, g_probe.resubmitted[i], 8000, NULL), XF_CMD_OK);
     }
     assert_int_equal(r->s.stats.executed[XF_ORDER_RECORD], 1);
     assert_int_equal(r->s.stats.executed[XF_ORDER_FOCUS], 1);
@@ -2505,7 +2507,14 @@ static unsigned nm_shutters(uint16_t reorder_ms, unsigned *extra)
  * (xf_client_settled(): its command's replies are in) when @p settle; returns the "ok"s taken
  * sooner than the command's own reply could have come (an earlier client's late reply).
  */
+static unsigned nm_sequence_at(uint32_t delay_ms, int settle, uint32_t timeout_ms, unsigned *oks);
+
 static unsigned nm_sequence(int settle, uint32_t timeout_ms, unsigned *oks)
+{
+    return nm_sequence_at(1500, settle, timeout_ms, oks);
+}
+
+static unsigned nm_sequence_at(uint32_t delay_ms, int settle, uint32_t timeout_ms, unsigned *oks)
 {
     xf_client_config cc;
     ct_rig *r;
@@ -2514,7 +2523,7 @@ static unsigned nm_sequence(int settle, uint32_t timeout_ms, unsigned *oks)
     cc.command_timeout_ms = timeout_ms;
     r = ct_rig_new(&cc, NULL);
     *oks = 0;
-    r->s.fault.delay_ms = 1500;
+    r->s.fault.delay_ms = delay_ms;
     for (k = 0; k < 4u; k++) {
         xf_client_config keep = r->c.cfg;
         xf_cmd_result res;
@@ -2523,9 +2532,9 @@ static unsigned nm_sequence(int settle, uint32_t timeout_ms, unsigned *oks)
         id = ct_submit(r, XF_ORDER_SHUTTER);
         if (ct_run_cmd(r, id, 10000, &res) == XF_CMD_OK) {
             (*oks)++;
-            false_ok += (res.elapsed_ms < 1500u) ? 1u : 0u; /* before its own reply could have come */
+            false_ok += (res.elapsed_ms < delay_ms) ? 1u : 0u; /* before its own reply could have come */
         }
-        for (i = 0; settle && i < 5000u && !xf_client_settled(&r->c); i++) {
+        for (i = 0; settle && i < 3u * delay_ms + 2000u && !xf_client_settled(&r->c); i++) {
             ct_tick(r);
         }
         assert_true(!settle || xf_client_settled(&r->c));
@@ -2549,6 +2558,109 @@ static void test_late_replies_not_taken(void **state)
     false_ok = nm_sequence(0, 1000, &oks);
     print_message("unsettled clients, 1 s timeout: %u ok of 4, %u false\n", oks, false_ok);
     assert_true(false_ok > 0u);
+}
+
+/* The review's cases (2026-11-26): each ended with a false "ok" or a command that never ran. */
+
+/* Two commands of different orders time out with their replies still on the way (1.5 s late):
+ * the second's guard must not drop the first's, or a third of the first's order takes its late ok. */
+static void test_guard_two_orders(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_cmd_result res;
+    (void)state;
+    r->s.fault.delay_ms = 1500;
+    ct_run(r, 3000);
+    assert_status(ct_run_cmd(r, ct_submit(r, XF_ORDER_SHUTTER), 5000, &res), XF_CMD_TIMEOUT);
+    assert_status(ct_run_cmd(r, ct_submit(r, XF_ORDER_RECORD), 5000, &res), XF_CMD_TIMEOUT);
+    if (ct_run_cmd(r, ct_submit(r, XF_ORDER_SHUTTER), 5000, &res) == XF_CMD_OK) {
+        assert_true(res.elapsed_ms >= 1500u); /* its own reply, never the first shutter's */
+    }
+    ct_rig_free(r);
+}
+
+/* A guard that gave up waiting no longer holds commands back, but the client is not settled:
+ * nothing says the late replies have come (replies 2.5 s late, 1 s timeout). */
+static void test_settled_needs_evidence(void **state)
+{
+    unsigned oks = 0;
+    (void)state;
+    assert_int_equal(nm_sequence_at(2500, 1, 1000, &oks), 0);
+}
+
+/* With the external-track stream on, a command that waits (for the start-up rule or a guard)
+ * gets null packets, not the stream: else no null's reply ever comes and it never runs. */
+static void test_stream_and_waiting_commands(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_cmd_result res;
+    uint32_t id;
+    (void)state;
+    assert_xf(xf_client_external_track(&r->c, 1, 10, 10), XF_OK); /* before the first step */
+    ct_run(r, 500);
+    assert_status(ct_run_cmd(r, ct_submit(r, XF_ORDER_ZOOM_STOP), 3000, &res), XF_CMD_OK);
+    ct_run(r, 500);
+    assert_xf(xf_client_external_track_stop(&r->c, &id), XF_OK);
+    assert_xf(xf_client_external_track(&r->c, 1, 20, 20), XF_OK); /* a new target at once */
+    assert_status(ct_run_cmd(r, id, 3000, &res), XF_CMD_OK);
+    ct_rig_free(r);
+}
+
+/* 0x1B submitted as a command while the stream runs: the stream's replies carry that order's
+ * state, so the command waits for them to pass (replies 100 ms late). */
+static void test_track_command_while_streaming(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_cmd_result res;
+    xf_command cmd;
+    (void)state;
+    ct_run(r, 500);
+    r->s.fault.delay_ms = 100;
+    assert_xf(xf_client_external_track(&r->c, 1, 10, 10), XF_OK);
+    ct_run(r, 500);
+    xf_command_init(&cmd, XF_ORDER_EXTERNAL_TRACK);
+    assert_status(ct_run_cmd(r, ct_submit_cmd(r, &cmd), 5000, &res), XF_CMD_OK);
+    assert_true(res.elapsed_ms >= 100u); /* its own reply */
+    ct_rig_free(r);
+}
+
+/* A link that stalls 1.3 s and then delivers what it held: the lost command's late "ok" is not
+ * the retry's, even though the link went down in between. */
+static void test_retry_after_stall(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    xf_cmd_result res;
+    (void)state;
+    ct_run(r, 500);
+    r->s.fault.delay_ms = 1300;
+    assert_status(ct_run_cmd(r, ct_submit(r, XF_ORDER_SHUTTER), 5000, &res), XF_CMD_LINK_LOST);
+    r->s.fault.delay_ms = 0;
+    assert_status(ct_run_cmd(r, ct_submit(r, XF_ORDER_SHUTTER), 5000, &res), XF_CMD_OK);
+    assert_int_equal(r->s.stats.photos, 2); /* the retry ran before its ok */
+    ct_rig_free(r);
+}
+
+/* A command submitted after the application has not stepped for a while waits from the next
+ * step, not from the old step's time. */
+static void test_submit_after_a_pause(void **state)
+{
+    xf_client_config cc;
+    ct_rig *r;
+    uint32_t id, i;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.down_ms = 5000; /* the pause is not a lost link */
+    r = ct_rig_new(&cc, NULL);
+    ct_run(r, 500);
+    for (i = 0; i < 2100u; i++) { /* the simulator runs on; the client is not stepped */
+        r->now++;
+        (void)xf_sim_step(&r->s, r->now);
+    }
+    id = ct_submit(r, XF_ORDER_SHUTTER);
+    (void)xf_client_step(&r->c, r->now);
+    assert_true(xf_client_command_status(&r->c, id, NULL) != XF_CMD_TIMEOUT);
+    assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+    ct_rig_free(r);
 }
 
 static void test_reorder_no_false_ok(void **state)
@@ -2758,6 +2870,12 @@ int main(void)
         cmocka_unit_test(test_unsynced_command_times_out),
         cmocka_unit_test(test_reorder_no_false_ok),
         cmocka_unit_test(test_late_replies_not_taken),
+        cmocka_unit_test(test_guard_two_orders),
+        cmocka_unit_test(test_settled_needs_evidence),
+        cmocka_unit_test(test_stream_and_waiting_commands),
+        cmocka_unit_test(test_track_command_while_streaming),
+        cmocka_unit_test(test_retry_after_stall),
+        cmocka_unit_test(test_submit_after_a_pause),
         cmocka_unit_test(test_control_mode_changes),
         cmocka_unit_test(test_rates_main_camera_zoom),
         cmocka_unit_test(test_pod_order_per_gcu),
