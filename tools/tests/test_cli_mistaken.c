@@ -288,6 +288,50 @@ static void test_encode_takes_timed_lines(void **state)
     tool_result_free(&timed);
 }
 
+/* The second review's cases: record --force keeps FILE when the link fails (its capture stays
+ * under the temporary name, named in a note); --protocol after record is refused; settings that
+ * cannot work are refused before any link is opened, for every command. */
+static void test_review_cases(void **state)
+{
+    char dir[] = "/tmp/xfgcu-mistaken-XXXXXX", file[128], text[64] = "";
+    tool_result r;
+    FILE *f;
+    (void)state;
+    assert_non_null(mkdtemp(dir));
+    snprintf(file, sizeof(file), "%s/ex.cap", dir);
+    f = fopen(file, "w");
+    assert_non_null(f);
+    fputs("keep\n", f);
+    fclose(f);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--gcu-port", "9", "--local-port", "0", "--timeout", "300", "record",
+                 "--force", file, "--duration", "1", NULL);
+    assert_int_equal(r.status, 3);
+    assert_non_null(strstr(r.err, "is kept as it was; this run's capture is"));
+    tool_result_free(&r);
+    f = fopen(file, "r");
+    assert_non_null(f);
+    assert_non_null(fgets(text, sizeof(text), f));
+    fclose(f);
+    assert_string_equal(text, "keep\n"); /* FILE as it was */
+    r = run_tool(NULL, "--tcp", "127.0.0.1:9", "record", file, "shutter", "--protocol", "2", NULL);
+    assert_failure(&r, 2, "--protocol goes before 'record'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--tcp", "127.0.0.1:1", "--rate", "1", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--rate 1", NULL); /* a usage error, not "connection refused" */
+    tool_result_free(&r);
+    r = run_tool(NULL, "--rate", "1", "encode", "shutter", NULL);
+    assert_failure(&r, 2, "--rate 1", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--tcp", "[::1]:2332", "--gcu-port", "1", "send", "shutter", NULL);
+    assert_failure(&r, 2, "give the port once", NULL);
+    tool_result_free(&r);
+    {
+        char cmd[300];
+        snprintf(cmd, sizeof(cmd), "rm -rf '%s'", dir); /* ours: made above */
+        assert_int_equal(system(cmd), 0);
+    }
+}
+
 /* xfgcu help [COMMAND], -h anywhere a command's help is asked for. */
 static void test_help_forms(void **state)
 {
@@ -329,6 +373,7 @@ int main(void)
         cmocka_unit_test(test_help_forms),
         cmocka_unit_test(test_stdin_read_errors),
         cmocka_unit_test(test_encode_takes_timed_lines),
+        cmocka_unit_test(test_review_cases),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

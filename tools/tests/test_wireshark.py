@@ -316,6 +316,11 @@ class CaptureFiles(unittest.TestCase):
         self.rejects("1.5 > A8\n", 2, "milliseconds")
         self.rejects("0.000 ! A8\n", 2, "'>' or '<'")
         self.rejects("# start yesterday\n", 2, "start time")
+        self.rejects("0.000 > A8 ", 2, "hex")  # a line that ends in a space, no newline
+        path = self.write("bad17.cap", "# xfgcu capture 17\n")  # the first line, exactly
+        r = run("replay", path, check=False)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("not an xfgcu capture", r.stderr)
         self.rejects("# start 2026-13-26T10:00:00.123Z\n", 2, "start time")  # month 13
         self.rejects("# start 2026-11-26T24:00:00.123Z\n", 2, "start time")  # hour 24
         self.rejects("# start 2026-11-26T10:00:00.123Z junk\n", 2, "start time")

@@ -108,7 +108,9 @@ xf_err xf_capture_open(xf_capture_reader *r, FILE *f)
         }
         line[0] = '\0'; /* an empty file */
     }
-    if (strncmp(line, XF_CAPTURE_MAGIC, strlen(XF_CAPTURE_MAGIC)) != 0) {
+    /* the whole line, exactly (a CR before its newline allowed): "# xfgcu capture 17" is not it */
+    line[strcspn(line, "\r\n")] = '\0';
+    if (strcmp(line, XF_CAPTURE_MAGIC) != 0 || strlen(line) + 2u >= sizeof(line)) {
         snprintf(r->error, sizeof(r->error), "not an xfgcu capture (expected \"%s\" or pcap)", XF_CAPTURE_MAGIC);
         return XF_ERR_FORMAT;
     }
@@ -206,7 +208,8 @@ static xf_err xf__capture_bytes(xf_capture_reader *r, const char *p, xf_capture_
 {
     rec->len = 0;
     while (*p == ' ') {
-        int hi = xf__hexval((unsigned char)p[1]), lo = xf__hexval((unsigned char)p[2]);
+        /* p[2] only when p[1] is a digit (not the terminator), p[3] only when p[2] is */
+        int hi = xf__hexval((unsigned char)p[1]), lo = (hi < 0) ? -1 : xf__hexval((unsigned char)p[2]);
         if (hi < 0 || lo < 0 || (p[3] != ' ' && p[3] != '\n' && p[3] != '\r' && p[3] != '\0')) {
             return xf__capture_bad(r, "bad byte (expected two hex digits)");
         }
@@ -247,6 +250,7 @@ xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
     if (r == NULL || rec == NULL) {
         return XF_ERR_ARG;
     }
+    errno = 0;
     while ((got = getline(&line, &cap, r->f)) >= 0) {
         r->line++;
         if (strncmp(line, XF_CAPTURE_START, strlen(XF_CAPTURE_START)) == 0) {
@@ -255,16 +259,18 @@ xf_err xf_capture_next(xf_capture_reader *r, xf_capture_record *rec)
                 break;
             }
             result = XF_ERR_EOF;
+            errno = 0;
             continue;
         }
         if ((line[0] == '#' && strlen(line) == (size_t)got) || line[0] == '\n' ||
             (line[0] == '\r' && line[1] == '\n')) {
+            errno = 0;
             continue;
         }
         result = xf__capture_line(r, line, (size_t)got, rec);
         break;
     }
-    if (got < 0 && ferror(r->f)) {
+    if (got < 0 && (ferror(r->f) || errno == ENOMEM)) { /* out of memory is not the end of the file */
         r->line++;
         snprintf(r->error, sizeof(r->error), "cannot read: %s", strerror(errno));
         result = XF_ERR_IO;

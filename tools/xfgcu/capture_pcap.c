@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <pcap/pcap.h>
+#include <stdint.h>
 #include <string.h>
 #include <sys/time.h>
 
@@ -249,8 +250,11 @@ static int transport(pcap_reader *r, const uint8_t *ip, size_t n, xf_direction *
         return bad(r, "truncated or malformed IPv4 packet");
     }
     l = ip + ihl;
+    if (total < ihl + ((ip[9] == 6) ? 20u : UDP_HDR)) { /* the fixed header, before reading its fields */
+        return bad(r, "truncated or malformed UDP or TCP header");
+    }
     l4 = (ip[9] == 6) ? (size_t)(l[12] >> 4) * 4u : UDP_HDR;
-    if (total < ihl + l4 || l4 < UDP_HDR) {
+    if (total < ihl + l4 || l4 < ((ip[9] == 6) ? 20u : UDP_HDR)) {
         return bad(r, "truncated or malformed UDP or TCP header");
     }
     sport = (uint16_t)(l[0] << 8 | l[1]);
@@ -302,7 +306,11 @@ static int serve(pcap_reader *r, xf_direction *dir, uint32_t *t_ms, uint8_t *dat
 
 static int timestamp(pcap_reader *r, const struct pcap_pkthdr *h, uint32_t *t_ms)
 {
-    int64_t us = (int64_t)h->ts.tv_sec * 1000000 + h->ts.tv_usec;
+    int64_t us;
+    if ((int64_t)h->ts.tv_sec > (INT64_MAX - 999999) / 1000000 || (int64_t)h->ts.tv_sec < 0 || h->ts.tv_usec < 0) {
+        return bad(r, "its time is out of range");
+    }
+    us = (int64_t)h->ts.tv_sec * 1000000 + h->ts.tv_usec;
     if (!r->started) {
         r->started = 1;
         r->first_us = r->last_us = us;

@@ -317,7 +317,8 @@ static void run_loop(monitor *m)
 {
     uint32_t start = xf_posix_now_ms(), last = 0, elapsed = 0;
     int first = 1;
-    while (!finished(m, elapsed)) {
+    /* the first line always (--count 1: the packet that came while the link opened is counted) */
+    while ((first && !m->json) || !finished(m, elapsed)) {
         uint32_t period = m->tty ? SCREEN_MS : LINE_MS;
         if (!m->json && (first || xf_ms_since(elapsed, last) >= period)) {
             if (m->tty) {

@@ -34,7 +34,7 @@ void help_record(FILE *out)
           "`xfgcu replay FILE` decodes it.\n\n"
           "  --pcap         write pcap instead, for Wireshark (tools/wireshark/xfgcu.lua): UDP and\n"
           "                 TCP as IPv4 packets (LINKTYPE_RAW), serial as LINKTYPE_USER0\n"
-          "  --duration S   stop after S seconds (0.1..31536000)\n"
+          "  --duration S   stop after S seconds (0.1..4294967: the capture's 32-bit milliseconds)\n"
           "  --count N      stop after N packets from the GCU (1..1000000000)\n"
           "  --force        replace FILE if it exists (otherwise an existing FILE is an error)\n"
           "  COMMAND        also run a command, as `xfgcu send COMMAND [ARGS]` does, and print its\n"
@@ -91,8 +91,7 @@ static int take_word(record *r, const char *word)
 static int take_arg(record *r, const cli_args *a, int id)
 {
     switch (id) {
-    case O_DURATION:
-        return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &r->duration, &r->has_duration);
+    case O_DURATION: return cli_value_real(a, 0.1, 4294967.0, "seconds, 0.1..4294967", &r->duration, &r->has_duration);
     case O_COUNT:
         return cli_value_long(a, 1, 1000000000L, "a number of packets, 1..1000000000", &r->count, &r->has_count);
     case O_FORCE: r->force = 1; return XFGCU_EXIT_OK;
@@ -292,10 +291,17 @@ static int capture(record *r, const cli_link *link, const xf_command *cmd, uint3
 }
 
 /* The complete capture takes FILE's name: replacing FILE only with --force, and never a FILE
- * that appeared meanwhile without it (link() refuses an existing name, rename() would not). */
-static int publish(record *r)
+ * that appeared meanwhile without it (link() refuses an existing name, rename() would not).
+ * When the link failed (@p rc), an existing FILE is kept even with --force. Whatever goes
+ * wrong, the capture is never lost: it stays under its temporary name, which is said. */
+static int publish(record *r, int rc)
 {
+    struct stat st;
     int e = 0;
+    if (rc == XFGCU_EXIT_LINK && lstat(r->file, &st) == 0) {
+        cli_note("record: the link failed: %s is kept as it was; this run's capture is %s", r->file, r->tmp);
+        return 1;
+    }
     if (r->force) {
         e = (rename(r->tmp, r->file) != 0) ? errno : 0;
     } else if (link(r->tmp, r->file) != 0) {
@@ -304,9 +310,8 @@ static int publish(record *r)
         (void)unlink(r->tmp);
     }
     if (e != 0) {
-        (void)unlink(r->tmp); /* ours */
-        return cli_fail("record: cannot name the capture %s: %s%s", r->file, strerror(e),
-                        e == EEXIST ? " (it appeared meanwhile; --force replaces it)" : "");
+        return cli_fail("record: cannot name the capture %s: %s%s; it is kept as %s", r->file, strerror(e),
+                        e == EEXIST ? " (it appeared meanwhile; --force replaces it)" : "", r->tmp);
     }
     return XFGCU_EXIT_OK;
 }
@@ -336,7 +341,10 @@ static int finish_file(record *r, int rc, uint32_t elapsed)
         (void)unlink(r->tmp); /* ours; FILE was never touched */
         return cli_fail("record: cannot write %s: %s", r->file, strerror(err));
     }
-    prc = publish(r);
+    prc = publish(r, rc);
+    if (prc == 1) {
+        return rc; /* kept under its temporary name (the note says where) */
+    }
     if (prc != XFGCU_EXIT_OK) {
         return prc;
     }
@@ -409,8 +417,14 @@ int cmd_record(const cli_link *link, int argc, char **argv)
     record r;
     xf_command cmd;
     int rc;
+    uint8_t version = link->protocol;
     memset(&r, 0, sizeof(r));
-    rc = parse_args(&r, argc, argv, link->protocol, &cmd);
+    rc = parse_args(&r, argc, argv, version, &cmd);
+    if (rc == XFGCU_EXIT_OK && link->protocol != version) {
+        /* the command was checked for the version given before record; one after would send it in
+         * another */
+        rc = cli_fail("record: --protocol goes before 'record' (the command is checked for it)");
+    }
     if (rc == XFGCU_EXIT_OK && r.help) {
         help_record(stdout);
     } else if (rc == XFGCU_EXIT_OK) {

@@ -75,7 +75,7 @@ typedef struct sim_args {
     int has_model;
     uint8_t fail[256];
     long drop, delay, jitter, dup, calibration_ms;
-    int has_baud, has_drop, has_delay, has_calibration;
+    int has_baud, has_drop, has_delay, has_jitter, has_dup, has_calibration;
     double duration;
     int has_duration, verbose, json, help;
 } sim_args;
@@ -184,8 +184,8 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_FAIL: return take_fail(s, a->value);
     case O_DROP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->drop, &s->has_drop);
     case O_DELAY: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->delay, &s->has_delay);
-    case O_JITTER: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->jitter, NULL);
-    case O_DUP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->dup, NULL);
+    case O_JITTER: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->jitter, &s->has_jitter);
+    case O_DUP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->dup, &s->has_dup);
     case O_CALIBRATION:
         return cli_value_long(a, 0, 600000, "milliseconds, 0..600000", &s->calibration_ms, &s->has_calibration);
     case O_DURATION:

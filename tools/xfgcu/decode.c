@@ -491,6 +491,7 @@ static int read_text(stream *s, FILE *in, int *bad, hex_fault *fault)
     hex_reader reader;
     hex_reader_init(&reader);
     *bad = 0;
+    errno = 0;
     while (!*bad && s->rc == XFGCU_EXIT_OK && (got = getline(&line, &cap, in)) > 0) {
         size_t n = 0, skip;
         log_time t;
@@ -511,10 +512,11 @@ static int read_text(stream *s, FILE *in, int *bad, hex_fault *fault)
         }
         *bad = hex_reader_feed(&reader, line, (size_t)got, bytes, out_cap, &n, fault) != 0;
         feed(s, bytes, n); /* the bytes before a fault are good */
+        errno = 0;         /* what getline() says next is its own */
     }
     free(line);
     free(bytes);
-    if (!*bad && ferror(in)) {
+    if (!*bad && (ferror(in) || errno == ENOMEM)) { /* out of memory is not the end of the input */
         return cli_fail("decode: cannot read %s: %s", s->name, strerror(errno));
     }
     if (!*bad) {

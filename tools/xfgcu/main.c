@@ -225,6 +225,13 @@ static void link_defaults(cli_link *l)
     l->timeout_ms = 1000L;
 }
 
+/* --tcp HOST:PORT or [ADDR]:PORT names its port (read as the library reads the spec). */
+static int tcp_port_given(const char *tcp)
+{
+    xf_link_spec spec;
+    return cli_tcp_spec(tcp, &spec, NULL) == XF_OK && spec.port_given;
+}
+
 /* Options that contradict each other, or name what the link has not, are usage errors. */
 int cli_check_link_options(const cli_link *l)
 {
@@ -241,8 +248,7 @@ int cli_check_link_options(const cli_link *l)
     if (l->has_local_port && l->tcp != NULL) {
         return cli_fail("--local-port is for --udp, not --tcp");
     }
-    if (l->has_gcu_port && l->tcp != NULL && strrchr(l->tcp, ':') != NULL && strchr(l->tcp, ']') == NULL &&
-        strchr(l->tcp, ':') == strrchr(l->tcp, ':')) {
+    if (l->has_gcu_port && l->tcp != NULL && tcp_port_given(l->tcp)) {
         return cli_fail("--gcu-port and the port of --tcp %s: give the port once", l->tcp);
     }
     return XFGCU_EXIT_OK;
@@ -324,6 +330,9 @@ int main(int argc, char **argv)
     }
     if (rc == XFGCU_EXIT_OK) {
         rc = cli_check_link_options(link);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = cli_check_timing(link); /* for every command, as the other link options */
     }
     if (rc == XFGCU_EXIT_OK) {
         /* the commands' loops take them too; --help and --version (the first two) are their own */

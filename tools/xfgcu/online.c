@@ -8,6 +8,7 @@
 #include "cmdargs.h"
 
 #include <poll.h>
+#include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -98,8 +99,11 @@ static void settle(online *o)
 {
     uint32_t start = xf_posix_now_ms();
     uint32_t limit = 2u * (uint32_t)o->opt->timeout_ms + (uint32_t)o->opt->reorder_ms;
+    /* after Ctrl-C or SIGTERM, a person is waiting: only what the link needs for --reorder and a
+     * few packets, then the note */
+    uint32_t hurried = (uint32_t)o->opt->reorder_ms + 3000u / (uint32_t)o->opt->rate_hz;
     while (!xf_client_settled(&o->client) && xf_client_link(&o->client) != XF_LINK_DOWN &&
-           xf_ms_since(xf_posix_now_ms(), start) < limit) {
+           xf_ms_since(xf_posix_now_ms(), start) < (cli_stop_requested() ? hurried : limit)) {
         online_poll(o, 10);
     }
     if (!xf_client_settled(&o->client) && xf_client_link(&o->client) != XF_LINK_DOWN) {
@@ -285,9 +289,12 @@ static long lowest_rate(long reorder_ms)
 }
 
 /* --rate, --timeout and --reorder that cannot work together are usage errors, said in their terms. */
-static int check_timing(const cli_link *l, const xf_client_config *cc)
+int cli_check_timing(const cli_link *l)
 {
+    xf_client_config defaults;
+    const xf_client_config *cc = &defaults;
     long period = (1000L + l->rate_hz / 2) / l->rate_hz, low = lowest_rate(l->reorder_ms);
+    xf_client_config_init(&defaults); /* stale_ms: the program keeps the library's default */
     if (period + 2 * l->reorder_ms >= (long)cc->stale_ms) {
         if (low == 0) {
             return cli_fail("--reorder %ld: too long; silence of twice that around each command would read as a "
@@ -317,9 +324,6 @@ static int start_client(online *o, const online_hooks *hooks)
     cc.rate_hz = (uint16_t)o->opt->rate_hz;
     cc.command_timeout_ms = (uint32_t)o->opt->timeout_ms;
     cc.reorder_ms = (uint16_t)o->opt->reorder_ms;
-    if (check_timing(o->opt, &cc) != XFGCU_EXIT_OK) {
-        return XFGCU_EXIT_USAGE;
-    }
     if (hooks != NULL) {
         o->hooks = *hooks;
     }
@@ -383,6 +387,9 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
     o->context = context;
     if (rc == XFGCU_EXIT_OK) {
         rc = cli_check_link_options(opt);
+    }
+    if (rc == XFGCU_EXIT_OK) {
+        rc = cli_check_timing(opt); /* before anything is opened: a usage error, not a link error */
     }
     if (rc == XFGCU_EXIT_OK) {
         o->t0_ms = xf_posix_now_ms();
@@ -483,6 +490,8 @@ json_t *cli_json_times(json_t *obj)
     }
     return obj;
 }
+
+double cli_round2(double v) { return floor(v * 100.0 + 0.5) / 100.0; }
 
 int cli_json_line(json_t *obj)
 {

@@ -79,6 +79,13 @@ typedef struct online {
 /** online.wait_ms: wait for the GCU until SIGINT or SIGTERM. */
 #define ONLINE_WAIT_FOREVER UINT32_MAX
 
+/**
+ * --rate, --timeout and --reorder that cannot work together (the link reads stale between two
+ * replies, or a timeout is shorter than a round trip): the usage error naming the option to
+ * change, or OK.
+ */
+int cli_check_timing(const cli_link *l);
+
 /** The link options name a link? Prints the usage error if not. @return an exit code. */
 int online_check_link(const cli_link *opt, const char *context);
 
@@ -128,6 +135,8 @@ void online_linger_ms(online *o, uint32_t ms);
  * with milliseconds ("2026-11-26T10:00:00.123Z"). @return @p obj
  */
 json_t *cli_json_times(json_t *obj);
+/** @p v rounded to 0.01, the resolution of the GCU's angles (a float's tail is not a figure). */
+double cli_round2(double v);
 /** Print @p obj (taken: it is freed) on one line of stdout, flushed. @return 0, or -1 if out of memory. */
 int cli_json_line(json_t *obj);
 /** A command's result as JSON: status ("ok", "failed", "timeout", "link_lost", "cancelled",
