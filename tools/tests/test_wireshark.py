@@ -231,6 +231,26 @@ class MadeUpPcaps(unittest.TestCase):
         self.assertIn("xfgcu.bad_crc", experts(frames[1]))
         self.assertIn("xfgcu.bad_length", experts(frames[2]))
 
+    def test_false_header_then_packet(self):
+        # noise that looks like a header with a length in range (A8 E5 48 00), then a real
+        # packet: the packet is dissected whole (the library's parser finds it too), over UDP,
+        # TCP and a serial capture
+        pkt = encode("shutter")
+        data = bytes([0xA8, 0xE5, 0x48, 0x00]) + pkt
+        want = json.loads(run("decode", "--json", pkt.hex()).stdout)
+        host, gcu = [10, 0, 0, 1], [10, 0, 0, 2]
+        cases = [
+            ("false_udp.pcap", 101, [ip_packet(17, host, gcu, 2338, 2337, data)]),
+            ("false_tcp.pcap", 101, [ip_packet(6, host, gcu, 40000, 2332, data, seq=1, ack=1)]),
+            ("false_serial.pcap", 147, [b">" + data]),
+        ]
+        for name, linktype, records in cases:
+            pcap = os.path.join(TMP, name)
+            write_pcap(pcap, linktype, records)
+            trees = xfgcu_trees(tshark_json(pcap))
+            self.assertEqual(len(trees), 1, name)
+            compare(self, want, trees[0])
+
     def every_field(self, direction, version):
         """A packet whose every field and reserved byte holds its own value, as large as it takes."""
         blank = run("encode", "--json", "-", stdin=json.dumps({"direction": direction, "version": version})).stdout

@@ -445,6 +445,37 @@ local function next_header(tvb, from)
     return n
 end
 
+-- Whether the len bytes at off end with their CRC (an intact packet).
+local function intact(tvb, off, len)
+    return crc16(tvb(off, len - 2):bytes(), len - 2) == tvb(off + len - 2, 2):uint() -- CRC high byte first
+end
+
+-- The same for the packet at the start of a string (serial captures).
+local function intact_str(s, len)
+    local crc = 0
+    for i = 1, len - 2 do
+        local k = bit.bxor(bit.rshift(crc, 8), s:byte(i))
+        crc = bit.bxor(bit.band(bit.lshift(crc, 8), 0xFFFF), CRC_TABLE[k])
+    end
+    return crc == s:byte(len - 1) * 256 + s:byte(len)
+end
+
+-- A header at off whose packet is damaged may be a false one (noise that looks like a header,
+-- with a length in range): the first header after it, inside it, that begins an intact packet
+-- within the n bytes at hand, or nil. The library's parser finds frames inside false
+-- candidates the same way.
+local function intact_inside(tvb, off, len, n)
+    local k = next_header(tvb, off + 1)
+    while k < off + len and k + 4 <= n do
+        local l = tvb(k + OFF_LENGTH, 2):le_uint()
+        if header_dir(tvb, k) and l >= MIN_LEN and l <= MAX_LEN and k + l <= n and intact(tvb, k, l) then
+            return k
+        end
+        k = next_header(tvb, k + 1)
+    end
+    return nil
+end
+
 -- ---- transports ---------------------------------------------------------------------------
 
 -- A datagram: whole packets; a packet cut short or a bad length is reported, not waited for.
@@ -464,13 +495,19 @@ local function dissect_datagram(tvb, pinfo, root)
             if len < MIN_LEN or len > MAX_LEN then
                 bad_packet(tvb, pinfo, root, off, 4, string.format("Bad length %u (must be %u..%u)", len, MIN_LEN, MAX_LEN))
                 off = off + 2
-            elseif len > n - off then
-                bad_packet(tvb, pinfo, root, off, n - off,
-                    string.format("Truncated: the length field says %u bytes, the datagram holds %u", len, n - off))
-                off = n
             else
-                dissect_packet(tvb(off, len):tvb(), pinfo, root)
-                off = off + len
+                local inner = intact_inside(tvb, off, math.min(len, n - off), n)
+                if inner and (len > n - off or not intact(tvb, off, len)) then
+                    add_noise(tvb, root, off, inner - off) -- a false header: what follows is a packet
+                    off = inner
+                elseif len > n - off then
+                    bad_packet(tvb, pinfo, root, off, n - off,
+                        string.format("Truncated: the length field says %u bytes, the datagram holds %u", len, n - off))
+                    off = n
+                else
+                    dissect_packet(tvb(off, len):tvb(), pinfo, root)
+                    off = off + len
+                end
             end
         end
     end
@@ -497,13 +534,19 @@ local function dissect_stream(tvb, pinfo, root)
             if len < MIN_LEN or len > MAX_LEN then
                 bad_packet(tvb, pinfo, root, off, 4, string.format("Bad length %u (must be %u..%u)", len, MIN_LEN, MAX_LEN))
                 off = off + 2
-            elseif len > rest then
-                pinfo.desegment_offset = off
-                pinfo.desegment_len = len - rest
-                return n
             else
-                dissect_packet(tvb(off, len):tvb(), pinfo, root)
-                off = off + len
+                local inner = (len > rest or not intact(tvb, off, len)) and intact_inside(tvb, off, math.min(len, rest), n)
+                if inner then
+                    add_noise(tvb, root, off, inner - off) -- a false header: what follows is a packet
+                    off = inner
+                elseif len > rest then
+                    pinfo.desegment_offset = off
+                    pinfo.desegment_len = len - rest
+                    return n
+                else
+                    dissect_packet(tvb(off, len):tvb(), pinfo, root)
+                    off = off + len
+                end
             end
         end
     end
@@ -545,6 +588,22 @@ end
 serial_reset()
 serial.init = serial_reset -- a new capture file
 
+-- Whether a header inside the first len bytes of buf begins an intact packet held whole.
+local function serial_inner(buf, len, head)
+    local at = buf:find(head, 2, true)
+    while at and at <= len do
+        local rest = buf:sub(at)
+        if #rest >= 4 then
+            local l = rest:byte(3) + 256 * rest:byte(4)
+            if l >= MIN_LEN and l <= MAX_LEN and #rest >= l and intact_str(rest, l) then
+                return true
+            end
+        end
+        at = buf:find(head, at + 1, true)
+    end
+    return false
+end
+
 -- Cut the whole packets of one direction off the front of `buf`; returns them and the rest.
 local function serial_packets(buf, dir)
     local head = string.char(table.unpack(dir == "host" and HOST_HEADER or GCU_HEADER))
@@ -564,6 +623,8 @@ local function serial_packets(buf, dir)
             buf = buf:sub(2)
         elseif #buf < len then
             return out, buf
+        elseif not intact_str(buf, len) and serial_inner(buf, len, head) then
+            buf = buf:sub(2) -- a false header: a packet begins inside it
         else
             out[#out + 1] = buf:sub(1, len)
             buf = buf:sub(len + 1)
