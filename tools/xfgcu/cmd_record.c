@@ -420,6 +420,8 @@ int cmd_record(const cli_link *link, int argc, char **argv)
     uint8_t version = link->protocol;
     memset(&r, 0, sizeof(r));
     rc = parse_args(&r, argc, argv, version, &cmd);
+    /* parse_args() may change *link: link options after COMMAND are taken by cli_set_anywhere() */
+    // cppcheck-suppress knownConditionTrueFalse
     if (rc == XFGCU_EXIT_OK && link->protocol != version) {
         /* the command was checked for the version given before record; one after would send it in
          * another */
