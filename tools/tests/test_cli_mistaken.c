@@ -230,6 +230,12 @@ static void test_impossible_settings(void **state)
     r = run_tool(NULL, "send", "shutter", "--reorder", "x", NULL);
     assert_failure(&r, 2, "--reorder x", "0..1000", NULL);
     tool_result_free(&r);
+    r = run_tool(NULL, "--udp", "127.0.0.1", "--udp", "127.0.0.2", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--udp given twice", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "--timeout", "200", "send", "shutter", "--timeout", "300", NULL);
+    assert_failure(&r, 2, "--timeout given twice", NULL);
+    tool_result_free(&r);
     r = run_tool(NULL, "send", "shutter", "--version", NULL);
     assert_failure(&r, 2, "unknown option '--version'", NULL);
     tool_result_free(&r);
@@ -266,7 +272,9 @@ static void test_stdin_read_errors(void **state)
     assert_int_equal(shell_run("encode --json -", "<&-", out, sizeof(out)), 2);
     assert_non_null(strstr(out, "xfgcu: encode: cannot read stdin: Bad file descriptor\n"));
     assert_int_equal(shell_run("decode", "< /", out, sizeof(out)), 2);
-    assert_non_null(strstr(out, "cannot read stdin"));
+    assert_non_null(strstr(out, "xfgcu: decode: cannot read stdin: Is a directory\n")); /* the reason, not "Success" */
+    assert_int_equal(shell_run("decode", "<&-", out, sizeof(out)), 2);
+    assert_non_null(strstr(out, "xfgcu: decode: cannot read stdin: Bad file descriptor\n"));
     assert_int_equal(shell_run("encode --json -", "< /dev/null", out, sizeof(out)), 0); /* empty: fine */
     assert_string_equal(out, "");
 }
@@ -346,6 +354,10 @@ static void test_help_forms(void **state)
     r = run_tool(NULL, "help", "send", NULL);
     assert_int_equal(r.status, 0);
     assert_non_null(strstr(r.out, "usage: xfgcu [LINK OPTIONS] send"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "send", "shutter", "-h", NULL); /* -h wherever --help is taken */
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "shutter"));
     tool_result_free(&r);
     r = run_tool(NULL, "send", "-h", NULL);
     assert_int_equal(r.status, 0);

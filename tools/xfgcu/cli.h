@@ -129,6 +129,7 @@ typedef struct cli_link {
     long reorder_ms;                            /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
     int trace;                                  /**< --trace: every packet on stderr, one line each */
     int has_baud, has_gcu_port, has_local_port; /**< given: for options that only one kind of link takes */
+    unsigned given;                             /**< a bit per link option given: twice is a usage error */
 } cli_link;
 
 /** Options that contradict each other (two links, --baud with a network link...): the usage error, or OK. */

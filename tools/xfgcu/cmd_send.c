@@ -33,6 +33,7 @@ void help_send(FILE *out)
           "  operating                calibration in progress (then the final state)\n"
           "  timeout                  no execution state within --timeout ms (exit 3)\n"
           "  link lost                the link went down before the answer (exit 3)\n"
+          "  interrupted              Ctrl-C or SIGTERM before the answer (exit 3)\n"
           "With --json: one object per line instead, {\"status\": \"ok\", \"order\": 32, ...} with\n"
           "time_mono and time_utc (docs/cli.md lists the keys).\n\n"
           "An order that the model the GCU reports does not have (by the vendor's V2.0.6 support list)\n"

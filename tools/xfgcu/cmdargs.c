@@ -958,7 +958,7 @@ static int take_line_options(const parse_state *st, int argc, char **argv, const
 {
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
-    cli_args_init(&a, argc, argv, CLI_IN_ORDER, opts, st->where);
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER "h", opts, st->where); /* -h: --help */
     a.quiet = 1;
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         if (id == ID_PROTOCOL) {
@@ -994,7 +994,7 @@ int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, 
         }
     }
     xf_command_init(&st.cmd, spec->info->order); /* the spec's default camera mask */
-    cli_args_init(&a, argc, argv, CLI_IN_ORDER, opts, st.where);
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER "h", opts, st.where);
     a.hint = (help != NULL) ? NULL : hint; /* record has no --help after COMMAND: send's tells */
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         rc = (id == CLI_BAD) ? XFGCU_EXIT_USAGE : (id == CLI_ARG) ? cli_unexpected(&a) : take_option(&st, &a, id);

@@ -565,6 +565,12 @@ static int decode_input(const char *file, const style *how)
     c = getc(in);
     if (c != EOF) {
         (void)ungetc(c, in);
+    } else if (ferror(in)) { /* say why now: errno is reset before the text reader's own reads */
+        int e = errno;
+        if (in != stdin) {
+            fclose(in);
+        }
+        return cli_fail("decode: cannot read %s: %s", name, strerror(e));
     }
     if (c == '#' || (pcap_magic_byte(c) && (c != '\n' || file != NULL))) {
         return replay_capture(in, name, how->json, (int)how->pod, 0); /* closes in */

@@ -67,8 +67,8 @@ typedef struct command_entry {
 } command_entry;
 
 static const command_entry commands[] = {
-    {"decode", "[--json] [--pod-order le|be|auto] [HEX ...]", "decode packets given in hex (stdin when no HEX)",
-     cmd_decode, help_decode},
+    {"decode", "[--json] [--pod-order le|be|auto] [--file FILE | HEX ...]",
+     "decode packets in hex, logs and captures (stdin when no HEX)", cmd_decode, help_decode},
     {"encode", "[--protocol N] --json OBJECT | COMMAND [ARGS]", "build a packet and print it in hex", cmd_encode,
      help_encode},
     {"send", "COMMAND [ARGS] [--json]", "run a command on the GCU and print its result", cmd_send, help_send},
@@ -79,10 +79,10 @@ static const command_entry commands[] = {
     {"monitor", "[--json] [--count N] [--duration S] [--wait S]", "live telemetry", cmd_monitor, help_monitor},
     {"sim", "[--serial PATH | --pty | --udp [PORT] | --tcp [PORT]] [--json]", "a simulated GCU", cmd_sim, help_sim},
     {"demo", "", "simulator and client over loopback: a short tour", cmd_demo, help_demo},
-    {"record", "FILE [--duration S] [--count N] [COMMAND [ARGS]]", "capture both directions with timestamps",
-     cmd_record, help_record},
+    {"record", "[--pcap] FILE [--duration S] [--count N] [--force] [COMMAND [ARGS]]",
+     "capture both directions with timestamps", cmd_record, help_record},
     {"replay", "FILE [--json] [--brief]", "decode a capture", cmd_replay, help_replay},
-    {"probe", "[--move] [--json]", "what the gimbal is and answers, safely", cmd_probe, help_probe},
+    {"probe", "[--move] [--json] [--window S]", "what the gimbal is and answers, safely", cmd_probe, help_probe},
 };
 
 #define N_COMMANDS (sizeof(commands) / sizeof(commands[0]))
@@ -191,6 +191,11 @@ static int take_host(const cli_args *a, int port_allowed, const char **host)
 /* One link option, as cli_next() returned it. */
 static int take_link_option(cli_link *l, const cli_args *a, int id)
 {
+    unsigned bit = 1u << (unsigned)(id - O_SERIAL);
+    if (l->given & bit) {
+        return cli_fail_in(a->context, "--%s given twice", a->opt->name); /* which one would count? */
+    }
+    l->given |= bit;
     switch (id) {
     case O_SERIAL: return cli_value_text(a, "a device path", &l->serial);
     case O_BAUD: l->has_baud = 1; return cli_value_baud(a, &l->baud, NULL);
