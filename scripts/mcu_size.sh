@@ -74,7 +74,8 @@ while read -r _ size _ name; do
   done
 done < <(arm-none-eabi-nm -S "$elf" | awk 'NF == 4')
 echo "of which the parser (its functions and the CRC's, and their tables): $parser bytes"
-echo "riscv preset: codec and client for rv32imac, freestanding, no C library"
+echo "riscv preset: rv32imac, freestanding, no C library: the client's archive, then the codec's"
 cmake --preset riscv >/dev/null
 cmake --build --preset riscv >/dev/null
 riscv64-unknown-elf-size -t build/riscv/src/libxfgcu_client.a | tail -1
+riscv64-unknown-elf-size -t build/riscv/src/libxfgcu_codec.a | tail -1

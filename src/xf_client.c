@@ -568,7 +568,7 @@ static int xf__may_start(xf_client *c)
     /* Replies to the previous packets of this order may still be on their way, each with that
      * command's state. Replies come in order: send nulls until one of theirs is back, then every
      * reply of this order answers this command. Where the link reorders, every command waits so
-     * (a late reply could be of any earlier command's order). Not while the link is down. */
+     * (a late reply could be of any earlier command's order). */
     return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u || c->guard_multi) &&
              !(c->guard_wait && xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms));
 }

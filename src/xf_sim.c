@@ -607,6 +607,7 @@ static void xf__hold(xf_sim *s, const uint8_t *bytes, size_t len, uint8_t to_gcu
     d->to_gcu = to_gcu;
     memcpy(d->bytes, bytes, len);
     s->n_delayed++;
+    s->n_held_in = (uint16_t)(s->n_held_in + to_gcu);
 }
 
 /* How many copies of a packet arrive: two with the duplicate fault. */
@@ -618,11 +619,14 @@ static uint32_t xf__due(xf_sim *s, uint32_t delay)
     return s->now_ms + delay + ((s->fault.jitter_ms > 0u) ? xf__rand(s) % (s->fault.jitter_ms + 1u) : 0u);
 }
 
-/* Whether a copy due at @p due waits in the queue: it is due later, or another waits (a packet
- * never overtakes one held). xf_sim_process() has no later: it never holds. */
-static int xf__waits(const xf_sim *s, uint32_t due)
+/* Whether a copy due at @p due waits in the queue: it is due later, or another of its direction
+ * waits (the queue is in due order: a packet due now does not overtake one of its direction that
+ * is due already; one held for later, by jitter, it may, as on a network). Replies held by the
+ * delay never hold back a host packet. xf_sim_process() has no later: it never holds. */
+static int xf__waits(const xf_sim *s, uint32_t due, uint8_t to_gcu)
 {
-    return s->cap_buf == NULL && (due != s->now_ms || s->n_delayed > 0u);
+    unsigned same = to_gcu ? s->n_held_in : (unsigned)(s->n_delayed - s->n_held_in);
+    return s->cap_buf == NULL && (due != s->now_ms || same > 0u);
 }
 
 static void xf__on_packet(xf_sim *s, const xf_host_packet *p);
@@ -632,6 +636,7 @@ static void xf__release_delayed(xf_sim *s)
     while (s->n_delayed > 0u && (int32_t)(s->now_ms - s->delayed[0].due_ms) >= 0) {
         xf_sim_delayed d = s->delayed[0];
         s->n_delayed--;
+        s->n_held_in = (uint16_t)(s->n_held_in - d.to_gcu);
         memmove(&s->delayed[0], &s->delayed[1], (size_t)s->n_delayed * sizeof(s->delayed[0]));
         if (d.to_gcu) {
             xf_host_packet p;
@@ -667,7 +672,7 @@ static void xf__send_reply(xf_sim *s, uint8_t *bytes, size_t len)
     }
     for (copies = xf__copies(s); copies > 0; copies--) { /* jitter and duplicates; replies wait delay_ms */
         uint32_t due = xf__due(s, s->fault.delay_ms);
-        if (xf__waits(s, due)) {
+        if (xf__waits(s, due, 0u)) {
             xf__hold(s, bytes, len, 0u, due);
         } else {
             xf__write_reply(s, bytes, len);
@@ -744,7 +749,7 @@ static void xf__arrive(xf_sim *s, const xf_frame *f)
     for (copies = xf__copies(s); copies > 0; copies--) {
         uint32_t due = xf__due(s, 0u);
         xf_host_packet p;
-        if (xf__waits(s, due)) {
+        if (xf__waits(s, due, 1u)) {
             xf__hold(s, f->data, f->len, 1u, due);
         } else if (xf_frame_host(f, &p) == XF_OK) {
             xf__on_packet(s, &p);
@@ -796,6 +801,12 @@ xf_err xf_sim_step(xf_sim *s, uint32_t now_ms)
     for (i = 0; i < 16; i++) {
         size_t n = 0;
         xf_err err = s->hal.read(s->hal.ctx, buf, sizeof(buf), &n);
+        if (err == XF_ERR_CLOSED && s->n_delayed > 0u) {
+            /* the host went away: what was on the wire goes with it, never to the next host */
+            s->stats.dropped += s->n_delayed;
+            s->n_delayed = 0;
+            s->n_held_in = 0;
+        }
         if (err != XF_OK) {
             return err;
         }

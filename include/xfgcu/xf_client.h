@@ -28,8 +28,10 @@
  * (or the exit of a stopped external-track stream), while a packet of that
  * one has no reply yet, starts only once the reply to a later null has
  * come back (nulls are sent until then), so a late reply to the previous
- * command of that order is never mistaken for this one's, however long
- * the link's delay. Before it stops,
+ * command of that order is never mistaken for this one's (every order waits
+ * so with reorder_ms, or while another guard is open; a guard that had
+ * none of the old command's replies gives up after command_timeout_ms,
+ * leaving the client unsettled). Before it stops,
  * a program lets the client settle (xf_client_settled()). On a link that
  * reorders or duplicates, reorder_ms bounds how far (docs/protocol.md
  * §7.4 says what each rule guarantees). Calibration's "operating" keeps it
@@ -328,10 +330,11 @@ typedef struct xf_client_config {
     uint16_t rate_watchdog_ms;   /**< rates older than this become zero rates; default 500; 0 = off (not recommended) */
     uint8_t protocol_version;    /**< sent in byte 4, and the version commands are checked for; >= 1, default 1 */
     /** The longest a packet or a reply can be overtaken by a later one on the link, ms; default 0:
-     *  the link keeps order (serial, TCP, UDP on loopback or a quiet LAN). Over a network that can
+     *  the link keeps order (serial, TCP, UDP on loopback or a wired LAN). Over a network that can
      *  reorder or duplicate datagrams, set the bound: the client then waits this long around each
      *  command (docs/protocol.md §7.4), so that no reply is taken for the wrong command and the
-     *  GCU runs each command once. At most 1000. */
+     *  GCU runs each command once. At most 1000, and stale_ms must exceed a packet period plus
+     *  twice this (xf_client_config_problem()). */
     uint16_t reorder_ms;
 } xf_client_config;
 
@@ -404,9 +407,10 @@ typedef struct xf_client {
     uint8_t active;          /**< private: queue[q_head] is being sent */
     uint8_t operating;       /**< private: ... and the GCU said "operating" */
     uint8_t guard_order;     /**< private: order of the last finished command (or of the stopped stream) */
-    uint8_t guard_open;      /**< private: no reply of another order seen since: a command of guard_order waits */
-    uint8_t nulls_owed;      /**< private: null packets to send before the next command */
-    uint8_t r_next;          /**< private: results[r_next] is overwritten next */
+    uint8_t guard_open; /**< private: no null's reply since the guarded packets: guard_order waits (every order with
+                           reorder_ms or guard_multi) */
+    uint8_t nulls_owed; /**< private: null packets to send before the next command */
+    uint8_t r_next;     /**< private: results[r_next] is overwritten next */
     /** @var xf_client::started_ms
      *  private: when the running command was first sent */
     uint32_t started_ms, operating_ms;        /**< private: when the GCU said "operating" */
@@ -717,8 +721,9 @@ void xf_client_clear_control(xf_client *c);
  * (xf_client_gcu_version(): cfg.protocol_version until it answers), and
  * runs when the commands before it have finished: it is sent in every
  * packet until a reply carries its execution state, then a null packet
- * follows. A command of the same order as the last one waits until a reply
- * of another order has come back (see xf_client.h). Its result comes once,
+ * follows. A command of the same order as the last one, while a packet of
+ * that one has no reply yet, waits until the reply to a null sent after it
+ * has come back (see xf_client.h and docs/protocol.md §7.4). Its result comes once,
  * through on_result and xf_client_command_status(). ::XF_ORDER_NULL is
  * accepted, but a GCU whose null replies carry no execution state (72-byte
  * replies, as V0.2 documents) never answers it: it ends in ::XF_CMD_TIMEOUT.
@@ -844,9 +849,9 @@ xf_err xf_client_external_track(xf_client *c, uint8_t cameras, int16_t dx, int16
 /**
  * Stop the external-track stream and queue its exit (value 0, the stream's
  * cameras; camera 1 when no stream was on) as a command, whose result comes
- * like any command's. The exit starts only once a reply of another order
- * has come back, so that a late reply to the stream is not taken for its
- * own. Never blocks.
+ * like any command's. The exit starts only once the reply to a null sent
+ * after the stream has come back, so that a late reply to the stream is
+ * not taken for its own. Never blocks.
  *
  * On failure nothing changes: the stream (if on) keeps running and nothing
  * is queued, so calling again (once the queue has room) sends the same exit

@@ -59,7 +59,9 @@ typedef struct xf_sim_faults {
     uint16_t drop_permille;    /**< drop this many replies per thousand, at random */
     uint16_t corrupt_next;     /**< flip a byte in the next N replies */
     uint16_t corrupt_permille; /**< flip a byte in this many replies per thousand, at random */
-    uint32_t delay_ms;         /**< hold each reply this long (at most XF_SIM_DELAY_QUEUE at once; more are dropped) */
+    /** hold each reply this long, < 2^31 with jitter_ms; at most XF_SIM_DELAY_QUEUE packets are held at once (a
+     *  delay over about 2.5 s at 50 Hz fills it), and more replies are dropped and counted */
+    uint32_t delay_ms;
     /** hold each reply, and each host packet before it is read, a random 0..jitter_ms more (each its
      *  own draw), so that packets overtake one another in both directions as on a network that
      *  reorders; host packets so held are executed in the order they come out */
@@ -86,10 +88,10 @@ typedef struct xf_sim_stats {
 
 /** A packet held back by the delay, jitter or duplicate faults (a member of xf_sim). */
 typedef struct xf_sim_delayed {
-    uint32_t due_ms; /**< when it goes out (a reply) or is read (a host packet) */
-    uint8_t len;     /**< its length */
-    uint8_t to_gcu;  /**< 1: a host packet on its way in; 0: a reply */
-    uint8_t bytes[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX]; /**< the packet */
+    uint32_t due_ms;                  /**< when it goes out (a reply) or is read (a host packet) */
+    uint8_t len;                      /**< its length */
+    uint8_t to_gcu;                   /**< 1: a host packet on its way in; 0: a reply */
+    uint8_t bytes[XF_PACKET_MAX_LEN]; /**< the packet (any length the parser takes) */
 } xf_sim_delayed;
 
 /** Simulator state; members are readable (tests use them), change them only through functions and `fault`. */
@@ -158,6 +160,7 @@ typedef struct xf_sim {
     uint8_t have_tgt;                           /**< slewing to tgt */
     xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE]; /**< packets held back, in the order they are due */
     uint16_t n_delayed;                         /**< packets in delayed */
+    uint16_t n_held_in;                         /**< of which host packets on their way in */
     /* xf_sim_process: replies go to this buffer instead of the link */
     uint8_t *cap_buf; /**< xf_sim_process()'s output, NULL otherwise */
     /** @var xf_sim::cap_cap

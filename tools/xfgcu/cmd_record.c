@@ -28,7 +28,7 @@
 
 void help_record(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] record [--pcap] FILE [--duration S] [--count N] [COMMAND [ARGS]]\n\n"
+    fputs("usage: xfgcu [LINK OPTIONS] record [--pcap] FILE [--duration S] [--count N] [--force] [COMMAND [ARGS]]\n\n"
           "Capture every byte the link moves, both ways, with timestamps, into FILE (a text format,\n"
           "one chunk per line: docs/capture-format.md), while null packets keep the link going.\n"
           "`xfgcu replay FILE` decodes it.\n\n"

@@ -132,7 +132,8 @@ void help_link_options(FILE *out)
           "  --rate HZ             packets per second, 1..200 (50; the vendor recommends 30..50)\n"
           "  --timeout MS          how long to wait for the first reply and for a command's feedback (1000)\n"
           "  --reorder MS          the longest the network can delay one packet behind a later one (0:\n"
-          "                        it keeps order, as serial, TCP and a wired LAN do); 0..1000\n"
+          "                        it keeps order, as serial, TCP and a wired LAN do); 0..1000, and a\n"
+          "                        packet period plus twice it under 250 ms (114 at 50 Hz)\n"
           "  --trace               print every packet sent and received on stderr, one line each\n"
           "\nexit status: 0 success, 1 the GCU answered with failure, 2 usage error or bad input,\n"
           "3 link error or timeout.\n",
