@@ -379,18 +379,6 @@ static json_t *units_json(const xf_telemetry *t)
     return u;
 }
 
-/* "time_mono" (seconds, CLOCK_MONOTONIC) and "time_utc" (ISO 8601, ms) of when @p r came. */
-static void times_json(json_t *obj, const reply *r)
-{
-    struct tm utc;
-    char text[80];
-    gmtime_r(&r->wall.tv_sec, &utc);
-    snprintf(text, sizeof(text), "%04d-%02d-%02dT%02d:%02d:%02d.%03ldZ", utc.tm_year + 1900, utc.tm_mon + 1,
-             utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, r->wall.tv_nsec / 1000000L);
-    json_object_set_new(obj, "time_mono", json_real((double)r->mono.tv_sec + (double)r->mono.tv_nsec / 1e9));
-    json_object_set_new(obj, "time_utc", json_string(text));
-}
-
 int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
 {
     xfpy_client *h = (xfpy_client *)p;
@@ -411,7 +399,7 @@ int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
         json_decref(obj);
         return -1;
     }
-    times_json(obj, r); /* first, as monitor --json has them */
+    (void)jsonpkt_times(obj, &r->mono, &r->wall); /* first, as monitor --json has them */
     json_object_update(obj, pkt);
     json_decref(pkt);
     json_object_set_new(obj, "units", units_json(&r->tele));

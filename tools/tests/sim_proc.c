@@ -234,3 +234,18 @@ int sim_teardown(void **state)
     }
     return status == 0 ? 0 : -1;
 }
+
+tool_result sim_run_on(const sim_proc *s, ...)
+{
+    const char *args[48];
+    int n = sim_link_args(s, args);
+    va_list ap;
+    const char *a;
+    va_start(ap, s);
+    while ((a = va_arg(ap, const char *)) != NULL) {
+        assert_true(n < 48);
+        args[n++] = a;
+    }
+    va_end(ap);
+    return run_tool_argv(n, args, NULL);
+}

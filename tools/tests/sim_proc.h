@@ -10,6 +10,8 @@
 
 #include <sys/types.h>
 
+#include "run_tool.h"
+
 typedef enum sim_link { SIM_TCP, SIM_UDP, SIM_PTY } sim_link;
 
 typedef struct sim_proc {
@@ -33,6 +35,9 @@ int sim_stop(sim_proc *s);
 
 /** The link options that reach it: "--tcp 127.0.0.1:PORT", UDP with --gcu-port and --local-port 0, or --serial PATH. */
 int sim_link_args(const sim_proc *s, const char **args);
+
+/** Run xfgcu with the link options of @p s, then the arguments (NULL-terminated, at most 40). */
+tool_result sim_run_on(const sim_proc *s, ...);
 
 /** cmocka setup/teardown: state is a zeroed sim_proc, started on TCP, UDP, a pty, or not at all. */
 int sim_setup_tcp(void **state);

@@ -51,22 +51,6 @@ static void sleep_ms(long ms)
     nanosleep(&t, NULL);
 }
 
-/* Run xfgcu with the link options of @p s, then the arguments (NULL-terminated). */
-static tool_result run_on(const sim_proc *s, ...)
-{
-    const char *args[48];
-    int n = sim_link_args(s, args);
-    va_list ap;
-    const char *a;
-    va_start(ap, s);
-    while ((a = va_arg(ap, const char *)) != NULL) {
-        assert_true(n < 48);
-        args[n++] = a;
-    }
-    va_end(ap);
-    return run_tool_argv(n, args, NULL);
-}
-
 /* A port nobody uses now (bound, read, released), for a program started before its peer. */
 static void free_port(int type, char *buf, size_t cap)
 {
@@ -211,7 +195,7 @@ static void assert_mode_line(const json_t *o, const char *status, const char *or
 static void test_point_json(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "point", "--pitch", "-30", "--yaw", "45", "--json", NULL);
+    tool_result r = sim_run_on(s, "point", "--pitch", "-30", "--yaw", "45", "--json", NULL);
     json_t *o;
     assert_int_equal(r.status, 0);
     assert_int_equal(r.err_len, 0);
@@ -233,7 +217,7 @@ static void test_point_json(void **state)
     json_decref(o);
     tool_result_free(&r);
     /* not there in time: both lines, the motion's says where it is; then the one stderr line */
-    r = run_on(s, "point", "--pitch", "120", "--yaw", "0", "--wait", "0.3", "--json", NULL);
+    r = sim_run_on(s, "point", "--pitch", "120", "--yaw", "0", "--wait", "0.3", "--json", NULL);
     assert_int_equal(r.status, 3);
     assert_int_equal(count_lines(r.out), 2);
     assert_int_equal(count_lines(r.err), 1);
@@ -248,7 +232,7 @@ static void test_point_json(void **state)
 static void test_rate_json(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "rate", "--pitch", "-10", "--yaw", "30", "--duration", "0.5", "--json", NULL);
+    tool_result r = sim_run_on(s, "rate", "--pitch", "-10", "--yaw", "30", "--duration", "0.5", "--json", NULL);
     json_t *o;
     double moved;
     assert_int_equal(r.status, 0);
@@ -282,7 +266,7 @@ static void test_mode_refused_json(void **state)
     tool_result r;
     json_t *o;
     sim_start(s, SIM_TCP, "--fail", "head-lock=1", NULL);
-    r = run_on(s, "rate", "--pitch", "0", "--yaw", "10", "--duration", "0.2", "--json", NULL);
+    r = sim_run_on(s, "rate", "--pitch", "0", "--yaw", "10", "--duration", "0.2", "--json", NULL);
     assert_int_equal(r.status, 1);
     assert_int_equal(count_lines(r.out), 1);
     assert_int_equal(count_lines(r.err), 1);

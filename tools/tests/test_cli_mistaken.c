@@ -191,54 +191,54 @@ static void test_send_json_and_trace(void **state)
     tool_result_free(&r);
 }
 
+/* A usage error: exit 2, nothing on stdout, one line on stderr holding every needle. */
+typedef struct usage_case {
+    const char *args[8];    /* NULL-terminated */
+    const char *needles[4]; /* NULL-terminated */
+} usage_case;
+
+static const usage_case usage_cases[] = {
+    {{"--udp", "127.0.0.1", "--rate", "1", "send", "shutter"}, {"--rate 1", "stale after 250 ms", "--rate 5 or more"}},
+    {{"--udp", "127.0.0.1", "--timeout", "30", "send", "shutter"},
+     {"--timeout 30", "round trip", "--timeout 40 or more"}},
+    {{"--udp", "127.0.0.1", "--reorder", "100", "--timeout", "200", "send", "shutter"},
+     {"--timeout 200", "twice --reorder", "--timeout 240 or more"}},
+    {{"--udp", "127.0.0.1", "--reorder", "1001", "send", "shutter"}, {"--reorder 1001"}},
+    {{"--udp", "127.0.0.1", "--baud", "115200", "send", "shutter"}, {"--baud is for --serial"}},
+    {{"--serial", "/dev/null", "--gcu-port", "2337", "send", "shutter"}, {"--gcu-port is for --udp or --tcp"}},
+    {{"--tcp", "127.0.0.1", "--local-port", "5", "send", "shutter"}, {"--local-port is for --udp"}},
+    {{"--tcp", "127.0.0.1:2332", "--gcu-port", "2332", "send", "shutter"}, {"give the port once"}},
+    /* after COMMAND as well */
+    {{"send", "shutter", "--udp", "127.0.0.1", "--tcp", "127.0.0.1"}, {"give only one of --serial, --udp, --tcp"}},
+    {{"send", "shutter", "--rate", "1", "--udp", "127.0.0.1"}, {"--rate 1"}},
+    {{"send", "shutter", "--reorder", "x"}, {"--reorder x", "0..1000"}},
+    {{"--udp", "127.0.0.1", "--udp", "127.0.0.2", "send", "shutter"}, {"--udp given twice"}},
+    {{"--timeout", "200", "send", "shutter", "--timeout", "300"}, {"--timeout given twice"}},
+    {{"send", "shutter", "--version"}, {"unknown option '--version'"}},
+};
+
 /* Settings that cannot work, and options that contradict each other, are one-line usage errors. */
 static void test_impossible_settings(void **state)
 {
+    size_t i, k;
     tool_result r;
     (void)state;
-    r = run_tool(NULL, "--udp", "127.0.0.1", "--rate", "1", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--rate 1", "stale after 250 ms", "--rate 5 or more", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--udp", "127.0.0.1", "--timeout", "30", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--timeout 30", "round trip", "--timeout 40 or more", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--udp", "127.0.0.1", "--reorder", "100", "--timeout", "200", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--timeout 200", "twice --reorder", "--timeout 240 or more", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--udp", "127.0.0.1", "--reorder", "1001", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--reorder 1001", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--udp", "127.0.0.1", "--baud", "115200", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--baud is for --serial", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--serial", "/dev/null", "--gcu-port", "2337", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--gcu-port is for --udp or --tcp", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--tcp", "127.0.0.1", "--local-port", "5", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--local-port is for --udp", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--tcp", "127.0.0.1:2332", "--gcu-port", "2332", "send", "shutter", NULL);
-    assert_failure(&r, 2, "give the port once", NULL);
-    tool_result_free(&r);
-    /* after COMMAND as well */
-    r = run_tool(NULL, "send", "shutter", "--udp", "127.0.0.1", "--tcp", "127.0.0.1", NULL);
-    assert_failure(&r, 2, "give only one of --serial, --udp, --tcp", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "send", "shutter", "--rate", "1", "--udp", "127.0.0.1", NULL);
-    assert_failure(&r, 2, "--rate 1", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "send", "shutter", "--reorder", "x", NULL);
-    assert_failure(&r, 2, "--reorder x", "0..1000", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--udp", "127.0.0.1", "--udp", "127.0.0.2", "send", "shutter", NULL);
-    assert_failure(&r, 2, "--udp given twice", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "--timeout", "200", "send", "shutter", "--timeout", "300", NULL);
-    assert_failure(&r, 2, "--timeout given twice", NULL);
-    tool_result_free(&r);
-    r = run_tool(NULL, "send", "shutter", "--version", NULL);
-    assert_failure(&r, 2, "unknown option '--version'", NULL);
-    tool_result_free(&r);
+    for (i = 0; i < sizeof(usage_cases) / sizeof(usage_cases[0]); i++) {
+        const usage_case *c = &usage_cases[i];
+        int n = 0;
+        while (c->args[n] != NULL) {
+            n++;
+        }
+        r = run_tool_argv(n, c->args, NULL);
+        for (k = 0; c->needles[k] != NULL; k++) {
+            if (r.status != 2 || r.out[0] != '\0' || count_lines(r.err) != 1u || strstr(r.err, c->needles[k]) == NULL) {
+                print_error("case %zu: status %d, stdout \"%s\", stderr \"%s\" (want \"%s\")\n", i, r.status, r.out,
+                            r.err, c->needles[k]);
+                fail();
+            }
+        }
+        tool_result_free(&r);
+    }
     /* a command's own option of the same name wins: zoom-to's --rate is the zoom */
     r = run_tool(NULL, "encode", "zoom-to", "--rate", "5.5", NULL);
     assert_int_equal(r.status, 0);

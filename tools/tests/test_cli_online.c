@@ -27,22 +27,6 @@
 
 /* ---- helpers ---------------------------------------------------------------------- */
 
-/* Run xfgcu with the link options of @p s, then the arguments (NULL-terminated). */
-static tool_result run_on(const sim_proc *s, ...)
-{
-    const char *args[48];
-    int n = sim_link_args(s, args);
-    va_list ap;
-    const char *a;
-    va_start(ap, s);
-    while ((a = va_arg(ap, const char *)) != NULL) {
-        assert_true(n < 48);
-        args[n++] = a;
-    }
-    va_end(ap);
-    return run_tool_argv(n, args, NULL);
-}
-
 static void expect(const tool_result *r, int status, const char *out)
 {
     if (r->status != status || strcmp(r->out, out) != 0) {
@@ -85,7 +69,7 @@ static size_t check_gcu_lines(const char *text, uint8_t version)
 /* The attitude the simulator reports now (raw 0.01 deg), through monitor --json --count 1. */
 static void attitude(const sim_proc *s, long *pitch, long *yaw)
 {
-    tool_result r = run_on(s, "monitor", "--json", "--count", "1", NULL);
+    tool_result r = sim_run_on(s, "monitor", "--json", "--count", "1", NULL);
     json_t *obj;
     assert_int_equal(r.status, 0);
     assert_int_equal(count_lines(r.out), 1);
@@ -101,14 +85,14 @@ static void attitude(const sim_proc *s, long *pitch, long *yaw)
 static void test_send_ok(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "send", "shutter", NULL);
+    tool_result r = sim_run_on(s, "send", "shutter", NULL);
     expect(&r, 0, "ok\n");
     assert_int_equal(r.err_len, 0);
     tool_result_free(&r);
-    r = run_on(s, "send", "zoom-to", "--rate", "5.5", NULL);
+    r = sim_run_on(s, "send", "zoom-to", "--rate", "5.5", NULL);
     expect(&r, 0, "ok\n");
     tool_result_free(&r);
-    r = run_on(s, "send", "shutter", "--cameras", "all", NULL);
+    r = sim_run_on(s, "send", "shutter", "--cameras", "all", NULL);
     expect(&r, 0, "ok\n");
     tool_result_free(&r);
 }
@@ -118,16 +102,16 @@ static void test_send_failed_mask(void **state)
     sim_proc *s = (sim_proc *)*state;
     tool_result r;
     sim_start(s, SIM_TCP, "--fail", "zoom-in=0x02", "--fail", "shutter=1", NULL);
-    r = run_on(s, "send", "zoom-in", NULL);
+    r = sim_run_on(s, "send", "zoom-in", NULL);
     expect(&r, 1, "failed cameras 0x02\n");
     assert_int_equal(count_lines(r.err), 1);
     assert_non_null(strstr(r.err, "xfgcu: send zoom-in: the GCU answered failed cameras 0x02"));
     tool_result_free(&r);
-    r = run_on(s, "send", "shutter", NULL);
+    r = sim_run_on(s, "send", "shutter", NULL);
     expect(&r, 1, "failed\n");
     assert_int_equal(count_lines(r.err), 1);
     tool_result_free(&r);
-    r = run_on(s, "send", "focus", NULL); /* the others still work */
+    r = sim_run_on(s, "send", "focus", NULL); /* the others still work */
     expect(&r, 0, "ok\n");
     tool_result_free(&r);
 }
@@ -137,7 +121,7 @@ static void test_send_calibration(void **state)
     sim_proc *s = (sim_proc *)*state;
     tool_result r;
     sim_start(s, SIM_UDP, "--calibration-ms", "300", NULL);
-    r = run_on(s, "send", "calibration", NULL);
+    r = sim_run_on(s, "send", "calibration", NULL);
     expect(&r, 0, "operating\nok\n");
     tool_result_free(&r);
 }
@@ -147,10 +131,10 @@ static void test_send_v2(void **state)
     sim_proc *s = (sim_proc *)*state;
     tool_result r;
     sim_start(s, SIM_TCP, "--protocol", "2", NULL);
-    r = run_on(s, "--protocol", "2", "send", "digital-zoom", "--on", NULL);
+    r = sim_run_on(s, "--protocol", "2", "send", "digital-zoom", "--on", NULL);
     expect(&r, 0, "ok\n");
     tool_result_free(&r);
-    r = run_on(s, "monitor", "--json", "--count", "3", NULL);
+    r = sim_run_on(s, "monitor", "--json", "--count", "3", NULL);
     assert_int_equal(r.status, 0);
     assert_int_equal(check_gcu_lines(r.out, 2), 3);
     tool_result_free(&r);
@@ -163,13 +147,13 @@ static void test_send_model_support(void **state)
     sim_proc *s = (sim_proc *)*state;
     tool_result r;
     sim_start(s, SIM_TCP, "--model", "0", "--verbose", NULL);
-    r = run_on(s, "send", "palette", "--mode", "1", NULL);
+    r = sim_run_on(s, "send", "palette", "--mode", "1", NULL);
     assert_failure(&r, 1, "send palette: the GCU's model Z-6A (code 0) does not support it", "--force", NULL);
     tool_result_free(&r);
-    r = run_on(s, "send", "palette", "--mode", "1", "--force", NULL);
+    r = sim_run_on(s, "send", "palette", "--mode", "1", "--force", NULL);
     expect(&r, 1, "failed cameras 0x01\n");
     tool_result_free(&r);
-    r = run_on(s, "send", "--force", "focus", NULL);
+    r = sim_run_on(s, "send", "--force", "focus", NULL);
     expect(&r, 0, "ok\n");
     tool_result_free(&r);
 }
@@ -183,11 +167,11 @@ static void test_send_osd_follows_gcu(void **state)
     int i;
     sim_start(s, SIM_TCP, "--protocol", "2", NULL);
     for (i = 0; i < 2; i++) {
-        tool_result r = run_on(s, "send", "osd", sw[i], NULL);
+        tool_result r = sim_run_on(s, "send", "osd", sw[i], NULL);
         json_t *obj;
         expect(&r, 0, "ok\n");
         tool_result_free(&r);
-        r = run_on(s, "monitor", "--json", "--count", "1", NULL);
+        r = sim_run_on(s, "monitor", "--json", "--count", "1", NULL);
         assert_int_equal(r.status, 0);
         obj = parse_line(r.out);
         assert_int_equal((int_key(obj, "camera_status") & 0x2000) != 0, i); /* XF_CAMERA_OSD_ON */
@@ -270,7 +254,7 @@ static void test_sim_port_taken(void **state)
 static void test_monitor_json(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "monitor", "--json", "--count", "5", NULL);
+    tool_result r = sim_run_on(s, "monitor", "--json", "--count", "5", NULL);
     assert_int_equal(r.status, 0);
     assert_int_equal(r.err_len, 0);
     assert_int_equal(check_gcu_lines(r.out, 1), 5);
@@ -280,7 +264,7 @@ static void test_monitor_json(void **state)
 static void test_monitor_plain(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "monitor", "--duration", "1.5", NULL); /* not a terminal: one line per second */
+    tool_result r = sim_run_on(s, "monitor", "--duration", "1.5", NULL); /* not a terminal: one line per second */
     assert_int_equal(r.status, 0);
     assert_true(count_lines(r.out) >= 1 && count_lines(r.out) <= 3);
     assert_non_null(strstr(r.out, "link up"));
@@ -294,7 +278,7 @@ static void test_monitor_plain(void **state)
 static void test_point(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL);
+    tool_result r = sim_run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL);
     double roll_deg = 99, pitch_deg = 99, yaw_deg = 99;
     long pitch, yaw;
     assert_int_equal(r.status, 0);
@@ -303,7 +287,7 @@ static void test_point(void **state)
     tool_result_free(&r);
     attitude(s, &pitch, &yaw);
     assert_true(labs(pitch + 3000) <= 50 && labs(yaw - 4500) <= 50);
-    r = run_on(s, "point", "--pitch", "10", "--yaw", "-90", NULL); /* -90 is 270 */
+    r = sim_run_on(s, "point", "--pitch", "10", "--yaw", "-90", NULL); /* -90 is 270 */
     assert_int_equal(r.status, 0);
     tool_result_free(&r);
     attitude(s, &pitch, &yaw);
@@ -313,7 +297,8 @@ static void test_point(void **state)
 static void test_point_unreachable(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = run_on(s, "point", "--pitch", "120", "--yaw", "0", "--wait", "0.5", NULL); /* the sim stops at 90 */
+    tool_result r =
+        sim_run_on(s, "point", "--pitch", "120", "--yaw", "0", "--wait", "0.5", NULL); /* the sim stops at 90 */
     assert_failure(&r, 3, "point: not there in time", NULL);
     tool_result_free(&r);
 }
@@ -324,7 +309,7 @@ static void test_rate(void **state)
     long pitch0, yaw0, pitch1, yaw1, moved;
     tool_result r;
     attitude(s, &pitch0, &yaw0);
-    r = run_on(s, "rate", "--pitch", "-10", "--yaw", "30", "--duration", "1", NULL);
+    r = sim_run_on(s, "rate", "--pitch", "-10", "--yaw", "30", "--duration", "1", NULL);
     assert_int_equal(r.status, 0);
     assert_non_null(strstr(r.out, "turned 1."));
     tool_result_free(&r);
@@ -374,7 +359,7 @@ static void test_record_replay(void **state)
     int shutter;
     tool_result r;
     temp_name(file, sizeof(file), "duration");
-    r = run_on(s, "record", file, "--duration", "1", NULL);
+    r = sim_run_on(s, "record", file, "--duration", "1", NULL);
     assert_int_equal(r.status, 0);
     assert_non_null(strstr(r.out, "recorded 1."));
     assert_non_null(strstr(r.out, " chunks, "));
@@ -405,7 +390,7 @@ static void test_record_command(void **state)
     int shutter;
     tool_result r;
     temp_name(file, sizeof(file), "shutter");
-    r = run_on(s, "record", file, "shutter", NULL);
+    r = sim_run_on(s, "record", file, "shutter", NULL);
     assert_int_equal(r.status, 0);
     assert_true(strncmp(r.out, "ok\nrecorded ", 12) == 0);
     tool_result_free(&r);
@@ -557,7 +542,7 @@ static void test_record_keeps_files(void **state)
     /* a complete capture replaces FILE with --force */
     write_text(file, "precious\n");
     sim_start(s, SIM_TCP, NULL);
-    r = run_on(s, "record", file, "--count", "3", "--force", NULL);
+    r = sim_run_on(s, "record", file, "--count", "3", "--force", NULL);
     assert_int_equal(r.status, 0);
     tool_result_free(&r);
     assert_false(has_text(file, "precious\n"));

@@ -43,21 +43,6 @@ static const char *const moving[] = {"calibration", "neutral",      "angle_contr
 
 /* ---- helpers ---------------------------------------------------------------------------- */
 
-static tool_result run_on(const sim_proc *s, ...)
-{
-    const char *args[48];
-    int n = sim_link_args(s, args);
-    va_list ap;
-    const char *a;
-    va_start(ap, s);
-    while ((a = va_arg(ap, const char *)) != NULL) {
-        assert_true(n < 48);
-        args[n++] = a;
-    }
-    va_end(ap);
-    return run_tool_argv(n, args, NULL);
-}
-
 static int in_list(const char *const *list, const char *name)
 {
     for (; *list != NULL; list++) {
@@ -98,8 +83,8 @@ static void executed(sim_proc *s, int seen[256])
 static json_t *probe_json(const sim_proc *s, const char *protocol, const char *extra)
 {
     tool_result r = (extra != NULL)
-                        ? run_on(s, "--protocol", protocol, "probe", "--json", "--window", "0.3", extra, NULL)
-                        : run_on(s, "--protocol", protocol, "probe", "--json", "--window", "0.3", NULL);
+                        ? sim_run_on(s, "--protocol", protocol, "probe", "--json", "--window", "0.3", extra, NULL)
+                        : sim_run_on(s, "--protocol", protocol, "probe", "--json", "--window", "0.3", NULL);
     json_t *obj;
     if (r.status != 0 || r.err_len != 0 || count_lines(r.out) != 1) {
         print_error("status %d\nstdout: %s\nstderr: %s\n", r.status, r.out, r.err);
@@ -283,7 +268,7 @@ static void snapshot(const sim_proc *s, char *buf, size_t cap)
 {
     static const char *const keys[] = {"gimbal_mode", "pod_status",     "cam_pitch",     "cam_yaw",   "zoom_cam1",
                                        "zoom_cam2",   "thermal_status", "camera_status", "time_zone", NULL};
-    tool_result r = run_on(s, "--protocol", "2", "monitor", "--json", "--count", "1", NULL);
+    tool_result r = sim_run_on(s, "--protocol", "2", "monitor", "--json", "--count", "1", NULL);
     json_t *obj;
     size_t i, n = 0;
     assert_int_equal(r.status, 0);
@@ -380,7 +365,7 @@ static void test_probe_text(void **state)
     sim_proc *s = (sim_proc *)*state;
     tool_result r;
     sim_start(s, SIM_UDP, "--model", "0", NULL);
-    r = run_on(s, "probe", "--window", "0.3", NULL);
+    r = sim_run_on(s, "probe", "--window", "0.3", NULL);
     if (r.status != 0 || r.err_len != 0) {
         print_error("status %d\nstdout: %s\nstderr: %s\n", r.status, r.out, r.err);
         fail();
@@ -426,7 +411,7 @@ static void test_probe_disagreement_rtt(void **state)
 
 static void attitude(const sim_proc *s, long *pitch, long *yaw, long *mode)
 {
-    tool_result r = run_on(s, "monitor", "--json", "--count", "1", NULL);
+    tool_result r = sim_run_on(s, "monitor", "--json", "--count", "1", NULL);
     json_t *obj;
     assert_int_equal(r.status, 0);
     obj = parse_line(r.out);
@@ -447,10 +432,10 @@ static void test_probe_move(void **state)
     size_t i;
     tool_result r;
     sim_start(s, SIM_TCP, "--verbose", NULL);
-    r = run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL);
+    r = sim_run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL);
     assert_int_equal(r.status, 0);
     tool_result_free(&r);
-    r = run_on(s, "send", "head-lock", NULL);
+    r = sim_run_on(s, "send", "head-lock", NULL);
     assert_int_equal(r.status, 0);
     tool_result_free(&r);
     executed(s, seen); /* forget those */

@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "capture.h"
+#include "jsonpkt.h"
 #include "capture_pcap.h"
 #include "xfgcu/xf_hal.h"
 
@@ -23,18 +24,6 @@ int64_t xf_capture_wall_ms(void)
     return (int64_t)tv.tv_sec * 1000 + tv.tv_usec / 1000;
 }
 
-void xf_capture_format_wall(int64_t ms, char *buf, size_t cap)
-{
-    time_t sec = (time_t)(ms / 1000);
-    struct tm tm;
-    char date[32];
-    if (gmtime_r(&sec, &tm) == NULL || strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%S", &tm) == 0u) {
-        snprintf(buf, cap, "?");
-        return;
-    }
-    snprintf(buf, cap, "%s.%03dZ", date, (int)(ms % 1000));
-}
-
 xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc, int64_t start_ms)
 {
     char start[40] = "";
@@ -44,7 +33,7 @@ xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc, in
     memset(w, 0, sizeof(*w));
     w->f = f;
     if (start_ms >= 0) {
-        xf_capture_format_wall(start_ms, start, sizeof(start));
+        jsonpkt_utc_text(start_ms, start, sizeof(start));
     }
     if (fprintf(f, "%s\n# link %s\n%s%s%s# time(s) dir(> host to GCU, < GCU to host) bytes\n", XF_CAPTURE_MAGIC,
                 link_desc != NULL ? link_desc : "-", start_ms >= 0 ? XF_CAPTURE_START : "", start,

@@ -49,8 +49,6 @@ typedef struct xf_capture_writer {
 
 /** The wall clock now, ms since 1970 (the start time a capture records). */
 int64_t xf_capture_wall_ms(void);
-/** @p ms since 1970 as "2026-11-26T10:00:00.123Z" (UTC) into @p buf (24 bytes or more). */
-void xf_capture_format_wall(int64_t ms, char *buf, size_t cap);
 
 /**
  * Write the header (with @p link_desc, may be NULL, and the start time) to @p f; the caller

@@ -29,6 +29,7 @@
 #include "cli.h"
 #include "cmdargs.h"
 #include "hexin.h"
+#include "jsonpkt.h"
 #include "online.h"
 
 #define PROBE_MAX     40     /* orders in the report: planned, sent or not */
@@ -619,16 +620,7 @@ static const char *order_name(uint8_t order)
 
 /* ---- text ---------------------------------------------------------------------------------------- */
 
-static void wall_text(const struct timespec *ts, char *buf, size_t cap)
-{
-    struct tm tm;
-    time_t s = ts->tv_sec;
-    size_t n;
-    memset(&tm, 0, sizeof(tm));
-    (void)gmtime_r(&s, &tm);
-    n = strftime(buf, cap, "%Y-%m-%dT%H:%M:%S", &tm);
-    snprintf(buf + n, cap - n, ".%03ldZ", (long)(ts->tv_nsec / 1000000L));
-}
+static void wall_text(const struct timespec *ts, char *buf, size_t cap) { jsonpkt_utc_text(jsonpkt_ms(ts), buf, cap); }
 
 static void print_gimbal(const probe *p)
 {
@@ -866,13 +858,9 @@ static void json_legs(const probe *p, jobj top)
 
 static void json_head(const probe *p, jobj top)
 {
-    char wall[64];
     jobj l;
-    wall_text(&p->wall0, wall, sizeof(wall));
     jset(top, "probe", json_integer(1));
-    jset(top, "time_utc", json_string(wall));
-    long us = (long)(p->mono0.tv_nsec / 1000L);
-    jset(top, "time_mono", json_real((double)p->mono0.tv_sec + (double)us / 1e6));
+    (void)jsonpkt_times(top.obj, &p->mono0, &p->wall0); /* when the probe started */
     jset(top, "program", json_string("xfgcu"));
     jset(top, "version", json_string(XF_VERSION_STRING));
     l = jchild(top, "link");

@@ -56,7 +56,7 @@ static int print_json(const replay *r, const uint8_t *buf, size_t len, xf_direct
     char *text = NULL, wall[40];
     int ok = (pkt != NULL && obj != NULL && json_object_set_new(obj, "t", json_real(cli_seconds(t_ms))) == 0);
     if (ok && r->has_start) {
-        xf_capture_format_wall(r->start_ms + t_ms, wall, sizeof(wall));
+        jsonpkt_utc_text(r->start_ms + t_ms, wall, sizeof(wall));
         ok = json_object_set_new(obj, "time", json_string(wall)) == 0;
     }
     if (ok && json_object_update(obj, pkt) == 0) {
@@ -127,7 +127,7 @@ static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
         }
         if (r->has_start) {
             char stamp[sizeof(wall) - 2u];
-            xf_capture_format_wall(r->start_ms + t, stamp, sizeof(stamp));
+            jsonpkt_utc_text(r->start_ms + t, stamp, sizeof(stamp));
             snprintf(wall, sizeof(wall), ", %s", stamp);
         }
         snprintf(where, sizeof(where), "t %.3f s%s, %s", cli_seconds(t), wall,

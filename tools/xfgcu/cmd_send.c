@@ -11,8 +11,9 @@
  *
  * It returns as soon as the result is known: the null that separates this
  * command from the next one of the same order is the next client's first
- * packet (every client starts with nulls). With --reorder it first waits
- * that long, so that nothing sent later can overtake its last packet.
+ * packet (every client starts with nulls). Closing waits for the client to
+ * settle (online_free()): with --reorder that also means its last packet has
+ * landed, since the null whose reply settles it went out that long after.
  */
 #include <string.h>
 
@@ -89,9 +90,6 @@ static int run_send(const cli_link *link, const xf_command *cmd, const char *nam
             online_result_text(&r, text, sizeof(text));
             printf("%s\n", text);
             fflush(stdout);
-        }
-        if (r.status != XF_CMD_LINK_LOST && link->reorder_ms > 0) {
-            online_linger_ms(o, (uint32_t)link->reorder_ms); /* our last packet lands before anyone's next */
         }
         snprintf(what, sizeof(what), "send %s", name);
         rc = online_result_exit(o, what, &r);

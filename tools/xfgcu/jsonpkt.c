@@ -7,6 +7,8 @@
  * used when "params" is absent, and a "command" that disagrees with the
  * "params" next to it is refused rather than silently dropped.
  */
+#define _POSIX_C_SOURCE 200809L /* gmtime_r */
+
 #include "jsonpkt.h"
 
 #include <stdlib.h>
@@ -580,4 +582,31 @@ int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *wher
         err = pack(r.dir, &host, &gcu, out, cap, len);
     }
     return (err == XF_OK) ? XFGCU_EXIT_OK : cli_fail_in(r.where, "cannot build the packet: %s", xf_strerror(err));
+}
+
+/* ---- times ------------------------------------------------------------------------ */
+
+void jsonpkt_utc_text(int64_t ms, char *buf, size_t cap)
+{
+    time_t sec = (time_t)(ms / 1000);
+    struct tm tm;
+    char date[32];
+    if (gmtime_r(&sec, &tm) == NULL || strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%S", &tm) == 0u) {
+        snprintf(buf, cap, "?");
+        return;
+    }
+    snprintf(buf, cap, "%s.%03dZ", date, (int)(ms % 1000));
+}
+
+int64_t jsonpkt_ms(const struct timespec *wall) { return (int64_t)wall->tv_sec * 1000 + wall->tv_nsec / 1000000L; }
+
+json_t *jsonpkt_times(json_t *obj, const struct timespec *mono, const struct timespec *wall)
+{
+    char text[40];
+    if (obj != NULL) {
+        jsonpkt_utc_text(jsonpkt_ms(wall), text, sizeof(text));
+        json_object_set_new(obj, "time_mono", json_real((double)mono->tv_sec + (double)mono->tv_nsec / 1e9));
+        json_object_set_new(obj, "time_utc", json_string(text));
+    }
+    return obj;
 }

@@ -20,6 +20,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <time.h>
 
 #include "fields.h"
 #include "xfgcu/xfgcu.h"
@@ -40,5 +41,21 @@ int jsonpkt_print(const uint8_t *buf, size_t len, xf_direction dir, pod_reading 
  */
 int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *where, uint8_t *out, size_t cap,
                     size_t *len);
+
+/* ---- times ------------------------------------------------------------------------ */
+
+/** @p ms since 1970 as "2026-11-26T10:00:00.123Z" (UTC, ISO 8601) into @p buf (24 bytes or more);
+ *  "?" for a time gmtime() cannot read. The one format of every time the program writes. */
+void jsonpkt_utc_text(int64_t ms, char *buf, size_t cap);
+
+/** Milliseconds since 1970 of a CLOCK_REALTIME reading. */
+int64_t jsonpkt_ms(const struct timespec *wall);
+
+/**
+ * Add "time_mono" (seconds on CLOCK_MONOTONIC: for intervals) and "time_utc" (@p wall as
+ * jsonpkt_utc_text() writes it) to @p obj, the times every --json object carries, from readings
+ * taken by the caller (now, or when a reply came). @return @p obj (NULL stays NULL)
+ */
+json_t *jsonpkt_times(json_t *obj, const struct timespec *mono, const struct timespec *wall);
 
 #endif /* XFGCU_JSONPKT_H */

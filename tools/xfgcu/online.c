@@ -6,6 +6,7 @@
 
 #include "online.h"
 #include "cmdargs.h"
+#include "jsonpkt.h"
 
 #include <poll.h>
 #include <math.h>
@@ -464,31 +465,14 @@ void online_linger(online *o, uint32_t packets)
     }
 }
 
-void online_linger_ms(online *o, uint32_t ms)
-{
-    uint32_t start = xf_posix_now_ms();
-    while (xf_ms_since(xf_posix_now_ms(), start) < ms) {
-        online_poll(o, 10);
-    }
-}
-
 /* ---- JSON lines ------------------------------------------------------------------ */
 
 json_t *cli_json_times(json_t *obj)
 {
     struct timespec mono, wall;
-    struct tm utc;
-    char text[80]; /* room for any int the compiler can imagine in each field */
     clock_gettime(CLOCK_MONOTONIC, &mono);
     clock_gettime(CLOCK_REALTIME, &wall);
-    gmtime_r(&wall.tv_sec, &utc);
-    snprintf(text, sizeof(text), "%04d-%02d-%02dT%02d:%02d:%02d.%03ldZ", utc.tm_year + 1900, utc.tm_mon + 1,
-             utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, wall.tv_nsec / 1000000L);
-    if (obj != NULL) {
-        json_object_set_new(obj, "time_mono", json_real((double)mono.tv_sec + (double)mono.tv_nsec / 1e9));
-        json_object_set_new(obj, "time_utc", json_string(text));
-    }
-    return obj;
+    return jsonpkt_times(obj, &mono, &wall);
 }
 
 double cli_round2(double v) { return floor(v * 100.0 + 0.5) / 100.0; }

@@ -124,8 +124,6 @@ void online_poll(online *o, int max_wait_ms);
 
 /** Keep the loop going (null packets, or whatever control is set) until @p packets more were sent. */
 void online_linger(online *o, uint32_t packets);
-/** Keep the loop going for @p ms (send: with --reorder, until its last packet has surely landed). */
-void online_linger_ms(online *o, uint32_t ms);
 
 /* ---- JSON lines (--json of send, point, rate, monitor, probe) ------------------------ */
 
