@@ -496,8 +496,9 @@ local function dissect_datagram(tvb, pinfo, root)
                 bad_packet(tvb, pinfo, root, off, 4, string.format("Bad length %u (must be %u..%u)", len, MIN_LEN, MAX_LEN))
                 off = off + 2
             else
-                local inner = intact_inside(tvb, off, math.min(len, n - off), n)
-                if inner and (len > n - off or not intact(tvb, off, len)) then
+                -- look for a packet inside only when this one is not whole and intact (as the stream does)
+                local inner = (len > n - off or not intact(tvb, off, len)) and intact_inside(tvb, off, math.min(len, n - off), n)
+                if inner then
                     add_noise(tvb, root, off, inner - off) -- a false header: what follows is a packet
                     off = inner
                 elseif len > n - off then
