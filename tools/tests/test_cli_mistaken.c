@@ -193,7 +193,7 @@ static void test_send_json_and_trace(void **state)
 
 /* A usage error: exit 2, nothing on stdout, one line on stderr holding every needle. */
 typedef struct usage_case {
-    const char *args[8];    /* NULL-terminated */
+    const char *args[10];   /* NULL-terminated: room for one after the longest case */
     const char *needles[4]; /* NULL-terminated */
 } usage_case;
 
