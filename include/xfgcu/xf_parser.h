@@ -186,7 +186,7 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 #define XF__RMASK (XF_PARSER_RING - 1u)
 #define XF__IX(i) ((uint8_t)((i)&XF__RMASK))
 #define XF__MIN   XF_PACKET_MIN_LEN
-#define XF__SHORT 16u /* runs shorter than this are searched byte by byte, not through memchr */
+#define XF__SHORT 4u /* runs shorter than this are searched byte by byte, not through memchr */
 /* The CRC of each direction's header pair (tests/test_parser.c checks them). */
 #define XF__GCU_PAIR_CRC  0x4F68u
 #define XF__HOST_PAIR_CRC 0x395Cu
@@ -263,20 +263,25 @@ static inline unsigned xf__prefix(const xf_parser *p)
 
 /* Set next: just past the next byte that needs a look, the soonest of the
  * first candidate's last byte and the fourth byte of a header an h0 among
- * the last three bytes begins; with no candidate, the fourth byte of head's
- * h0, or with nothing held the next byte. Every byte before it, unless it
- * is an h0, is only stored (the fast paths). */
+ * the last three bytes begins (unless the byte after that h0 is here and is
+ * not h1: with a candidate pending, such an h0 changes nothing); with no
+ * candidate, the fourth byte of head's h0, or with nothing held the next
+ * byte. Every byte before it, unless it is an h0, is only stored (the fast
+ * paths). */
 XF__COLD void xf__plan(xf_parser *p)
 {
     const uint8_t *r = p->ring;
-    unsigned e = p->end, h0 = p->h0, stop, k;
+    unsigned e = p->end, h0 = p->h0, h1 = xf__h1(p), stop, k;
     if (p->n == 0u) {
         p->next = XF__IX(p->head + ((e == p->head) ? 1u : 4u));
         return;
     }
     /* a candidate is pending, so its four header bytes at least are held */
     stop = xf__left(p, 0);
-    k = (r[XF__IX(e - 3u)] == h0) ? 1u : (r[XF__IX(e - 2u)] == h0) ? 2u : (r[XF__IX(e - 1u)] == h0) ? 3u : stop;
+    k = (r[XF__IX(e - 3u)] == h0 && r[XF__IX(e - 2u)] == h1)   ? 1u
+        : (r[XF__IX(e - 2u)] == h0 && r[XF__IX(e - 1u)] == h1) ? 2u
+        : (r[XF__IX(e - 1u)] == h0)                            ? 3u
+                                                               : stop;
     p->next = XF__IX(e + ((k < stop) ? k : stop));
 }
 
@@ -459,8 +464,24 @@ XF__COLD void xf__after(xf_parser *p, int look)
  * the next h0 among the three bytes after it, or nothing is held. */
 XF__COLD int xf__hunt(xf_parser *p)
 {
+    unsigned k = 1;
     XF_ASSERT(xf__held(p) <= 4u && p->ring[p->head] == p->h0);
-    if (xf__held(p) == 4u && (p->ring[XF__IX(p->head + 1u)] != xf__h1(p) || xf__open(p) == 0)) {
+    if (xf__held(p) == 4u && p->ring[XF__IX(p->head + 1u)] != xf__h1(p)) {
+        /* No header pair at head, the commonest case of a run of h0 bytes:
+         * what xf__settle() and xf__plan() would do, without their generality. */
+        while (k < 4u && p->ring[XF__IX(p->head + k)] != p->h0) {
+            k++;
+        }
+        if (k == 4u) {
+            xf__clear(p);
+            return 0;
+        }
+        p->stats.bytes_skipped += k;
+        p->head = XF__IX(p->head + k);
+        p->next = XF__IX(p->head + 4u);
+        return 0;
+    }
+    if (xf__held(p) == 4u && xf__open(p) == 0) {
         xf__settle(p);
     }
     xf__plan(p);
