@@ -35,26 +35,39 @@ void xf_client_config_init(xf_client_config *cfg)
 
 size_t xf_client_size(void) { return sizeof(xf_client); }
 
-const char *xf_client_config_problem(const xf_client_config *cfg)
+xf_err xf_client_config_timing(const xf_client_config *cfg, xf_client_timing *t)
 {
     uint32_t period;
+    if (cfg == NULL || t == NULL || cfg->rate_hz == 0u || cfg->rate_hz > 200u) {
+        return XF_ERR_ARG;
+    }
+    period = (1000u + cfg->rate_hz / 2u) / cfg->rate_hz;
+    t->period_ms = period;
+    /* A reply comes once a packet, and with reorder_ms the client is silent up to twice that
+     * around a command. */
+    t->gap_ms = period + 2u * cfg->reorder_ms;
+    /* The command goes out at the next slot and its reply comes back before the one after. */
+    t->round_trip_ms = 2u * period + 2u * cfg->reorder_ms;
+    return XF_OK;
+}
+
+const char *xf_client_config_problem(const xf_client_config *cfg)
+{
+    xf_client_timing t;
     if (cfg == NULL) {
         return NULL; /* the defaults */
     }
-    if (cfg->rate_hz == 0u || cfg->rate_hz > 200u) {
+    if (xf_client_config_timing(cfg, &t) != XF_OK) {
         return "rate_hz: 1..200";
     }
-    period = (1000u + cfg->rate_hz / 2u) / cfg->rate_hz;
     if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u) {
         return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000";
     }
-    /* A reply comes once a packet, and with reorder_ms the client is silent up to twice that
-     * around a command: a link that reads stale (or down) between two good replies cannot work. */
-    if (cfg->stale_ms <= period + 2u * cfg->reorder_ms || cfg->down_ms <= cfg->stale_ms) {
+    /* A link that reads stale (or down) between two good replies cannot work. */
+    if (cfg->stale_ms <= t.gap_ms || cfg->down_ms <= cfg->stale_ms) {
         return "stale_ms: > 1000 / rate_hz + 2 reorder_ms (stale between packets); down_ms: > stale_ms";
     }
-    /* The command goes out at the next slot and its reply comes back before the one after. */
-    if (cfg->command_timeout_ms < 2u * period + 2u * cfg->reorder_ms) {
+    if (cfg->command_timeout_ms < t.round_trip_ms) {
         return "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)";
     }
     return NULL;

@@ -500,6 +500,24 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
  */
 const char *xf_client_config_problem(const xf_client_config *cfg);
 
+/** The times a configuration implies, which xf_client_config_problem() checks. */
+typedef struct xf_client_timing {
+    uint32_t period_ms;     /**< between two packets: 1000 / rate_hz, rounded */
+    uint32_t gap_ms;        /**< the longest a working link goes without a reply: period_ms plus twice
+                                 reorder_ms (the silence around a command); stale_ms must exceed it */
+    uint32_t round_trip_ms; /**< the shortest command_timeout_ms: two packet periods plus twice reorder_ms */
+} xf_client_timing;
+
+/**
+ * The times @p cfg implies, as numbers, for a caller that explains a
+ * configuration xf_client_config_problem() refuses in its own terms (the
+ * program names its options), with the library's arithmetic.
+ * @param cfg  the configuration
+ * @param t    receives the times
+ * @return ::XF_OK, or ::XF_ERR_ARG (NULL, or rate_hz outside 1..200; @p t is left alone)
+ */
+xf_err xf_client_config_timing(const xf_client_config *cfg, xf_client_timing *t);
+
 /**
  * Whether the client may stop without leaving a reply to one of its commands in flight: nothing
  * queued or running, and every packet that carried a command answered, or followed by a null

@@ -119,6 +119,25 @@ static void test_init_rates_and_args(void **state)
     assert_xf(xf_client_init(&c, &hal, &cfg), XF_WARN_RATE);
     assert_null(xf_client_config_problem(&cfg));
     assert_null(xf_client_config_problem(NULL));
+    {
+        /* the times behind those limits, which the program phrases in terms of its options */
+        xf_client_timing t = {7u, 7u, 7u};
+        xf_client_config_init(&cfg);
+        cfg.rate_hz = 30;
+        cfg.reorder_ms = 40;
+        assert_xf(xf_client_config_timing(&cfg, &t), XF_OK);
+        assert_int_equal(t.period_ms, 33); /* 1000 / 30, rounded */
+        assert_int_equal(t.gap_ms, 33 + 80);
+        assert_int_equal(t.round_trip_ms, 66 + 80);
+        cfg.rate_hz = 0;
+        assert_xf(xf_client_config_timing(&cfg, &t), XF_ERR_ARG);
+        assert_int_equal(t.period_ms, 33); /* left alone */
+        cfg.rate_hz = 201;
+        assert_xf(xf_client_config_timing(&cfg, &t), XF_ERR_ARG);
+        assert_xf(xf_client_config_timing(NULL, &t), XF_ERR_ARG);
+        cfg.rate_hz = 50;
+        assert_xf(xf_client_config_timing(&cfg, NULL), XF_ERR_ARG);
+    }
     /* reorder_ms counts twice against both: silence before and after a command */
     xf_client_config_init(&cfg);
     cfg.reorder_ms = 115; /* 20 + 230 = 250: not above stale_ms */

@@ -276,42 +276,48 @@ static void online_on_link(void *user, xf_link_state state)
     }
 }
 
-/* The lowest --rate whose packet period, plus twice --reorder, is under the 250 ms after which
- * the link reads stale (0 if none). */
-static long lowest_rate(long reorder_ms)
+/* The lowest rate at which a link configured as @p cc (its reorder_ms and stale_ms) goes no
+ * longer than stale_ms without a reply, by the library's arithmetic (0 if none). */
+static long lowest_rate(xf_client_config cc)
 {
-    long r;
-    for (r = 1; r <= 200; r++) {
-        if ((1000L + r / 2) / r + 2 * reorder_ms < 250L) {
-            return r;
+    xf_client_timing t;
+    for (cc.rate_hz = 1; cc.rate_hz <= 200u; cc.rate_hz++) {
+        if (xf_client_config_timing(&cc, &t) == XF_OK && t.gap_ms < cc.stale_ms) {
+            return (long)cc.rate_hz;
         }
     }
     return 0;
 }
 
-/* --rate, --timeout and --reorder that cannot work together are usage errors, said in their terms. */
+/* --rate, --timeout and --reorder that cannot work together are usage errors, said in their terms;
+ * the limits are the library's (xf_client_config_timing(), as xf_client_config_problem() checks). */
 int cli_check_timing(const cli_link *l)
 {
-    xf_client_config defaults;
-    const xf_client_config *cc = &defaults;
-    long period = (1000L + l->rate_hz / 2) / l->rate_hz, low = lowest_rate(l->reorder_ms);
-    xf_client_config_init(&defaults); /* stale_ms: the program keeps the library's default */
-    if (period + 2 * l->reorder_ms >= (long)cc->stale_ms) {
+    xf_client_config cc;
+    xf_client_timing t;
+    xf_client_config_init(&cc); /* stale_ms: the program keeps the library's default */
+    cc.rate_hz = (uint16_t)l->rate_hz;
+    cc.reorder_ms = (uint16_t)l->reorder_ms;
+    if (xf_client_config_timing(&cc, &t) != XF_OK) {
+        return cli_fail("--rate %ld: give 1 to 200", l->rate_hz);
+    }
+    if (t.gap_ms >= cc.stale_ms) {
+        long low = lowest_rate(cc);
         if (low == 0) {
             return cli_fail("--reorder %ld: too long; silence of twice that around each command would read as a "
                             "stale link (%u ms)",
-                            l->reorder_ms, (unsigned)cc->stale_ms);
+                            l->reorder_ms, (unsigned)cc.stale_ms);
         }
-        return cli_fail("--rate %ld: a packet every %ld ms%s, but the link reads stale after %u ms without a reply: "
+        return cli_fail("--rate %ld: a packet every %lu ms%s, but the link reads stale after %u ms without a reply: "
                         "give --rate %ld or more",
-                        l->rate_hz, period, l->reorder_ms > 0 ? " and twice --reorder" : "", (unsigned)cc->stale_ms,
-                        low);
+                        l->rate_hz, (unsigned long)t.period_ms, l->reorder_ms > 0 ? " and twice --reorder" : "",
+                        (unsigned)cc.stale_ms, low);
     }
-    if (l->timeout_ms < 2 * period + 2 * l->reorder_ms) {
-        return cli_fail("--timeout %ld: shorter than a round trip at --rate %ld (two packets, %ld ms%s): give "
-                        "--timeout %ld or more",
-                        l->timeout_ms, l->rate_hz, 2 * period, l->reorder_ms > 0 ? ", plus twice --reorder" : "",
-                        2 * period + 2 * l->reorder_ms);
+    if (l->timeout_ms < (long)t.round_trip_ms) {
+        return cli_fail("--timeout %ld: shorter than a round trip at --rate %ld (two packets, %lu ms%s): give "
+                        "--timeout %lu or more",
+                        l->timeout_ms, l->rate_hz, 2ul * t.period_ms, l->reorder_ms > 0 ? ", plus twice --reorder" : "",
+                        (unsigned long)t.round_trip_ms);
     }
     return XFGCU_EXIT_OK;
 }
