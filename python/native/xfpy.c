@@ -120,7 +120,7 @@ static int parse_command(int argc, char **argv, uint8_t version, const cmd_spec 
     if (argc < 1 || argv[0] == NULL || (*spec = cmdargs_find(argv[0])) == NULL) {
         return cli_fail("encode: unknown command '%s' (see 'xfgcu encode --help')", argc > 0 ? argv[0] : "");
     }
-    return cmdargs_parse(*spec, "encode", argc, argv, &version, NULL, NULL, cmd);
+    return cmdargs_parse_command(*spec, "encode", argc, argv, &version, cmd);
 }
 
 int xfpy_command(int argc, char **argv, int version, uint8_t *out, size_t cap, size_t *len)

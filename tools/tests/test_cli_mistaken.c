@@ -297,16 +297,18 @@ static void test_encode_takes_timed_lines(void **state)
 }
 
 /* The second review's cases: record --force keeps FILE when the link fails (its capture stays
- * under the temporary name, named in a note); --protocol after record is refused; settings that
+ * under the temporary name, named in a note); --protocol after record's COMMAND is the one the
+ * command is checked for; settings that
  * cannot work are refused before any link is opened, for every command. */
 static void test_review_cases(void **state)
 {
-    char dir[] = "/tmp/xfgcu-mistaken-XXXXXX", file[128], text[64] = "";
+    char dir[] = "/tmp/xfgcu-mistaken-XXXXXX", file[128], other[128], text[64] = "";
     tool_result r;
     FILE *f;
     (void)state;
     assert_non_null(mkdtemp(dir));
     snprintf(file, sizeof(file), "%s/ex.cap", dir);
+    snprintf(other, sizeof(other), "%s/new.cap", dir); /* never made: the links below fail */
     f = fopen(file, "w");
     assert_non_null(f);
     fputs("keep\n", f);
@@ -321,9 +323,18 @@ static void test_review_cases(void **state)
     assert_non_null(fgets(text, sizeof(text), f));
     fclose(f);
     assert_string_equal(text, "keep\n"); /* FILE as it was */
-    r = run_tool(NULL, "--tcp", "127.0.0.1:9", "record", file, "shutter", "--protocol", "2", NULL);
-    assert_failure(&r, 2, "--protocol goes before 'record'", NULL);
+    /* --protocol after record's COMMAND: the command is checked for it (fpv is a V0.2 order, so
+     * version 1 brings a note and 2 none); then the link fails, and no FILE is left */
+    r = run_tool(NULL, "--tcp", "127.0.0.1:9", "record", other, "fpv", NULL);
+    assert_int_equal(r.status, 3);
+    assert_non_null(strstr(r.err, "add --protocol 2"));
     tool_result_free(&r);
+    r = run_tool(NULL, "--tcp", "127.0.0.1:9", "record", other, "fpv", "--protocol", "2", NULL);
+    assert_int_equal(r.status, 3);
+    assert_null(strstr(r.err, "add --protocol 2"));
+    assert_non_null(strstr(r.err, "127.0.0.1:9"));
+    tool_result_free(&r);
+    assert_int_equal(access(other, F_OK), -1);
     r = run_tool(NULL, "--tcp", "127.0.0.1:1", "--rate", "1", "send", "shutter", NULL);
     assert_failure(&r, 2, "--rate 1", NULL); /* a usage error, not "connection refused" */
     tool_result_free(&r);

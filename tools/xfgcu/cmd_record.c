@@ -103,7 +103,7 @@ static int take_arg(record *r, const cli_args *a, int id)
 }
 
 /* Options of record up to COMMAND; everything after COMMAND is the command's. */
-static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_command *cmd)
+static int parse_args(record *r, int argc, char **argv, const uint8_t *version, xf_command *cmd)
 {
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
@@ -117,9 +117,8 @@ static int parse_args(record *r, int argc, char **argv, uint8_t version, xf_comm
     if (r->file == NULL) {
         return cli_fail("record: missing FILE (where the capture goes)");
     }
-    return (r->spec != NULL)
-               ? cmdargs_parse(r->spec, "record", argc - a.index, argv + a.index, &version, NULL, NULL, cmd)
-               : XFGCU_EXIT_OK;
+    return (r->spec != NULL) ? cmdargs_parse_command(r->spec, "record", argc - a.index, argv + a.index, version, cmd)
+                             : XFGCU_EXIT_OK;
 }
 
 /* ---- callbacks ------------------------------------------------------------------------ */
@@ -417,16 +416,10 @@ int cmd_record(const cli_link *link, int argc, char **argv)
     record r;
     xf_command cmd;
     int rc;
-    uint8_t version = link->protocol;
     memset(&r, 0, sizeof(r));
-    rc = parse_args(&r, argc, argv, version, &cmd);
-    /* parse_args() may change *link: link options after COMMAND are taken by cli_set_anywhere() */
-    // cppcheck-suppress knownConditionTrueFalse
-    if (rc == XFGCU_EXIT_OK && link->protocol != version) {
-        /* the command was checked for the version given before record; one after would send it in
-         * another */
-        rc = cli_fail("record: --protocol goes before 'record' (the command is checked for it)");
-    }
+    /* link options after COMMAND (cli_set_anywhere()) change *link while it is parsed: the command
+     * is checked for the protocol version the whole line gives */
+    rc = parse_args(&r, argc, argv, &link->protocol, &cmd);
     if (rc == XFGCU_EXIT_OK && r.help) {
         help_record(stdout);
     } else if (rc == XFGCU_EXIT_OK) {

@@ -974,36 +974,25 @@ static int take_line_options(const parse_state *st, int argc, char **argv, const
     return rc;
 }
 
-int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
-                  xf_command *cmd)
+/* The arguments of COMMAND (argv[0]) into st->cmd, then the checks for protocol *version, read
+ * only now: a link option after COMMAND may have set it (record's line). */
+static int parse_checked(parse_state *st, const struct option *opts, const char *hint, int argc, char **argv,
+                         const uint8_t *version, xf_command *cmd)
 {
-    struct option opts[MAX_OPTS + 6];
-    parse_state st;
+    const cmd_spec *spec = st->spec;
     cli_args a;
-    char hint[64];
     int id, rc = XFGCU_EXIT_OK;
-    memset(&st, 0, sizeof(st));
-    st.spec = spec;
-    snprintf(st.where, sizeof(st.where), "%s %s", who, spec->name);
-    snprintf(hint, sizeof(hint), "send %s", spec->name);
-    command_options(spec, help != NULL, force != NULL, opts);
-    if (help != NULL) {
-        rc = take_line_options(&st, argc, argv, opts, version, help, force);
-        if (rc != XFGCU_EXIT_OK || *help) {
-            return rc;
-        }
-    }
-    xf_command_init(&st.cmd, spec->info->order); /* the spec's default camera mask */
-    cli_args_init(&a, argc, argv, CLI_IN_ORDER "h", opts, st.where);
-    a.hint = (help != NULL) ? NULL : hint; /* record has no --help after COMMAND: send's tells */
+    xf_command_init(&st->cmd, spec->info->order); /* the spec's default camera mask */
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER "h", opts, st->where);
+    a.hint = hint;
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
-        rc = (id == CLI_BAD) ? XFGCU_EXIT_USAGE : (id == CLI_ARG) ? cli_unexpected(&a) : take_option(&st, &a, id);
+        rc = (id == CLI_BAD) ? XFGCU_EXIT_USAGE : (id == CLI_ARG) ? cli_unexpected(&a) : take_option(st, &a, id);
     }
     if (rc == XFGCU_EXIT_OK) {
-        rc = check_combination(&st);
+        rc = check_combination(st);
     }
     if (rc == XFGCU_EXIT_OK) {
-        rc = check_with_codec(&st, *version);
+        rc = check_with_codec(st, *version);
     }
     if (rc != XFGCU_EXIT_OK) {
         return rc;
@@ -1017,8 +1006,42 @@ int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, 
         /* Warn, never refuse: newer firmware may have dropped it, or not. */
         cli_note("%s is an order of protocol 1 (V0.1) that V0.2 no longer lists; a V0.2 GCU may ignore it", spec->name);
     }
-    *cmd = st.cmd;
+    *cmd = st->cmd;
     return XFGCU_EXIT_OK;
+}
+
+static void parse_init(parse_state *st, const cmd_spec *spec, const char *who)
+{
+    memset(st, 0, sizeof(*st));
+    st->spec = spec;
+    snprintf(st->where, sizeof(st->where), "%s %s", who, spec->name);
+}
+
+int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
+                  xf_command *cmd)
+{
+    struct option opts[MAX_OPTS + 6];
+    parse_state st;
+    int rc;
+    parse_init(&st, spec, who);
+    command_options(spec, 1, force != NULL, opts);
+    rc = take_line_options(&st, argc, argv, opts, version, help, force);
+    if (rc != XFGCU_EXIT_OK || *help) {
+        return rc;
+    }
+    return parse_checked(&st, opts, NULL, argc, argv, version, cmd);
+}
+
+int cmdargs_parse_command(const cmd_spec *spec, const char *who, int argc, char **argv, const uint8_t *version,
+                          xf_command *cmd)
+{
+    struct option opts[MAX_OPTS + 6];
+    parse_state st;
+    char hint[64];
+    parse_init(&st, spec, who);
+    snprintf(hint, sizeof(hint), "send %s", spec->name); /* no --help after COMMAND here: send's tells */
+    command_options(spec, 0, 0, opts);
+    return parse_checked(&st, opts, hint, argc, argv, version, cmd);
 }
 
 /* ---- encode and send: [--protocol N] [--help] [--json OBJECT] COMMAND [ARGS] ---- */

@@ -26,15 +26,24 @@ const char *cmdargs_name(const cmd_spec *spec);
 
 /**
  * Parse the arguments of a named command (argv[0] is its name) into @p cmd
- * and check them for protocol *@p version. @p who prefixes messages
- * ("encode"). With @p help (encode, send), --protocol (into *@p version) and
- * --help are taken too, wherever they are; when --help is there, *@p help is
- * set and nothing else is parsed. With @p force (send), --force and --json
- * set CMDARGS_FORCE and CMDARGS_JSON in *@p force. Prints any error.
+ * and check them for protocol *@p version, as encode and send take them:
+ * --protocol (into *@p version) and --help (*@p help, non-NULL; with it
+ * nothing else is parsed) too, wherever they are. @p who prefixes messages
+ * ("encode"). With @p force (send), --force and --json set CMDARGS_FORCE
+ * and CMDARGS_JSON in *@p force. Prints any error.
  * @return an exit code.
  */
 int cmdargs_parse(const cmd_spec *spec, const char *who, int argc, char **argv, uint8_t *version, int *help, int *force,
                   xf_command *cmd);
+
+/**
+ * The same for a command that takes only COMMAND's own options (record's COMMAND, Python's
+ * encode). *@p version is read once every argument is taken, so a link option after COMMAND
+ * that sets it (record's line: cli_set_anywhere()) counts.
+ * @return an exit code.
+ */
+int cmdargs_parse_command(const cmd_spec *spec, const char *who, int argc, char **argv, const uint8_t *version,
+                          xf_command *cmd);
 
 /** Usage and option details of one command. */
 void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out);
