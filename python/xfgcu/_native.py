@@ -11,7 +11,7 @@ import ctypes.util
 import os
 import threading
 import warnings
-from typing import List, Sequence
+from typing import List, Sequence, TypeVar
 
 __all__ = ["lib", "codec_lock", "take_error", "argv", "PACKET_MAX"]
 
@@ -148,3 +148,26 @@ def argv(name: str, args: dict) -> List[bytes]:
 
 def c_argv(items: Sequence[bytes]) -> "ctypes.Array[ctypes.c_char_p]":
     return (ctypes.c_char_p * (len(items) + 1))(*items, None)
+
+
+_T = TypeVar("_T", bound="Owned")
+
+
+class Owned:
+    """What owns a native handle: ``with`` closes it, and so does the garbage collector, quietly
+    (a subclass defines ``close()``, which must be safe to call more than once)."""
+
+    def close(self) -> None:  # pragma: no cover - every subclass defines it
+        raise NotImplementedError
+
+    def __enter__(self: _T) -> _T:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def __del__(self) -> None:
+        try:
+            self.close()
+        except Exception:
+            pass

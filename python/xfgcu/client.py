@@ -9,7 +9,7 @@ import time
 from dataclasses import dataclass
 from typing import Any, Callable, Dict, List, Optional
 
-from ._native import argv, c_argv, codec_lock, lib, take_error
+from ._native import Owned, argv, c_argv, codec_lock, lib, take_error
 from .errors import CommandError, LinkError, UnsupportedCommandError
 
 __all__ = ["connect", "Gimbal", "Result", "CONFIG_KEYS"]
@@ -65,7 +65,7 @@ def _json_call(fn: Callable[..., int], *args: Any) -> Optional[Dict[str, Any]]:
         size = rc
 
 
-class Gimbal:
+class Gimbal(Owned):
     """A GCU on a link. The library's client (not thread-safe) runs in a thread this object
     owns, stepping at the packet rate; every call into it, from that thread or any other, holds
     one lock. Use as a context manager, or call close()."""
@@ -357,18 +357,6 @@ class Gimbal:
             self._cond.notify_all()
         for closer in list(self._closers):
             closer()
-
-    def __enter__(self) -> "Gimbal":
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()
-
-    def __del__(self) -> None:
-        try:
-            self.close()
-        except Exception:
-            pass
 
 
 def connect(spec: str, **config: Any) -> Gimbal:

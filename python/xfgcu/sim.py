@@ -8,7 +8,7 @@ import json
 import threading
 from typing import Any, Dict, Mapping, Optional, Union
 
-from ._native import codec_lock, lib, take_error
+from ._native import Owned, codec_lock, lib, take_error
 from .errors import LinkError
 
 __all__ = ["Simulator", "model_code"]
@@ -44,7 +44,7 @@ def _by_name(name: str) -> int:
     return order
 
 
-class Simulator:
+class Simulator(Owned):
     """A simulated GCU that follows the protocol (the library's simulator: once-rule, feedback,
     attitude by mode, zoom, ranging, tracking), on the GCU's end of a link, stepped by a thread
     this object owns.
@@ -170,15 +170,3 @@ class Simulator:
         with self._lock:
             lib.xfpy_sim_free(self._handle)
             self._handle = None
-
-    def __enter__(self) -> "Simulator":
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()
-
-    def __del__(self) -> None:
-        try:
-            self.close()
-        except Exception:
-            pass
