@@ -452,12 +452,7 @@ end
 
 -- The same for the packet at the start of a string (serial captures).
 local function intact_str(s, len)
-    local crc = 0
-    for i = 1, len - 2 do
-        local k = bit.bxor(bit.rshift(crc, 8), s:byte(i))
-        crc = bit.bxor(bit.band(bit.lshift(crc, 8), 0xFFFF), CRC_TABLE[k])
-    end
-    return crc == s:byte(len - 1) * 256 + s:byte(len)
+    return crc16(ByteArray.new(s:sub(1, len - 2), true), len - 2) == s:byte(len - 1) * 256 + s:byte(len)
 end
 
 -- A header at off whose packet is damaged may be a false one (noise that looks like a header,
@@ -478,72 +473,45 @@ end
 
 -- ---- transports ---------------------------------------------------------------------------
 
--- A datagram: whole packets; a packet cut short or a bad length is reported, not waited for.
-local function dissect_datagram(tvb, pinfo, root)
+-- Whole packets, and what lies between them. A datagram (stream false) reports a packet cut
+-- short; a TCP stream asks TCP for the bytes that continue it in the next segment.
+local function dissect_bytes(tvb, pinfo, root, stream)
     local off, n = 0, tvb:len()
-    while off < n do
-        local dir = header_dir(tvb, off)
-        if not dir then
-            local nxt = next_header(tvb, off + 1)
-            add_noise(tvb, root, off, nxt - off)
-            off = nxt
-        elseif n - off < 4 then
-            bad_packet(tvb, pinfo, root, off, n - off, "Truncated: no length field")
-            off = n
+    local function short(need, why) -- the packet at off is cut short: ask for more, or say so
+        if stream then
+            pinfo.desegment_offset = off
+            pinfo.desegment_len = need
         else
-            local len = tvb(off + OFF_LENGTH, 2):le_uint()
-            if len < MIN_LEN or len > MAX_LEN then
-                bad_packet(tvb, pinfo, root, off, 4, string.format("Bad length %u (must be %u..%u)", len, MIN_LEN, MAX_LEN))
-                off = off + 2
-            else
-                -- look for a packet inside only when this one is not whole and intact (as the stream does)
-                local inner = (len > n - off or not intact(tvb, off, len)) and intact_inside(tvb, off, math.min(len, n - off), n)
-                if inner then
-                    add_noise(tvb, root, off, inner - off) -- a false header: what follows is a packet
-                    off = inner
-                elseif len > n - off then
-                    bad_packet(tvb, pinfo, root, off, n - off,
-                        string.format("Truncated: the length field says %u bytes, the datagram holds %u", len, n - off))
-                    off = n
-                else
-                    dissect_packet(tvb(off, len):tvb(), pinfo, root)
-                    off = off + len
-                end
-            end
+            bad_packet(tvb, pinfo, root, off, n - off, why)
         end
+        return n
     end
-    return n
-end
-
--- A TCP stream: asks TCP for more bytes when a packet continues in the next segment.
-local function dissect_stream(tvb, pinfo, root)
-    local off, n = 0, tvb:len()
     while off < n do
         local rest = n - off
         local dir = header_dir(tvb, off)
-        local partial = rest == 1 and (tvb(off, 1):uint() == HOST_HEADER[1] or tvb(off, 1):uint() == GCU_HEADER[1])
-        if partial or (dir and rest < 4) then
-            pinfo.desegment_offset = off
-            pinfo.desegment_len = DESEGMENT_ONE_MORE_SEGMENT
-            return n
+        local b = tvb(off, 1):uint()
+        if stream and rest == 1 and (b == HOST_HEADER[1] or b == GCU_HEADER[1]) then
+            return short(DESEGMENT_ONE_MORE_SEGMENT)
         elseif not dir then
             local nxt = next_header(tvb, off + 1)
             add_noise(tvb, root, off, nxt - off)
             off = nxt
+        elseif rest < 4 then
+            return short(DESEGMENT_ONE_MORE_SEGMENT, "Truncated: no length field")
         else
             local len = tvb(off + OFF_LENGTH, 2):le_uint()
             if len < MIN_LEN or len > MAX_LEN then
                 bad_packet(tvb, pinfo, root, off, 4, string.format("Bad length %u (must be %u..%u)", len, MIN_LEN, MAX_LEN))
                 off = off + 2
             else
+                -- look for a packet inside only when this one is not whole and intact
                 local inner = (len > rest or not intact(tvb, off, len)) and intact_inside(tvb, off, math.min(len, rest), n)
                 if inner then
                     add_noise(tvb, root, off, inner - off) -- a false header: what follows is a packet
                     off = inner
                 elseif len > rest then
-                    pinfo.desegment_offset = off
-                    pinfo.desegment_len = len - rest
-                    return n
+                    return short(len - rest,
+                        string.format("Truncated: the length field says %u bytes, the datagram holds %u", len, rest))
                 else
                     dissect_packet(tvb(off, len):tvb(), pinfo, root)
                     off = off + len
@@ -557,10 +525,7 @@ end
 local PT_TCP = 2 -- enum port_type
 
 function proto.dissector(tvb, pinfo, root)
-    if pinfo.port_type == PT_TCP then
-        return dissect_stream(tvb, pinfo, root)
-    end
-    return dissect_datagram(tvb, pinfo, root)
+    return dissect_bytes(tvb, pinfo, root, pinfo.port_type == PT_TCP)
 end
 
 -- Other ports: a header and a length in range, then the whole conversation is ours.
