@@ -8,7 +8,7 @@ Run by ctest with Debian's interpreter:
   packet compared with `xfgcu decode --json` of the same pcap, both ways (no field missing on
   either side); `xfgcu replay` of the pcap gives the same packets;
 - a made-up TCP capture on port 2332: a packet split over two segments, two packets in one;
-- expert info on a bad CRC and a bad length (UDP port 2337);
+- expert info on a bad CRC, a bad length and a packet cut short (UDP port 2337);
 - replay's rejections of malformed captures (one line `xfgcu: FILE:LINE: reason`, exit 2), the
   start time of a text capture, and decode of timestamped logs.
 """
@@ -225,11 +225,14 @@ class MadeUpPcaps(unittest.TestCase):
         bad_len = good[:2] + struct.pack("<H", 300) + good[4:]
         host, gcu = [10, 0, 0, 1], [10, 0, 0, 2]
         pcap = os.path.join(TMP, "bad.pcap")
-        write_pcap(pcap, 101, [ip_packet(17, host, gcu, 2338, 2337, p) for p in (good, bad_crc, bad_len)])
+        cut, stub = good[:40], good[:3]  # a datagram holds a packet cut short: said, not waited for
+        write_pcap(pcap, 101, [ip_packet(17, host, gcu, 2338, 2337, p) for p in (good, bad_crc, bad_len, cut, stub)])
         frames = tshark_json(pcap)
         self.assertNotIn("xfgcu.bad_crc", experts(frames[0]))
         self.assertIn("xfgcu.bad_crc", experts(frames[1]))
         self.assertIn("xfgcu.bad_length", experts(frames[2]))
+        self.assertIn("the length field says %d bytes, the datagram holds 40" % len(good), experts(frames[3]))
+        self.assertIn("Truncated: no length field", experts(frames[4]))
 
     def test_false_header_then_packet(self):
         # noise that looks like a header with a length in range (A8 E5 48 00), then a real
