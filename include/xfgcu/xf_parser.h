@@ -192,6 +192,10 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 #define XF__HOST_PAIR_CRC 0x395Cu
 XF_STATIC_ASSERT(XF_PARSER_RING > XF_PACKET_MAX_LEN && XF_PACKET_MAX_LEN <= 255u, ring_holds_a_packet);
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_HOST_HEADER0, h0_names_the_direction);
+/* A header's length high byte (0) is neither header byte (xf__idle's plan). */
+XF_STATIC_ASSERT(XF_GCU_HEADER0 && XF_GCU_HEADER1 && XF_HOST_HEADER0 && XF_HOST_HEADER1 &&
+                     XF_GCU_HEADER0 != XF_GCU_HEADER1 && XF_HOST_HEADER0 != XF_HOST_HEADER1,
+                 header_bytes_differ_from_zero);
 
 XF_API size_t xf_parser_size(void) { return sizeof(xf_parser); }
 
@@ -340,20 +344,25 @@ static void xf__shift(xf_parser *p)
  * after the new one: xf__open). 1, or 3 when it held the first byte held. */
 static int xf__admit(xf_parser *p, unsigned len)
 {
-    unsigned left = len - 4u, k = p->n;
-    uint32_t c = (uint32_t)((p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC) << 16;
+    unsigned left = len - 4u, k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
+    uint32_t c;
     int moved = 1;
+    if (k == 0u) {
+        /* The running CRC restarts at the candidate: its pair's CRC is a
+         * constant, and xf__sum() takes it on from the length byte. */
+        p->crc = (uint16_t)pair;
+        p->sum = XF__IX(p->end - 2u);
+        p->want[0] = 0;
+        p->at[0] = XF__IX(p->end - 4u);
+        p->n = 1;
+        return 1;
+    }
     if (k == XF_PARSER_SLOTS) {
         k--; /* the candidate that ends last makes room (xf__open counted it) */
         moved = (p->at[k] == p->head) ? 3 : 1;
     }
-    c = xf__crc_step(xf__crc_step(c, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
-    if (p->n == 0u) {
-        p->crc = (uint16_t)(c >> 16); /* the CRC of the stream before the candidate counts as 0 */
-        p->sum = p->end;
-    } else {
-        xf__sum(p);
-    }
+    c = xf__crc_step(xf__crc_step((uint32_t)pair << 16, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
+    xf__sum(p);
     p->n = (uint8_t)(k + 1u);
     for (; k > 0u && k < XF_PARSER_SLOTS && xf__left(p, k - 1u) > left; k--) {
         p->want[k] = p->want[k - 1u];
@@ -602,7 +611,7 @@ static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
  * past it); a valid header opens its candidate at once. */
 static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_frame *frame)
 {
-    size_t k = xf__to_h0(p, d + *i, len - *i);
+    size_t k = (d[*i] == p->h0) ? 0u : xf__to_h0(p, d + *i, len - *i); /* after a frame, the next is here */
     unsigned n;
     p->stats.bytes_skipped += (uint32_t)k;
     *i += k;
@@ -626,7 +635,9 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
     XF_MEMCPY(p->ring, d, 4u);             /* the running CRC starts at this candidate (xf__admit) */
     p->end = 4;
     (void)xf__admit(p, n);
-    xf__plan(p);
+    /* What xf__plan() finds: no h0 among h1 and a length byte that, like its
+     * high byte 0, are no h0 followed by h1 (ring index 0: no wrap). */
+    p->next = (uint8_t)n;
     *i += 4u;
     return 0;
 }
