@@ -193,8 +193,9 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 XF_STATIC_ASSERT(XF_PARSER_RING > XF_PACKET_MAX_LEN && XF_PACKET_MAX_LEN <= 255u, ring_holds_a_packet);
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_HOST_HEADER0, h0_names_the_direction);
 /* A header's length high byte (0) is neither header byte (xf__idle's plan). */
-XF_STATIC_ASSERT(XF_GCU_HEADER0 && XF_GCU_HEADER1 && XF_HOST_HEADER0 && XF_HOST_HEADER1 &&
-                     XF_GCU_HEADER0 != XF_GCU_HEADER1 && XF_HOST_HEADER0 != XF_HOST_HEADER1,
+XF_STATIC_ASSERT(XF_GCU_HEADER0 &&XF_GCU_HEADER1 &&XF_HOST_HEADER0 &&XF_HOST_HEADER1 &&XF_GCU_HEADER0 !=
+                         XF_GCU_HEADER1 &&
+                     XF_HOST_HEADER0 != XF_HOST_HEADER1,
                  header_bytes_differ_from_zero);
 
 XF_API size_t xf_parser_size(void) { return sizeof(xf_parser); }
