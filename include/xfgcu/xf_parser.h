@@ -192,11 +192,10 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 #define XF__HOST_PAIR_CRC 0x395Cu
 XF_STATIC_ASSERT(XF_PARSER_RING > XF_PACKET_MAX_LEN && XF_PACKET_MAX_LEN <= 255u, ring_holds_a_packet);
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_HOST_HEADER0, h0_names_the_direction);
-/* A header's length high byte (0) is neither header byte (xf__idle's plan). */
-XF_STATIC_ASSERT(XF_GCU_HEADER0 &&XF_GCU_HEADER1 &&XF_HOST_HEADER0 &&XF_HOST_HEADER1 &&XF_GCU_HEADER0 !=
-                         XF_GCU_HEADER1 &&
-                     XF_HOST_HEADER0 != XF_HOST_HEADER1,
-                 header_bytes_differ_from_zero);
+/* A header's length high byte (0) is neither header byte, and h1 is no h0 (xf__idle's plan). */
+XF_STATIC_ASSERT(XF_GCU_HEADER0 != 0u && XF_GCU_HEADER1 != 0u && XF_HOST_HEADER0 != 0u && XF_HOST_HEADER1 != 0u,
+                 no_header_byte_is_0);
+XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_GCU_HEADER1 && XF_HOST_HEADER0 != XF_HOST_HEADER1, h1_is_no_h0);
 
 XF_API size_t xf_parser_size(void) { return sizeof(xf_parser); }
 
