@@ -378,7 +378,7 @@ static int xf__admit(xf_parser *p, unsigned len)
 /* The last byte held may be the fourth of a header: a candidate, a length
  * error, or nothing. When every slot is taken, the candidate that ends last
  * is given up, the new one included. Returns as xf__admit(), or 0 when
- * nothing changed. */
+ * nothing changed (next set when a header was given up). */
 static inline int xf__open(xf_parser *p)
 {
     const uint8_t *r = p->ring;
@@ -394,6 +394,9 @@ static inline int xf__open(xf_parser *p)
     if (p->n == XF_PARSER_SLOTS) {
         p->stats.given_up++; /* the new candidate, or the pending one that ends last */
         if (len - 4u >= xf__left(p, XF_PARSER_SLOTS - 1u)) {
+            /* Nothing changes, and the header's last three bytes (h1, the length's low
+             * byte, 0) begin no pair: next is candidate 0's last byte (xf__plan's answer). */
+            p->next = XF__IX(p->end + xf__left(p, 0));
             return 0;
         }
     }
@@ -542,9 +545,14 @@ static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
         return xf__at_next(p, frame);
     }
     look = xf__open(p); /* the fourth byte after an h0: a header, or nothing */
+    if (look & 2) {
+        xf__settle(p);
+    }
     if (look != 0) {
-        xf__after(p, look);
-    } else {
+        /* a header admitted: its last three bytes (h1, the length's low byte, 0) begin no pair,
+         * so next is candidate 0's last byte (xf__plan's answer) */
+        p->next = XF__IX(p->end + xf__left(p, 0));
+    } else if (p->next == p->end) { /* (a header given up has set next) */
         xf__plan(p);
     }
     return 0;
