@@ -524,13 +524,30 @@ static inline void xf__h0(xf_parser *p)
     }
 }
 
+/* The byte at next is the fourth after an h0, and no candidate's end: a
+ * header (admitted, or given up), or nothing. */
+XF__COLD int xf__fourth(xf_parser *p)
+{
+    int look = xf__open(p);
+    if (look & 2) {
+        xf__settle(p);
+    }
+    if (look != 0) {
+        /* a header admitted: its last three bytes (h1, the length's low byte, 0) begin no pair,
+         * so next is candidate 0's last byte (xf__plan's answer) */
+        p->next = XF__IX(p->end + xf__left(p, 0));
+    } else if (p->next == p->end) { /* (a header given up has set next) */
+        xf__plan(p);
+    }
+    return 0;
+}
+
 /* Take one byte that needs a look: an h0, or the byte before next. Every
  * rule applies to the latter, ends before headers (a frame returned drops
  * whatever its last bytes begin); an h0 before next only brings next to
  * its own fourth byte. 1 when it completes a frame. */
 static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
 {
-    int look;
     if (p->next != XF__IX(p->end + 1u)) {
         XF_ASSERT(b == p->h0);
         xf__h0(p);
@@ -544,18 +561,7 @@ static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
     if (xf__fin(p, 0) == p->end) {
         return xf__at_next(p, frame);
     }
-    look = xf__open(p); /* the fourth byte after an h0: a header, or nothing */
-    if (look & 2) {
-        xf__settle(p);
-    }
-    if (look != 0) {
-        /* a header admitted: its last three bytes (h1, the length's low byte, 0) begin no pair,
-         * so next is candidate 0's last byte (xf__plan's answer) */
-        p->next = XF__IX(p->end + xf__left(p, 0));
-    } else if (p->next == p->end) { /* (a header given up has set next) */
-        xf__plan(p);
-    }
-    return 0;
+    return xf__fourth(p);
 }
 
 /* Bytes of d before the first h0, at most len. */
