@@ -72,8 +72,9 @@ def pairs_hook(pairs):
 def tshark_json(pcap):
     r = subprocess.run(["tshark", "-X", "lua_script:" + LUA, "-r", pcap, "-T", "json"], capture_output=True,
                        text=True, timeout=60)
-    if r.returncode != 0 or "Lua: Error" in r.stderr:
-        raise AssertionError("tshark: %s" % r.stderr)
+    # a Lua error inside the dissector shows in the packet tree, not on stderr
+    if r.returncode != 0 or "Lua: Error" in r.stderr or "Lua Error" in r.stdout:
+        raise AssertionError("tshark: %s%s" % (r.stderr, "; a Lua error in the tree" if "Lua Error" in r.stdout else ""))
     return json.loads(r.stdout, object_pairs_hook=pairs_hook)
 
 
@@ -226,13 +227,15 @@ class MadeUpPcaps(unittest.TestCase):
         host, gcu = [10, 0, 0, 1], [10, 0, 0, 2]
         pcap = os.path.join(TMP, "bad.pcap")
         cut, stub = good[:40], good[:3]  # a datagram holds a packet cut short: said, not waited for
-        write_pcap(pcap, 101, [ip_packet(17, host, gcu, 2338, 2337, p) for p in (good, bad_crc, bad_len, cut, stub)])
+        lone = good[:1]  # a datagram that ends in a lone header byte: noise, not a wait for more
+        write_pcap(pcap, 101, [ip_packet(17, host, gcu, 2338, 2337, p) for p in (good, bad_crc, bad_len, cut, stub, lone)])
         frames = tshark_json(pcap)
         self.assertNotIn("xfgcu.bad_crc", experts(frames[0]))
         self.assertIn("xfgcu.bad_crc", experts(frames[1]))
         self.assertIn("xfgcu.bad_length", experts(frames[2]))
         self.assertIn("the length field says %d bytes, the datagram holds 40" % len(good), experts(frames[3]))
         self.assertIn("Truncated: no length field", experts(frames[4]))
+        self.assertIn("xfgcu.noise", experts(frames[5]))
 
     def test_false_header_then_packet(self):
         # noise that looks like a header with a length in range (A8 E5 48 00), then a real
