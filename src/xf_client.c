@@ -699,8 +699,7 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
     c->now_ms = now_ms;
     if (!c->started) {
         c->started = 1;
-        c->next_send_ms = now_ms;
-        c->head_new = 1; /* a command submitted before the first step waits from here */
+        c->next_send_ms = now_ms; /* (a command submitted before it waits from here: head_new) */
         c->window_start_ms = now_ms;
     }
     if (c->head_new) {

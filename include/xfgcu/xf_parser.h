@@ -377,8 +377,8 @@ static int xf__admit(xf_parser *p, unsigned len)
 
 /* The last byte held may be the fourth of a header: a candidate, a length
  * error, or nothing. When every slot is taken, the candidate that ends last
- * is given up, the new one included. Returns as xf__admit(), or 0 when
- * nothing changed (next set when a header was given up). */
+ * is given up, the new one included. Returns as xf__admit(), 8 when the
+ * new header was given up, or 0 when it is no header. */
 static inline int xf__open(xf_parser *p)
 {
     const uint8_t *r = p->ring;
@@ -394,10 +394,7 @@ static inline int xf__open(xf_parser *p)
     if (p->n == XF_PARSER_SLOTS) {
         p->stats.given_up++; /* the new candidate, or the pending one that ends last */
         if (len - 4u >= xf__left(p, XF_PARSER_SLOTS - 1u)) {
-            /* Nothing changes, and the header's last three bytes (h1, the length's low
-             * byte, 0) begin no pair: next is candidate 0's last byte (xf__plan's answer). */
-            p->next = XF__IX(p->end + xf__left(p, 0));
-            return 0;
+            return 8;
         }
     }
     return xf__admit(p, len);
@@ -533,10 +530,10 @@ XF__COLD int xf__fourth(xf_parser *p)
         xf__settle(p);
     }
     if (look != 0) {
-        /* a header admitted: its last three bytes (h1, the length's low byte, 0) begin no pair,
-         * so next is candidate 0's last byte (xf__plan's answer) */
+        /* a header, admitted or given up: its last three bytes (h1, the length's low byte, 0)
+         * begin no pair, so next is candidate 0's last byte (xf__plan's answer) */
         p->next = XF__IX(p->end + xf__left(p, 0));
-    } else if (p->next == p->end) { /* (a header given up has set next) */
+    } else {
         xf__plan(p);
     }
     return 0;
