@@ -207,14 +207,16 @@ def test_review_fixes() -> None:
     errors: list = []
 
     def callback(t: dict) -> None:
-        try:
-            gimbal.send("shutter")
-        except RuntimeError as e:
-            errors.append(e)
+        for call in (lambda: gimbal.send("shutter"), gimbal.close):
+            try:
+                call()
+            except RuntimeError as e:
+                errors.append(e)
 
     remove = gimbal.on_telemetry(callback)
-    assert wait_until(lambda: len(errors) > 0)
+    assert wait_until(lambda: len(errors) > 1)
     remove()
+    gimbal.health()  # close() from the callback refused, and left the gimbal open
     # two threads closing at once: one closes, the other returns
     import threading
 

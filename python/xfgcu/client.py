@@ -335,11 +335,11 @@ class Gimbal(Owned):
         lock = getattr(self, "_lock", None)
         if lock is None:
             return
+        self._not_from_callback("close")  # before it marks itself closing: a later close() still works
         with lock:
             if self._handle is None or self._closing:
                 return  # closed, or another thread is closing it
             self._closing = True
-        self._not_from_callback("close")
         deadline = time.monotonic() + self._settle_s
         while self._thread.is_alive() and time.monotonic() < deadline:
             with self._lock:
@@ -347,8 +347,7 @@ class Gimbal(Owned):
                     break
             time.sleep(0.005)
         self._stop = True
-        if self._thread is not threading.current_thread():
-            self._thread.join()
+        self._thread.join()  # (not from the thread itself: _not_from_callback)
         with self._lock:
             lib.xfpy_client_cancel_all(self._handle)
             lib.xfpy_client_free(self._handle)
