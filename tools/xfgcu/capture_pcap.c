@@ -240,6 +240,7 @@ static int transport(pcap_reader *r, const uint8_t *ip, size_t n, xf_direction *
                      size_t *len)
 {
     size_t ihl = (size_t)(ip[0] & 0x0Fu) * 4u, total = (size_t)(ip[2] << 8 | ip[3]), l4;
+    size_t fixed = (ip[9] == 6) ? 20u : UDP_HDR; /* the transport header's fixed part */
     uint32_t src = (uint32_t)ip[12] << 24 | (uint32_t)ip[13] << 16 | (uint32_t)ip[14] << 8 | ip[15];
     uint16_t sport;
     const uint8_t *l;
@@ -250,11 +251,11 @@ static int transport(pcap_reader *r, const uint8_t *ip, size_t n, xf_direction *
         return bad(r, "truncated or malformed IPv4 packet");
     }
     l = ip + ihl;
-    if (total < ihl + ((ip[9] == 6) ? 20u : UDP_HDR)) { /* the fixed header, before reading its fields */
+    if (total < ihl + fixed) { /* before reading its fields */
         return bad(r, "truncated or malformed UDP or TCP header");
     }
     l4 = (ip[9] == 6) ? (size_t)(l[12] >> 4) * 4u : UDP_HDR;
-    if (total < ihl + l4 || l4 < ((ip[9] == 6) ? 20u : UDP_HDR)) {
+    if (total < ihl + l4 || l4 < fixed) {
         return bad(r, "truncated or malformed UDP or TCP header");
     }
     sport = (uint16_t)(l[0] << 8 | l[1]);

@@ -123,12 +123,12 @@ static void motion_json(const online *o, const rate_args *a, const int32_t start
         json_object_set_new(obj, "yaw_dps", json_real(a->yaw));
         json_object_set_new(obj, "duration_s", json_real(a->duration));
         json_object_set_new(obj, "elapsed_ms", json_integer((json_int_t)elapsed_ms));
-        json_object_set_new(obj, "start_roll", json_real(cli_round2((double)xf_cdeg(start[0]))));
-        json_object_set_new(obj, "start_pitch", json_real(cli_round2((double)xf_cdeg(start[1]))));
-        json_object_set_new(obj, "start_yaw", json_real(cli_round2((double)xf_cdeg(start[2]))));
-        json_object_set_new(obj, "roll", json_real(cli_round2((double)xf_cdeg(t->cam_roll))));
-        json_object_set_new(obj, "pitch", json_real(cli_round2((double)xf_cdeg(t->cam_pitch))));
-        json_object_set_new(obj, "yaw", json_real(cli_round2((double)xf_cdeg(t->cam_yaw))));
+        json_object_set_new(obj, "start_roll", cli_json_cdeg(start[0]));
+        json_object_set_new(obj, "start_pitch", cli_json_cdeg(start[1]));
+        json_object_set_new(obj, "start_yaw", cli_json_cdeg(start[2]));
+        json_object_set_new(obj, "roll", cli_json_cdeg(t->cam_roll));
+        json_object_set_new(obj, "pitch", cli_json_cdeg(t->cam_pitch));
+        json_object_set_new(obj, "yaw", cli_json_cdeg(t->cam_yaw));
         json_object_set_new(obj, "rate_x", json_real(cli_round2((double)u.rate_x_dps)));
         json_object_set_new(obj, "rate_y", json_real(cli_round2((double)u.rate_y_dps)));
         json_object_set_new(obj, "rate_z", json_real(cli_round2((double)u.rate_z_dps)));

@@ -483,6 +483,8 @@ json_t *cli_json_times(json_t *obj)
 
 double cli_round2(double v) { return floor(v * 100.0 + 0.5) / 100.0; }
 
+json_t *cli_json_cdeg(int32_t cdeg) { return json_real((double)cdeg / 100.0); }
+
 int cli_json_line(json_t *obj)
 {
     /* 15 significant digits: a double's decimal value without its binary tail (0.673, not 0.67300000000000004) */

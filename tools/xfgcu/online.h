@@ -135,6 +135,8 @@ void online_linger(online *o, uint32_t packets);
 json_t *cli_json_times(json_t *obj);
 /** @p v rounded to 0.01, the resolution of the GCU's angles (a float's tail is not a figure). */
 double cli_round2(double v);
+/** An angle in the GCU's hundredths of a degree as a JSON number of degrees (12.34, with no float tail). */
+json_t *cli_json_cdeg(int32_t cdeg);
 /** Print @p obj (taken: it is freed) on one line of stdout, flushed. @return 0, or -1 if out of memory. */
 int cli_json_line(json_t *obj);
 /** A command's result as JSON: status ("ok", "failed", "timeout", "link_lost", "cancelled",
