@@ -192,10 +192,14 @@ static void assert_mode_line(const json_t *o, const char *status, const char *or
     }
 }
 
+/* An angle printed as the GCU's hundredths of a degree, with no float tail (12.340000152587891). */
+static void assert_hundredths(double deg) { assert_true(fabs(deg * 100.0 - round(deg * 100.0)) < 1e-9); }
+
 static void test_point_json(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    tool_result r = sim_run_on(s, "point", "--pitch", "-30", "--yaw", "45", "--json", NULL);
+    /* -30.3 and 45.3 are no float's value: a float round trip would show in the angles printed */
+    tool_result r = sim_run_on(s, "point", "--pitch", "-30.3", "--yaw", "45.3", "--json", NULL);
     json_t *o;
     assert_int_equal(r.status, 0);
     assert_int_equal(r.err_len, 0);
@@ -208,9 +212,11 @@ static void test_point_json(void **state)
     assert_string_equal(str_key(o, "step"), "point");
     assert_string_equal(str_key(o, "status"), "reached");
     assert_true(json_is_null(json_object_get(o, "target_roll")));
-    assert_true(real_key(o, "target_pitch") == -30.0 && real_key(o, "target_yaw") == 45.0);
-    assert_true(fabs(real_key(o, "pitch") + 30.0) <= 0.5 && fabs(real_key(o, "yaw") - 45.0) <= 0.5);
+    assert_true(real_key(o, "target_pitch") == -30.3 && real_key(o, "target_yaw") == 45.3);
+    assert_true(fabs(real_key(o, "pitch") + 30.3) <= 0.5 && fabs(real_key(o, "yaw") - 45.3) <= 0.5);
     assert_true(fabs(real_key(o, "roll")) <= 0.5);
+    assert_hundredths(real_key(o, "pitch"));
+    assert_hundredths(real_key(o, "yaw"));
     assert_true(real_key(o, "tolerance_deg") == 0.5);
     assert_true(int_key(o, "elapsed_ms") >= 0 && int_key(o, "elapsed_ms") < 10000);
     assert_true(int_key(o, "attitude_age_ms") >= 0 && int_key(o, "attitude_age_ms") < 1000);
@@ -253,6 +259,8 @@ static void test_rate_json(void **state)
     assert_true(fabs(real_key(o, "pitch") - real_key(o, "start_pitch") + 5.0) <= 1.5); /* -10 deg/s */
     (void)real_key(o, "start_roll");
     (void)real_key(o, "roll");
+    assert_hundredths(real_key(o, "start_yaw"));
+    assert_hundredths(real_key(o, "yaw"));
     assert_true(fabs(real_key(o, "rate_x")) < 1.0 && fabs(real_key(o, "rate_y")) < 1.0 &&
                 fabs(real_key(o, "rate_z")) < 1.0); /* holding still: the final rates */
     json_decref(o);
