@@ -56,7 +56,8 @@
  *                [72, 255]; no frame at all
  *   storm        8A 5E 8A 00 repeated: a candidate (length 138) every four bytes
  *                whose length byte is an h0 too, so every other byte needs a look
- *                (with h0run, the most costly streams measured: the parser's worst case)
+ *                (with dense and h0run, the costliest streams measured; which is the
+ *                worst depends on the parser: bench.sh's table says)
  *   h0run        nothing but 8A: every byte is an h0 and the fourth byte after one
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as

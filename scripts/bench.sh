@@ -5,8 +5,8 @@
 #   scripts/bench.sh            build (gcc -O2, Release) with the nibble CRC table and with
 #                               XFGCU_CRC_TABLE_256=ON in build/bench/, generate the streams,
 #                               print the tables. One to two minutes on a 2-core machine
-#                               (2 x 8 x 4 callgrind runs over 3 MiB; storm and h0run, the
-#                               crafted worst cases, are the slowest).
+#                               (2 x 8 x 4 callgrind runs over 3 MiB; the crafted streams,
+#                               dense, storm and h0run, are the slowest).
 #   scripts/bench.sh profile    the same builds with -g: where the instructions go, per
 #                               function of the headers (inlined code included), for the
 #                               2 MiB valid, uart3, adversarial and dense streams fed in
