@@ -16,6 +16,7 @@
  *                                          shorter stream is a prefix of a longer one);
  *                                          prints the number of intact frames first.
  *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
+ *                                          | pairs | cpairs
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -56,9 +57,12 @@
  *                [72, 255]; no frame at all
  *   storm        8A 5E 8A 00 repeated: a candidate (length 138) every four bytes
  *                whose length byte is an h0 too, so every other byte needs a look
- *                (with dense and h0run, the costliest streams measured; which is the
- *                worst depends on the parser: bench.sh's table says)
  *   h0run        nothing but 8A: every byte is an h0 and the fourth byte after one
+ *   pairs        8A 5E repeated: a header pair with a bad length (0x5E8A) every two
+ *                bytes, no candidate ever
+ *   cpairs       8A 5E FF 00 and 125 pairs and an 8A, repeated: the pairs inside a
+ *                pending candidate (a 255-byte claim that ends where the next begins)
+ *   Which crafted stream costs most depends on the parser: bench.sh's table says.
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
  * before uart4 and uart3 were added, so older figures stay comparable.
@@ -200,6 +204,12 @@ static void xb_noise(xb_out *o, xb_rng *r, size_t n)
 /* A length claim in [72, 255]. */
 static uint8_t xb_len(xb_rng *r) { return (uint8_t)(XF_PACKET_MIN_LEN + xb_below(r, 256u - XF_PACKET_MIN_LEN)); }
 
+static void xb_pair(xb_out *o)
+{
+    static const uint8_t pair[2] = {XF_GCU_HEADER0, XF_GCU_HEADER1};
+    xb_put(o, pair, 2);
+}
+
 static void xb_false_cand(xb_out *o, uint8_t len)
 {
     uint8_t c[4];
@@ -220,11 +230,13 @@ typedef enum xb_kind {
     XB_UART3,
     XB_STORM,
     XB_H0RUN,
+    XB_PAIRS,
+    XB_CPAIRS,
     XB_KINDS
 } xb_kind;
 
-static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense",
-                                                    "uart4", "uart3", "storm",       "h0run"};
+static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense", "uart4",
+                                                    "uart3", "storm", "h0run",       "pairs", "cpairs"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -383,6 +395,16 @@ static void xb_generate(xb_kind kind, xb_out *o)
         case XB_UART3: xb_uart(o, &r, XB_BER_1E3); break;
         case XB_STORM: xb_false_cand(o, XF_GCU_HEADER0); break; /* 8A 5E 8A 00: its length byte is an h0 too */
         case XB_H0RUN: xb_put1(o, XF_GCU_HEADER0); break;
+        case XB_PAIRS: xb_pair(o); break;
+        case XB_CPAIRS: {
+            /* a 255-byte candidate filled with pairs; the next one begins where it ends */
+            xb_false_cand(o, 255);
+            for (i = 0; i < 125u; i++) {
+                xb_pair(o);
+            }
+            xb_put1(o, XF_GCU_HEADER0);
+            break;
+        }
         default: /* XB_DENSE */ xb_false_cand(o, xb_len(&r)); break;
         }
     }
@@ -670,7 +692,7 @@ static int xb_usage(void)
     fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
                     "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
                     "       xfgcu_bench crc FILE [--chunk N]\n"
-                    "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run N_BYTES FILE\n"
+                    "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs N_BYTES FILE\n"
                     "       xfgcu_bench pack N | unpack N\n"
                     "       xfgcu_bench time KIND N_BYTES [REPS]\n"
                     "       xfgcu_bench selftest\n"
@@ -803,8 +825,8 @@ static int xb_cmd_time(const char *kind_s, const char *size_s, const char *reps_
  * 4096). Fails (exit 1) when the parser misses an intact frame of a stream
  * that is not crafted against it (valid, noisy, uart4, uart3: found >=
  * inserted; more is a false candidate whose CRC matched, possible but very
- * rare), or when the byte counters do not add up. On adversarial, dense, storm and h0run
- * streams the parser may give up candidates by design: found / inserted is
+ * rare), or when the byte counters do not add up. On the crafted streams (adversarial, dense, storm, h0run, pairs,
+ * cpairs) the parser may give up candidates by design: found / inserted is
  * printed, not checked. The frames found in each chunking and the worst
  * delay are printed. */
 static int xb_cmd_selftest(void)
@@ -820,7 +842,7 @@ static int xb_cmd_selftest(void)
     }
     for (k = 0; k < (int)XB_KINDS; k++) {
         const int crafted =
-            (k == (int)XB_ADVERSARIAL || k == (int)XB_DENSE || k == (int)XB_STORM || k == (int)XB_H0RUN);
+            (k != (int)XB_VALID && k != (int)XB_NOISY && k != (int)XB_UART4 && k != (int)XB_UART3);
         size_t c, worst = 0, lo = (size_t)-1, hi = 0;
         xb_result res;
         xb_generate((xb_kind)k, &o);

@@ -5,8 +5,8 @@
 #   scripts/bench.sh            build (gcc -O2, Release) with the nibble CRC table and with
 #                               XFGCU_CRC_TABLE_256=ON in build/bench/, generate the streams,
 #                               print the tables. One to two minutes on a 2-core machine
-#                               (2 x 8 x 4 callgrind runs over 3 MiB; the crafted streams,
-#                               dense, storm and h0run, are the slowest).
+#                               (2 x 10 x 4 callgrind runs over 3 MiB; the crafted streams
+#                               are the slowest).
 #   scripts/bench.sh profile    the same builds with -g: where the instructions go, per
 #                               function of the headers (inlined code included), for the
 #                               2 MiB valid, uart3, adversarial and dense streams fed in
@@ -71,7 +71,7 @@ build "nibble$suffix" OFF
 build "t256$suffix" ON
 
 # valid first: the other rows are compared with it
-kinds=(valid noisy uart4 uart3 adversarial dense storm h0run)
+kinds=(valid noisy uart4 uart3 adversarial dense storm h0run pairs cpairs)
 chunks=(1 16 64 4096)
 MiB=1048576
 streams="$bdir/streams"
@@ -209,5 +209,5 @@ echo "  every intact frame of valid, noisy, uart4, uart3 found at every chunk si
 echo "  no added latency (worst delay 0) on every stream at every chunk size: ${late:+OVER, table/stream/chunk:delay}${late:-ok}"
 echo "(frames: found by the parser / inserted intact by the generator; a few more found than inserted"
 echo " are false candidates whose CRC happens to match, about one per 65536 CRC checks; fewer, on the"
-echo " adversarial, dense, storm and h0run streams, are frames given up by design. Figures are instructions, not"
+echo " crafted streams (adversarial onwards), are frames given up by design. Figures are instructions, not"
 echo " time. bench.sh took $(($(date +%s) - t0)) s.)"

@@ -631,9 +631,17 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_fr
     if (len == 0u) {
         return 0;
     }
-    n = (len < 4u) ? 0u : (unsigned)d[2] | ((unsigned)d[3] << 8);
-    if (!xf__len_ok(n) || d[1] != xf__h1(p)) {
+    if (len < 4u) {
         (void)xf__byte(p, d[0], frame); /* no whole header in view: every rule applies from here */
+        *i += 1u;
+        return 0;
+    }
+    n = (unsigned)d[2] | ((unsigned)d[3] << 8);
+    if (d[1] != xf__h1(p) || !xf__len_ok(n)) {
+        /* A whole header in view, and no candidate: the h0 begins nothing, so it is skipped at
+         * once (a header pair's bad length counted), with no look and nothing held. */
+        p->stats.length_errors += (d[1] == xf__h1(p));
+        p->stats.bytes_skipped++;
         *i += 1u;
         return 0;
     }
