@@ -689,16 +689,17 @@ static void xb_print_delay(const xb_delay_result *dr)
 
 static int xb_usage(void)
 {
-    fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-                    "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-                    "       xfgcu_bench crc FILE [--chunk N]\n"
-                    "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs N_BYTES FILE\n"
-                    "       xfgcu_bench pack N | unpack N\n"
-                    "       xfgcu_bench time KIND N_BYTES [REPS]\n"
-                    "       xfgcu_bench selftest\n"
-                    "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-                    " default 4096; parse prints the frames found first, then the counters and\n"
-                    " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+    fprintf(stderr,
+            "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
+            "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
+            "       xfgcu_bench crc FILE [--chunk N]\n"
+            "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs N_BYTES FILE\n"
+            "       xfgcu_bench pack N | unpack N\n"
+            "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+            "       xfgcu_bench selftest\n"
+            "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
+            " default 4096; parse prints the frames found first, then the counters and\n"
+            " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
     return 2;
 }
 
@@ -841,8 +842,7 @@ static int xb_cmd_selftest(void)
         return 1;
     }
     for (k = 0; k < (int)XB_KINDS; k++) {
-        const int crafted =
-            (k != (int)XB_VALID && k != (int)XB_NOISY && k != (int)XB_UART4 && k != (int)XB_UART3);
+        const int crafted = (k != (int)XB_VALID && k != (int)XB_NOISY && k != (int)XB_UART4 && k != (int)XB_UART3);
         size_t c, worst = 0, lo = (size_t)-1, hi = 0;
         xb_result res;
         xb_generate((xb_kind)k, &o);
