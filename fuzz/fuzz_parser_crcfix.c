@@ -258,7 +258,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
     /* Run A: 300 zero bytes end the stream, so every candidate has ended:
-     * nothing stays held. Run B: the stream stops dead after the last item,
+     * only the last three zeros stay held (they might begin a header). Run B: the stream stops dead after the last item,
      * and xf_parser_flush() drops what is held; the frames are run A's that
      * end within the stream (a frame comes out at its own last byte, whatever
      * follows it). */
@@ -274,7 +274,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         size_t i;
         fz_plan_init(&plan, sizes, nsizes);
         fz_feed_checked(stream, n + TAIL_ZEROS, dir, &plan, FZ_END_FLUSH, got, &a);
-        FZ_CHECK(a.pending == 0u);
+        FZ_CHECK(a.pending <= 3u);
         if (a.given_up == 0u) {
             check_recovered(&want[d], got, a.nframes);
         }

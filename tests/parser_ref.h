@@ -19,16 +19,15 @@
  *       [s, e) zero: the frame [s, e) is returned, every pending candidate
  *       is dropped, floor = e, and nothing else about byte q is examined;
  *       else crc_errors++ and that candidate is removed;
- *    2. then a header pair completed by byte q at s = q - 3 >= floor: a
- *       bad length is a length error; a valid one a new candidate. Fewer
- *       than K pending: it becomes pending. Else W = the pending candidate
- *       with the greatest (end, start): if the new one ends before W,
- *       W is removed, given_up++, and the new one becomes pending; else the
- *       new one is not admitted, given_up++.
- *  - Held bytes (pending) = e - head, head = the earliest of the pending
- *    starts and of the positions s in [max(floor, e - 3), e) that hold h0
- *    (an h0 whose header is not complete: whatever follows it, it is held
- *    until its fourth byte); e when there is none.
+ *    2. then, when fewer than K candidates are pending, a header pair
+ *       completed by byte q at s = q - 3 >= floor: a bad length is a length
+ *       error; a valid one becomes pending, and given_up++ when it takes
+ *       the last free slot. While K are pending no header is looked at
+ *       (first come, first served: a frame that begins then is lost, and
+ *       no bad length is counted).
+ *  - Held bytes (pending) = e - head, head = the earliest pending start;
+ *    with none pending, max(floor, e - 3): the last three bytes, which may
+ *    begin a header, whatever they are.
  *  - bytes_skipped = bytes_in - bytes of returned frames - pending.
  *  - A flush (end of input) drops every held byte: pending 0, counted
  *    skipped; nothing else changes (no frame, no given_up).
@@ -84,18 +83,11 @@ static inline uint16_t pr_crc(const uint8_t *d, size_t n)
 }
 
 /* Held bytes after the first e bytes. */
-static inline size_t pr_held(const uint8_t *s, size_t e, size_t floor, const pr_frame *cand, size_t ncand, uint8_t h0)
+static inline size_t pr_held(size_t e, size_t floor, const pr_frame *cand, size_t ncand)
 {
-    size_t head = e, i, k = (e > 3u) ? e - 3u : 0u;
+    size_t head = (e > floor + 3u) ? e - 3u : floor, i;
     for (i = 0; i < ncand; i++) {
-        if (cand[i].start < head) {
-            head = cand[i].start;
-        }
-    }
-    for (k = (k < floor) ? floor : k; k < e && k < head; k++) {
-        if (s[k] == h0) {
-            head = k;
-        }
+        head = (i == 0u || cand[i].start < head) ? cand[i].start : head;
     }
     return e - head;
 }
@@ -163,29 +155,18 @@ static inline int pr_run(const uint8_t *s, size_t n, xf_direction dir, unsigned 
             }
         }
         /* 2. a header pair completed by byte q, at q - 3 */
-        if (!framed && q >= floor + 3u && s[q - 3u] == h0 && s[q - 2u] == h1) {
+        if (!framed && ncand < K && q >= floor + 3u && s[q - 3u] == h0 && s[q - 2u] == h1) {
             pr_frame nc;
             nc.start = q - 3u;
             nc.len = (size_t)s[q - 1u] | ((size_t)s[q] << 8);
             if (nc.len < XF_PACKET_MIN_LEN || nc.len > max_len) {
                 c.length_errors++;
-            } else if (ncand < K) {
-                cand[ncand++] = nc;
             } else {
-                size_t w = 0; /* the greatest (end, start): the latest of those with the greatest end */
-                for (i = 1; i < ncand && i < K; i++) { /* (ncand == K here; the bound is for gcc) */
-                    if (cand[i].start + cand[i].len >= cand[w].start + cand[w].len) {
-                        w = i;
-                    }
-                }
-                c.given_up++;
-                if (nc.start + nc.len < cand[w].start + cand[w].len) {
-                    memmove(cand + w, cand + w + 1u, (ncand - w - 1u) * sizeof(*cand));
-                    cand[ncand - 1u] = nc;
-                }
+                cand[ncand++] = nc;
+                c.given_up += (ncand == K);
             }
         }
-        c.pending = (uint32_t)pr_held(s, e, floor, cand, ncand, h0);
+        c.pending = (uint32_t)pr_held(e, floor, cand, ncand);
         c.bytes_skipped = (uint32_t)(e - frame_bytes - c.pending);
         m->at[e] = c;
     }

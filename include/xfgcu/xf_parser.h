@@ -185,17 +185,17 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 
 #define XF__RMASK (XF_PARSER_RING - 1u)
 #define XF__IX(i) ((uint8_t)((i)&XF__RMASK))
-#define XF__MIN   XF_PACKET_MIN_LEN
-#define XF__SHORT 4u /* runs shorter than this are searched byte by byte, not through memchr */
+#define XF__K     XF_PARSER_SLOTS
 /* The CRC of each direction's header pair (tests/test_parser.c checks them). */
 #define XF__GCU_PAIR_CRC  0x4F68u
 #define XF__HOST_PAIR_CRC 0x395Cu
 XF_STATIC_ASSERT(XF_PARSER_RING > XF_PACKET_MAX_LEN && XF_PACKET_MAX_LEN <= 255u, ring_holds_a_packet);
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_HOST_HEADER0, h0_names_the_direction);
-/* A header's length high byte (0) is neither header byte, and h1 is no h0 (xf__idle's plan). */
-XF_STATIC_ASSERT(XF_GCU_HEADER0 != 0u && XF_GCU_HEADER1 != 0u && XF_HOST_HEADER0 != 0u && XF_HOST_HEADER1 != 0u,
-                 no_header_byte_is_0);
-XF_STATIC_ASSERT(XF_GCU_HEADER0 != XF_GCU_HEADER1 && XF_HOST_HEADER0 != XF_HOST_HEADER1, h1_is_no_h0);
+/* A valid length's high byte (0) and h1 are no h0: a header's last three bytes begin no pair
+ * unless its length's low byte is an h0. */
+XF_STATIC_ASSERT(XF_GCU_HEADER0 != 0u && XF_HOST_HEADER0 != 0u && XF_GCU_HEADER0 != XF_GCU_HEADER1 &&
+                     XF_HOST_HEADER0 != XF_HOST_HEADER1,
+                 h1_and_0_are_no_h0);
 
 XF_API size_t xf_parser_size(void) { return sizeof(xf_parser); }
 
@@ -211,7 +211,7 @@ XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned lo
     }
     XF_MEMSET(p, 0, sizeof(*p));
     p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
-    p->next = 1; /* nothing held: the first byte gets a look */
+    p->next = 4; /* nothing held: the fourth byte is the first that may complete a header */
     return XF_OK;
 }
 
@@ -223,10 +223,16 @@ static inline unsigned xf__len(const xf_parser *p, unsigned k) { return p->ring[
 
 static inline unsigned xf__fin(const xf_parser *p, unsigned k) { return XF__IX(p->at[k] + xf__len(p, k)); }
 
-/* Bytes still to come before candidate k ends. */
+/* Bytes still to come before candidate k ends, its last one included. */
 static inline unsigned xf__left(const xf_parser *p, unsigned k) { return (unsigned)XF__IX(xf__fin(p, k) - p->end); }
 
-static inline int xf__len_ok(unsigned len) { return len >= XF__MIN && len <= XF_PACKET_MAX_LEN; }
+static inline int xf__len_ok(unsigned len) { return len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN; }
+
+/* The second header byte of the direction parsed (h0 names it). */
+static inline unsigned xf__h1(const xf_parser *p)
+{
+    return (p->h0 == XF_GCU_HEADER0) ? XF_GCU_HEADER1 : XF_HOST_HEADER1;
+}
 
 XF_API size_t xf_parser_pending(const xf_parser *p) { return (p == NULL) ? 0u : xf__held(p); }
 
@@ -237,7 +243,7 @@ static inline void xf__clear(xf_parser *p)
     p->n = 0;
     p->head = 0;
     p->end = 0;
-    p->next = 1;
+    p->next = 4;
 }
 
 XF_API void xf_parser_reset(xf_parser *p)
@@ -245,48 +251,6 @@ XF_API void xf_parser_reset(xf_parser *p)
     if (p != NULL) {
         xf__clear(p);
     }
-}
-
-/* The second header byte of the direction parsed (h0 names it). */
-static inline unsigned xf__h1(const xf_parser *p)
-{
-    return (p->h0 == XF_GCU_HEADER0) ? XF_GCU_HEADER1 : XF_HOST_HEADER1;
-}
-
-/* How many of the last bytes held (0..3) run from the earliest h0 whose
- * header is not complete yet (its fourth byte has not come). */
-static inline unsigned xf__prefix(const xf_parser *p)
-{
-    const uint8_t *r = p->ring;
-    unsigned e = p->end, held = xf__held(p), h0 = p->h0;
-    return (held >= 3u && r[XF__IX(e - 3u)] == h0)   ? 3u
-           : (held >= 2u && r[XF__IX(e - 2u)] == h0) ? 2u
-           : (held >= 1u && r[XF__IX(e - 1u)] == h0) ? 1u
-                                                     : 0u;
-}
-
-/* Set next: just past the next byte that needs a look, the soonest of the
- * first candidate's last byte and the fourth byte of a header an h0 among
- * the last three bytes begins (unless the byte after that h0 is here and is
- * not h1: with a candidate pending, such an h0 changes nothing); with no
- * candidate, the fourth byte of head's h0, or with nothing held the next
- * byte. Every byte before it, unless it is an h0, is only stored (the fast
- * paths). */
-XF__COLD void xf__plan(xf_parser *p)
-{
-    const uint8_t *r = p->ring;
-    unsigned e = p->end, h0 = p->h0, h1 = xf__h1(p), stop, k;
-    if (p->n == 0u) {
-        p->next = XF__IX(p->head + ((e == p->head) ? 1u : 4u));
-        return;
-    }
-    /* a candidate is pending, so its four header bytes at least are held */
-    stop = xf__left(p, 0);
-    k = (r[XF__IX(e - 3u)] == h0 && r[XF__IX(e - 2u)] == h1)   ? 1u
-        : (r[XF__IX(e - 2u)] == h0 && r[XF__IX(e - 1u)] == h1) ? 2u
-        : (r[XF__IX(e - 1u)] == h0)                            ? 3u
-                                                               : stop;
-    p->next = XF__IX(e + ((k < stop) ? k : stop));
 }
 
 /* Bring crc up to the last byte held: bytes are stored first and CRC'd
@@ -303,106 +267,90 @@ static void xf__sum(xf_parser *p)
     p->sum = (uint8_t)e;
 }
 
-/* Move head up to the first byte that can still begin a frame: the earliest
- * candidate's, or else an h0 whose header is not complete yet. */
+/* Move head up to the first byte that may still begin a frame: the earliest
+ * candidate's, or with none the first of the last three (they may begin a
+ * header); set next, just past the next byte that needs the byte path:
+ * candidate 0's last, or with none the fourth byte held. */
 static void xf__settle(xf_parser *p)
 {
-    unsigned k, keep = 0;
+    unsigned k, held = xf__held(p), keep = (p->n == 0u) ? 3u : 0u;
     for (k = 0; k < p->n; k++) {
         unsigned back = (unsigned)XF__IX(p->end - p->at[k]);
         keep = (back > keep) ? back : keep;
     }
-    if (p->n == 0u) {
-        keep = xf__prefix(p);
+    XF_ASSERT(p->n == 0u || keep <= held);
+    if (keep < held) {
+        p->stats.bytes_skipped += held - keep;
+        p->head = XF__IX(p->end - keep);
     }
-    XF_ASSERT(keep <= xf__held(p) && keep <= XF_PACKET_MAX_LEN);
-    if (keep == 0u) {
-        xf__clear(p);
-        return;
-    }
-    p->stats.bytes_skipped += xf__held(p) - keep;
-    p->head = XF__IX(p->end - keep);
+    p->next = XF__IX((p->n == 0u) ? p->head + 4u : xf__fin(p, 0));
 }
 
 /* Drop candidate 0 (its end has come), keeping the others in order. */
 static void xf__shift(xf_parser *p)
 {
     unsigned k;
-    for (p->n--, k = 0; k < p->n && k + 1u < XF_PARSER_SLOTS; k++) { /* (the bound is for the compiler) */
+    for (p->n--, k = 0; k < p->n && k + 1u < XF__K; k++) { /* (the bound is for the compiler) */
         p->want[k] = p->want[k + 1u];
         p->at[k] = p->at[k + 1u];
     }
 }
 
-/* A header pair and a valid length end with the last byte held: a new
- * candidate, placed in order of end (after those that end with it: they
- * started earlier). Its `want` is what the CRC of everything before it
- * contributes at its end: the frame is intact exactly when the running CRC
- * then equals want * x^(8 (len - 4)) (xf__crc_zeros); with no other
- * candidate the running CRC restarts at the candidate, and want is 0. When
- * every slot is taken, the pending one that ends last is given up (it ends
- * after the new one: xf__open). 1, or 3 when it held the first byte held. */
-static int xf__admit(xf_parser *p, unsigned len)
+/* A header with a valid length ends with the last byte held, and a slot is
+ * free: a new candidate, placed in order of end (after those that end with
+ * it: they began earlier). Its `want` is what the CRC of everything before
+ * it contributes at its end: the frame is intact exactly when the running
+ * CRC then equals want * x^(8 (len - 4)) (xf__crc_zeros). Alone, it moves
+ * to ring index 0 (its frame cannot wrap), the running CRC restarts at it
+ * from its pair's constant, and want is 0. Taking the last slot counts in
+ * given_up: until one is free again no header is looked at. */
+static void xf__admit(xf_parser *p, unsigned len)
 {
     unsigned left = len - 4u, k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
     uint32_t c;
-    int moved = 1;
     if (k == 0u) {
-        /* The running CRC restarts at the candidate: its pair's CRC is a
-         * constant, and xf__sum() takes it on from the length byte. */
+        p->stats.bytes_skipped += xf__held(p) - 4u;
+        p->ring[0] = p->h0;
+        p->ring[1] = (uint8_t)xf__h1(p);
+        p->ring[2] = (uint8_t)len;
+        p->ring[3] = 0;
+        p->head = 0;
+        p->end = 4;
         p->crc = (uint16_t)pair;
-        p->sum = XF__IX(p->end - 2u);
+        p->sum = 2; /* xf__sum() takes the CRC on from the length bytes */
         p->want[0] = 0;
-        p->at[0] = XF__IX(p->end - 4u);
-        p->n = 1;
-        return 1;
+        p->at[0] = 0;
+    } else {
+        c = xf__crc_step(xf__crc_step((uint32_t)pair << 16, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
+        xf__sum(p);
+        for (; k > 0u && k < XF__K && xf__left(p, k - 1u) > left; k--) {
+            p->want[k] = p->want[k - 1u];
+            p->at[k] = p->at[k - 1u];
+        }
+        p->want[k] = (uint16_t)(p->crc ^ (c >> 16));
+        p->at[k] = XF__IX(p->end - 4u);
     }
-    if (k == XF_PARSER_SLOTS) {
-        k--; /* the candidate that ends last makes room (xf__open counted it) */
-        moved = (p->at[k] == p->head) ? 3 : 1;
-    }
-    c = xf__crc_step(xf__crc_step((uint32_t)pair << 16, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
-    xf__sum(p);
-    p->n = (uint8_t)(k + 1u);
-    for (; k > 0u && k < XF_PARSER_SLOTS && xf__left(p, k - 1u) > left; k--) {
-        p->want[k] = p->want[k - 1u];
-        p->at[k] = p->at[k - 1u];
-    }
-    p->want[k] = (uint16_t)(p->crc ^ (c >> 16));
-    p->at[k] = XF__IX(p->end - 4u);
-    XF_ASSERT(p->n <= XF_PARSER_SLOTS && k < XF_PARSER_SLOTS && (k == 0u || xf__left(p, k - 1u) <= left) &&
-              xf__len(p, k) == len);
-    return moved;
+    p->n++;
+    p->stats.given_up += (p->n == XF__K); /* deaf to headers until a slot is free */
+    XF_ASSERT(p->n <= XF__K && xf__len(p, k) == len);
 }
 
-/* The last byte held may be the fourth of a header: a candidate, a length
- * error, or nothing. When every slot is taken, the candidate that ends last
- * is given up, the new one included. Returns as xf__admit(), 8 when the
- * new header was given up, or 0 when it is no header. */
-static inline int xf__open(xf_parser *p)
+/* The last byte held completes a header pair, and a slot is free: a bad
+ * length is counted; a valid one is admitted (1). */
+static int xf__header(xf_parser *p)
 {
-    const uint8_t *r = p->ring;
-    unsigned s = XF__IX(p->end - 4u), len;
-    if (xf__held(p) < 4u || r[s] != p->h0 || r[XF__IX(s + 1u)] != xf__h1(p)) {
-        return 0;
-    }
-    len = (unsigned)r[XF__IX(s + 2u)] | ((unsigned)r[XF__IX(s + 3u)] << 8);
+    unsigned len = p->ring[XF__IX(p->end - 2u)] | ((unsigned)p->ring[XF__IX(p->end - 1u)] << 8);
     if (!xf__len_ok(len)) {
         p->stats.length_errors++;
         return 0;
     }
-    if (p->n == XF_PARSER_SLOTS) {
-        p->stats.given_up++; /* the new candidate, or the pending one that ends last */
-        if (len - 4u >= xf__left(p, XF_PARSER_SLOTS - 1u)) {
-            return 8;
-        }
-    }
-    return xf__admit(p, len);
+    xf__admit(p, len);
+    return 1;
 }
 
 /* Reverse r[i, j). Three reversals rotate the ring: a frame that wraps round
- * its end becomes contiguous at index 0. Rare: only after noise has left
- * the ring misaligned, at most once per XF_PARSER_RING bytes taken. */
+ * its end becomes contiguous at index 0. Rare: only a candidate that began
+ * behind another can wrap. */
 static void xf__reverse(uint8_t *r, unsigned i, unsigned j)
 {
     for (; i + 1u < j; i++) {
@@ -431,261 +379,212 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     p->n = 0;
     p->head = 0;
     p->end = 0;
-    p->next = 1;
+    p->next = 4;
 }
 
-/* Candidates that end with the last byte held, in order of start: the first
- * intact one is returned (4), failed ones go (1, or 3 when one of them held
- * the first byte held). */
-XF__COLD int xf__ends(xf_parser *p, xf_frame *frame)
+/* The last byte held ends candidate 0, and maybe others: check them in
+ * order of start; the first intact one is returned (1), failed ones go. */
+static int xf__ends(xf_parser *p, xf_frame *frame)
 {
-    int moved = 1;
-    if (p->n == 0u || xf__fin(p, 0) != p->end) {
-        return 1;
-    }
     xf__sum(p);
     do {
         uint16_t w = p->want[0];
         if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u))) {
             xf__emit(p, frame);
-            return 4;
+            return 1;
         }
         p->stats.crc_errors++;
-        moved |= (p->at[0] == p->head) ? 3 : 1;
         xf__shift(p);
     } while (p->n > 0u && xf__fin(p, 0) == p->end);
-    return moved;
-}
-
-/* After a look that changed something (look: as xf__admit() returns), or
- * with no candidate: move head up when the first byte held may have lost
- * its candidate, then set next. */
-XF__COLD void xf__after(xf_parser *p, int look)
-{
-    if ((look & 2) || p->n == 0u) {
-        xf__settle(p);
-    }
-    xf__plan(p);
-}
-
-/* No candidate, and the last byte held is the fourth after head's h0 (or
- * comes before it): a header there opens a candidate; else head moves to
- * the next h0 among the three bytes after it, or nothing is held. */
-XF__COLD int xf__hunt(xf_parser *p)
-{
-    unsigned k = 1;
-    XF_ASSERT(xf__held(p) <= 4u && p->ring[p->head] == p->h0);
-    if (xf__held(p) == 4u && p->ring[XF__IX(p->head + 1u)] != xf__h1(p)) {
-        /* No header pair at head, the commonest case of a run of h0 bytes:
-         * what xf__settle() and xf__plan() would do, without their generality. */
-        while (k < 4u && p->ring[XF__IX(p->head + k)] != p->h0) {
-            k++;
-        }
-        if (k == 4u) {
-            xf__clear(p);
-            return 0;
-        }
-        p->stats.bytes_skipped += k;
-        p->head = XF__IX(p->head + k);
-        p->next = XF__IX(p->head + 4u);
-        return 0;
-    }
-    if (xf__held(p) == 4u && xf__open(p) == 0) {
-        xf__settle(p);
-    }
-    xf__plan(p);
     return 0;
 }
 
-/* The byte at next: the end of candidate 0 (and maybe others), which are
- * checked before the byte is looked at as a header's fourth. */
-XF__COLD int xf__at_next(xf_parser *p, xf_frame *frame)
+/* The last byte held ends candidate 0: the candidates that end with it come
+ * first (a frame returned drops whatever its last bytes begin), then a
+ * header pair it completes (pair). 1 when it completes a frame. */
+XF__COLD int xf__look(xf_parser *p, int pair, xf_frame *frame)
 {
-    int look = xf__ends(p, frame);
-    if (look == 4) {
+    if (xf__ends(p, frame)) {
         return 1;
     }
-    xf__after(p, look | xf__open(p));
+    if (pair && p->n < XF__K) {
+        (void)xf__header(p);
+    }
+    xf__settle(p);
     return 0;
 }
 
-/* Store an h0 that comes before next: it only brings next to its own
- * fourth byte. */
-static inline void xf__h0(xf_parser *p)
+/* One byte, through every rule. 1 when it completes a frame. */
+static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
 {
-    XF_ASSERT(p->head != p->end);
-    p->ring[p->end] = (uint8_t)p->h0;
-    p->end = XF__IX(p->end + 1u);
-    if (XF__IX(p->next - p->end) > 3u) {
-        p->next = XF__IX(p->end + 3u);
+    unsigned e = p->end;
+    int pair = p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && xf__held(p) >= 3u;
+    p->ring[e] = b;
+    p->end = XF__IX(e + 1u);
+    if (p->end == p->next && p->n > 0u) {
+        return xf__look(p, pair, frame);
     }
-}
-
-/* The byte at next is the fourth after an h0, and no candidate's end: a
- * header (admitted, or given up), or nothing. */
-XF__COLD int xf__fourth(xf_parser *p)
-{
-    int look = xf__open(p);
-    if (look & 2) {
-        xf__settle(p);
-    }
-    if (look != 0) {
-        /* a header, admitted or given up: its last three bytes (h1, the length's low byte, 0)
-         * begin no pair, so next is candidate 0's last byte (xf__plan's answer) */
-        p->next = XF__IX(p->end + xf__left(p, 0));
-    } else {
-        xf__plan(p);
-    }
-    return 0;
-}
-
-/* Take one byte that needs a look: an h0, or the byte before next. Every
- * rule applies to the latter, ends before headers (a frame returned drops
- * whatever its last bytes begin); an h0 before next only brings next to
- * its own fourth byte. 1 when it completes a frame. */
-static int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
-{
-    if (p->next != XF__IX(p->end + 1u)) {
-        XF_ASSERT(b == p->h0);
-        xf__h0(p);
-        return 0;
-    }
-    p->ring[p->end] = b;
-    p->end = XF__IX(p->end + 1u);
-    if (p->n == 0u) {
-        return xf__hunt(p);
-    }
-    if (xf__fin(p, 0) == p->end) {
-        return xf__at_next(p, frame);
-    }
-    return xf__fourth(p);
-}
-
-/* Bytes of d before the first h0, at most len. */
-static inline size_t xf__to_h0(const xf_parser *p, const uint8_t *d, size_t len)
-{
-    const uint8_t *hit = (const uint8_t *)XF_MEMCHR(d, p->h0, len);
-    return (hit != NULL) ? (size_t)(hit - d) : len;
-}
-
-/* Store the bytes of d before the first h0, at most len (none of them needs
- * a look); return how many. A short run in one loop, a long one through
- * memchr and memcpy. */
-static size_t xf__quiet(xf_parser *p, const uint8_t *d, size_t len)
-{
-    uint8_t *r = p->ring;
-    unsigned e = p->end, h0 = p->h0;
-    size_t m = 0, first = XF_PARSER_RING - e;
-    if (len < XF__SHORT) {
-        for (; m < len && d[m] != h0; m++) {
-            r[e] = d[m];
-            e = XF__IX(e + 1u);
-        }
-    } else {
-        m = xf__to_h0(p, d, len);
-        XF_MEMCPY(r + e, d, (m < first) ? m : first);
-        if (m > first) {
-            XF_MEMCPY(r, d + first, m - first);
-        }
-        e = XF__IX(e + m);
-    }
-    p->end = (uint8_t)e;
-    return m;
-}
-
-/* Nothing held, d starts with a header and holds the whole packet with no
- * other header pair inside, so no other candidate can begin or end before
- * its end: intact, it is returned from d itself, with no copy (1); damaged,
- * it is counted and skipped but for its last three bytes, which may begin a
- * header (-1). Else the general path applies every rule (0). */
-static int xf__direct(xf_parser *p, const uint8_t *d, xf_frame *frame)
-{
-    size_t len = d[2], i = 1;
-    while ((i += xf__to_h0(p, d + i, len - 1u - i)) < len - 1u) {
-        if (d[++i] == xf__h1(p)) {
-            return 0; /* a header pair inside: the general path applies every rule */
-        }
-    }
-    if ((xf__crc_run(0, d, len) >> 16) != 0u) {
-        p->stats.crc_errors++;
-        p->stats.bytes_skipped += (uint32_t)len - 3u;
-        return -1;
-    }
-    frame->data = d;
-    frame->len = len;
-    p->stats.frames++;
-    return 1;
-}
-
-/* Nothing held: skip to the next h0 and look at the header it begins when
- * all of it is in view. A whole packet there is returned in place (1, *i
- * past it); a valid header opens its candidate at once. */
-static int xf__idle(xf_parser *p, const uint8_t *d, size_t len, size_t *i, xf_frame *frame)
-{
-    size_t k = (d[*i] == p->h0) ? 0u : xf__to_h0(p, d + *i, len - *i); /* after a frame, the next is here */
-    unsigned n;
-    p->stats.bytes_skipped += (uint32_t)k;
-    *i += k;
-    d += *i;
-    len -= *i;
-    if (len == 0u) {
-        return 0;
-    }
-    if (len < 4u) {
-        (void)xf__byte(p, d[0], frame); /* no whole header in view: every rule applies from here */
-        *i += 1u;
-        return 0;
-    }
-    n = (unsigned)d[2] | ((unsigned)d[3] << 8);
-    if (d[1] != xf__h1(p) || !xf__len_ok(n)) {
-        /* A whole header in view, and no candidate: the h0 begins nothing, so it is skipped at
-         * once (a header pair's bad length counted), with no look and nothing held. */
-        p->stats.length_errors += (d[1] == xf__h1(p));
+    if (pair && p->n < XF__K && xf__header(p)) {
+        xf__settle(p); /* admitted */
+    } else if (p->n == 0u && p->end == p->next) {
+        /* no candidate and four bytes held: the first can begin no header now */
+        p->head = XF__IX(p->head + 1u);
+        p->next = XF__IX(p->next + 1u);
         p->stats.bytes_skipped++;
-        *i += 1u;
+    }
+    return 0;
+}
+
+/* Store d[0, m) after the bytes held (no byte of it needs the byte path). */
+static void xf__copy(xf_parser *p, const uint8_t *d, size_t m)
+{
+    unsigned e = p->end;
+    size_t first = XF_PARSER_RING - e;
+    XF_MEMCPY(p->ring + e, d, (m < first) ? m : first);
+    if (m > first) {
+        XF_MEMCPY(p->ring, d + first, m - first);
+    }
+    p->end = XF__IX(e + m);
+}
+
+/* The first index in [i + 3, r) of d that completes a header with a valid
+ * length begun in d at or after i, or r; the bad lengths completed before
+ * it are counted in *errors. A header is h0 h1 and two length bytes: an h0
+ * followed by another byte begins none, and after a pair the next h0 may
+ * be its length's low byte. */
+static size_t xf__scan(const xf_parser *p, const uint8_t *d, size_t i, size_t r, uint32_t *errors)
+{
+    unsigned h1 = xf__h1(p);
+    while (i + 3u < r) {
+        if (d[i] != p->h0) { /* (after a pair, the length's low byte often is one) */
+            const uint8_t *hit = (const uint8_t *)XF_MEMCHR(d + i, p->h0, r - i - 3u);
+            if (hit == NULL) {
+                break;
+            }
+            i = (size_t)(hit - d);
+        }
+        if (d[i + 1u] != h1) {
+            i++;
+        } else if (d[i + 3u] != 0u || !xf__len_ok(d[i + 2u])) {
+            ++*errors;
+            i += 2u;
+        } else {
+            return i + 3u;
+        }
+    }
+    return r;
+}
+
+/* No candidate: hold the last three bytes of what is held followed by
+ * d[0, m) (they may begin a header), skip the rest. */
+static void xf__keep(xf_parser *p, const uint8_t *d, size_t m)
+{
+    if (m >= 3u) {
+        p->stats.bytes_skipped += xf__held(p) + (uint32_t)(m - 3u);
+        p->head = 0;
+        p->end = 0;
+        d += m - 3u;
+        m = 3;
+    }
+    xf__copy(p, d, m);
+    xf__settle(p);
+}
+
+/* No candidate, and no h0 among the bytes held: the first header in
+ * d[*i, n) with a valid length. None: d's last bytes are held (0). A whole
+ * packet there with no other header pair inside, so that no other
+ * candidate can begin or end before it ends: intact, it is returned from d
+ * itself with no copy (1); damaged, it is counted and skipped but for its
+ * last three bytes. Else its candidate opens. */
+static int xf__idle(xf_parser *p, const uint8_t *d, size_t n, size_t *i, xf_frame *frame)
+{
+    size_t k = xf__scan(p, d, *i, n, &p->stats.length_errors), s, end;
+    uint32_t errors = 0;
+    if (k == n) {
+        xf__keep(p, d + *i, n - *i);
+        *i = n;
         return 0;
     }
-    k = (n <= len) ? (size_t)(xf__direct(p, d, frame) + 2) : 2u; /* 1, 2 or 3: damaged, general, whole */
-    if (k != 2u) {
-        *i += (k == 3u) ? n : n - 3u;
-        return k == 3u;
+    s = k - 3u;
+    end = s + d[k - 1u];
+    p->stats.bytes_skipped += xf__held(p) + (uint32_t)(s - *i);
+    p->head = 0;
+    p->end = 0;
+    p->next = 4;
+    *i = k + 1u;
+    if (end <= n && (XF__K == 1 || xf__scan(p, d, k + 1u, end - 1u, &errors) == end - 1u) &&
+        (d[end - 4u] != p->h0 || d[end - 3u] != xf__h1(p))) {
+        /* (with one slot, the packet's own candidate takes it: nothing inside is looked at) */
+        p->stats.given_up += (XF__K == 1);
+        p->stats.length_errors += errors;
+        *i = end;
+        if ((xf__crc_run(0, d + s, end - s) >> 16) == 0u) {
+            frame->data = d + s;
+            frame->len = end - s;
+            p->stats.frames++;
+            return 1;
+        }
+        p->stats.crc_errors++;
+        xf__keep(p, d + s, end - s);
+        return 0;
     }
-    XF_ASSERT(p->end == 0u && p->n == 0u); /* empty: at ring index 0 */
-    XF_MEMCPY(p->ring, d, 4u);             /* the running CRC starts at this candidate (xf__admit) */
-    p->end = 4;
-    (void)xf__admit(p, n);
-    /* What xf__plan() finds: no h0 among h1 and a length byte that, like its
-     * high byte 0, are no h0 followed by h1 (ring index 0: no wrap). */
-    p->next = (uint8_t)n;
-    *i += 4u;
+    p->end = 4; /* xf__admit() writes the header at ring index 0 */
+    xf__admit(p, d[k - 1u]);
+    xf__settle(p);
     return 0;
+}
+
+/* An h0 among the last three bytes held: the next byte may complete a pair
+ * begun before d, so it takes the byte path. */
+static inline int xf__tail(const xf_parser *p)
+{
+    const uint8_t *r = p->ring;
+    unsigned e = p->end, h0 = p->h0;
+    return r[XF__IX(e - 1u)] == h0 || r[XF__IX(e - 2u)] == h0 || r[XF__IX(e - 3u)] == h0;
 }
 
 /* The main loop: take bytes until a frame is complete (1) or all are taken
- * (0). Bytes before the next h0 and before next are only stored; each of
- * the others gets a look of its own. */
-static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf_frame *frame)
+ * (0). A byte goes through the byte path when it ends candidate 0, completes
+ * a valid header, or may complete a pair begun among the bytes held; runs
+ * between are searched for pairs in d and copied. */
+static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_frame *frame)
 {
     size_t i = 0;
-    while (i < len) {
-        if (p->end == p->head) {
-            if (xf__idle(p, d, len, &i, frame)) {
+    while (i < n) {
+        size_t k = i;
+        if (i < 3u && p->n < XF__K && xf__tail(p)) {
+            /* a pair begun before d may end here: the byte path for d[i] */
+        } else if (p->n == 0u) {
+            if (i >= 3u) {
+                /* the bytes held are d's last three: give them back, so that the
+                 * idle path sees whatever header they begin */
+                XF_ASSERT(xf__held(p) <= 3u);
+                i -= xf__held(p);
+                p->head = 0;
+                p->end = 0;
+                p->next = 4;
+            }
+            if (xf__idle(p, d, n, &i, frame)) {
                 *used = i;
                 return 1;
             }
             continue;
         } else {
-            size_t m = len - i, quiet = (unsigned)XF__IX(p->next - p->end) - 1u;
-            if (quiet > 0u && d[i] != p->h0) {
-                i += xf__quiet(p, d + i, (m < quiet) ? m : quiet);
+            size_t r = n - i, left = xf__left(p, 0) - 1u; /* bytes before candidate 0's last */
+            r = i + ((r < left) ? r : left);
+            k = (p->n == XF__K) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
+            xf__copy(p, d + i, k - i);
+            if (k == n) {
+                break;
             }
         }
-        if (i < len && xf__byte(p, d[i++], frame)) {
+        i = k + 1u;
+        if (xf__byte(p, d[k], frame)) {
             *used = i;
             return 1;
         }
     }
-    *used = len;
+    *used = n;
     return 0;
 }
 
@@ -694,7 +593,12 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t len, size_t *used, xf
 XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     size_t used = len;
-    int found = xf__take(p, data, len, &used, frame);
+    int found = 0;
+    if (p->n > 0u && len < xf__left(p, 0) && !xf__tail(p) && XF_MEMCHR(data, p->h0, len) == NULL) {
+        xf__copy(p, data, len); /* inside a frame, no h0: nothing to look at (the commonest chunk) */
+    } else {
+        found = xf__take(p, data, len, &used, frame);
+    }
     p->stats.bytes_in += (uint32_t)used;
     if (consumed != NULL) {
         *consumed = used;
@@ -702,29 +606,14 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
 }
 
-/* One byte that needs a look, or comes while nothing is held. */
+/* One byte that needs the byte path. */
 XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
     p->stats.bytes_in++;
     if (consumed != NULL) {
         *consumed = 1;
     }
-    if (p->end == p->head && b != p->h0) {
-        p->stats.bytes_skipped++; /* nothing held, and no header begins here */
-        return XF_PARSE_MORE;
-    }
     return (xf_parse_status)xf__byte(p, b, frame); /* 1 is XF_PARSE_FRAME, 0 XF_PARSE_MORE */
-}
-
-/* One h0 before next. */
-XF__COLD xf_parse_status xf__feed_h0(xf_parser *p, size_t *consumed)
-{
-    p->stats.bytes_in++;
-    if (consumed != NULL) {
-        *consumed = 1;
-    }
-    xf__h0(p);
-    return XF_PARSE_MORE;
 }
 
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
@@ -733,26 +622,33 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
         return XF_PARSE_ERR_ARG;
     }
     if (len == 1u) {
-        unsigned e = p->end, b = data[0];
-        if (p->next != XF__IX(e + 1u)) {
-            /* A UART's byte that needs no look (xf__plan): store it; an h0
-             * brings next to its fourth byte (out of line: no stack frame). */
-            if (b == p->h0) {
-                return xf__feed_h0(p, consumed);
+        unsigned e = p->end, b = data[0], end = XF__IX(e + 1u) == p->next && p->n > 0u;
+        if (p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && p->n < XF__K) {
+            /* a header pair: a valid length, or a candidate's end, takes the byte path */
+            if (end || xf__len_ok(p->ring[XF__IX(e - 1u)] | (b << 8)) || xf__held(p) < 3u) {
+                return xf__feed1(p, (uint8_t)b, consumed, frame);
             }
-            p->ring[e] = (uint8_t)b;
-            p->end = XF__IX(e + 1u);
-            p->stats.bytes_in++;
-            if (consumed != NULL) {
-                *consumed = 1;
-            }
-            return XF_PARSE_MORE;
+            p->stats.length_errors++;
+        } else if (end) {
+            return xf__feed1(p, (uint8_t)b, consumed, frame);
         }
-        return xf__feed1(p, (uint8_t)b, consumed, frame);
+        if (XF__IX(e + 1u) == p->next) {
+            /* no candidate and four bytes held: the first can begin no header now */
+            p->head = XF__IX(p->head + 1u);
+            p->next = XF__IX(p->next + 1u);
+            p->stats.bytes_skipped++;
+        }
+        /* A UART's byte that needs no look: store it. */
+        p->ring[e] = (uint8_t)b;
+        p->end = XF__IX(e + 1u);
+        p->stats.bytes_in++;
+        if (consumed != NULL) {
+            *consumed = 1;
+        }
+        return XF_PARSE_MORE;
     }
     return xf__feed(p, data, len, consumed, frame);
 }
-
 /* cppcheck-suppress constParameter ; frame stays writable: a parser that holds frames back may fill it */
 XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame)
 {
