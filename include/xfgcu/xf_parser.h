@@ -331,6 +331,7 @@ static void xf__admit(xf_parser *p, unsigned len)
         p->at[k] = XF__IX(p->end - 4u);
     }
     p->n++;
+    p->next = (uint8_t)xf__fin(p, 0); /* head stays: the new candidate began last */
     p->stats.given_up += (p->n == XF__K); /* deaf to headers until a slot is free */
     XF_ASSERT(p->n <= XF__K && xf__len(p, k) == len);
 }
@@ -414,26 +415,40 @@ XF__COLD int xf__look(xf_parser *p, int pair, xf_frame *frame)
     return 0;
 }
 
-/* One byte, through every rule. 1 when it completes a frame. */
-static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
+/* No candidate, and the byte that makes four held: the first can begin no
+ * header now. */
+static inline void xf__trim(xf_parser *p)
 {
-    unsigned e = p->end;
-    int pair = p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && xf__held(p) >= 3u;
-    p->ring[e] = b;
-    p->end = XF__IX(e + 1u);
+    p->head = XF__IX(p->head + 1u);
+    p->next = XF__IX(p->next + 1u);
+    p->stats.bytes_skipped++;
+}
+
+/* One byte, through every rule (pair: it completes a header pair). 1 when
+ * it completes a frame. */
+static inline int xf__step(xf_parser *p, uint8_t b, int pair, xf_frame *frame)
+{
+    p->ring[p->end] = b;
+    p->end = XF__IX(p->end + 1u);
     if (p->end == p->next && p->n > 0u) {
         return xf__look(p, pair, frame);
     }
     if (pair && p->n < XF__K && xf__header(p)) {
-        xf__settle(p); /* admitted */
+        /* admitted */
     } else if (p->n == 0u && p->end == p->next) {
-        /* no candidate and four bytes held: the first can begin no header now */
-        p->head = XF__IX(p->head + 1u);
-        p->next = XF__IX(p->next + 1u);
-        p->stats.bytes_skipped++;
+        xf__trim(p);
     }
     return 0;
 }
+
+/* Whether the next byte completes a header pair (h0 h1 among the bytes held). */
+static inline int xf__pair(const xf_parser *p)
+{
+    unsigned e = p->end;
+    return p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && xf__held(p) >= 3u;
+}
+
+static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame) { return xf__step(p, b, xf__pair(p), frame); }
 
 /* Store d[0, m) after the bytes held (no byte of it needs the byte path). */
 static void xf__copy(xf_parser *p, const uint8_t *d, size_t m)
@@ -530,7 +545,6 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t n, size_t *i, xf_fram
     }
     p->end = 4; /* xf__admit() writes the header at ring index 0 */
     xf__admit(p, d[k - 1u]);
-    xf__settle(p);
     return 0;
 }
 
@@ -606,7 +620,19 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
 }
 
-/* One byte that needs the byte path. */
+/* Store one byte that needs no look. */
+static inline xf_parse_status xf__store1(xf_parser *p, uint8_t b, size_t *consumed)
+{
+    p->ring[p->end] = b;
+    p->end = XF__IX(p->end + 1u);
+    p->stats.bytes_in++;
+    if (consumed != NULL) {
+        *consumed = 1;
+    }
+    return XF_PARSE_MORE;
+}
+
+/* One byte fed alone that may need a look. */
 XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
     p->stats.bytes_in++;
@@ -616,36 +642,36 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
     return (xf_parse_status)xf__byte(p, b, frame); /* 1 is XF_PARSE_FRAME, 0 XF_PARSE_MORE */
 }
 
+/* One byte fed alone that completes a pair of the bytes held, h0 h1, with
+ * a slot free. */
+XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
+{
+    p->stats.bytes_in++;
+    if (consumed != NULL) {
+        *consumed = 1;
+    }
+    return (xf_parse_status)xf__step(p, b, xf__held(p) >= 3u, frame);
+}
+
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
         return XF_PARSE_ERR_ARG;
     }
     if (len == 1u) {
-        unsigned e = p->end, b = data[0], end = XF__IX(e + 1u) == p->next && p->n > 0u;
-        if (p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && p->n < XF__K) {
-            /* a header pair: a valid length, or a candidate's end, takes the byte path */
-            if (end || xf__len_ok(p->ring[XF__IX(e - 1u)] | (b << 8)) || xf__held(p) < 3u) {
-                return xf__feed1(p, (uint8_t)b, consumed, frame);
+        unsigned e = p->end;
+        if (p->ring[XF__IX(e - 3u)] != p->h0 || p->ring[XF__IX(e - 2u)] != xf__h1(p) || p->n == XF__K) {
+            /* A UART's byte that completes no header pair to look at. */
+            if (XF__IX(e + 1u) != p->next) {
+                return xf__store1(p, data[0], consumed);
             }
-            p->stats.length_errors++;
-        } else if (end) {
-            return xf__feed1(p, (uint8_t)b, consumed, frame);
+            if (p->n == 0u) {
+                xf__trim(p);
+                return xf__store1(p, data[0], consumed);
+            }
+            return xf__feed1(p, data[0], consumed, frame); /* a candidate's end */
         }
-        if (XF__IX(e + 1u) == p->next) {
-            /* no candidate and four bytes held: the first can begin no header now */
-            p->head = XF__IX(p->head + 1u);
-            p->next = XF__IX(p->next + 1u);
-            p->stats.bytes_skipped++;
-        }
-        /* A UART's byte that needs no look: store it. */
-        p->ring[e] = (uint8_t)b;
-        p->end = XF__IX(e + 1u);
-        p->stats.bytes_in++;
-        if (consumed != NULL) {
-            *consumed = 1;
-        }
-        return XF_PARSE_MORE;
+        return xf__pair1(p, data[0], consumed, frame);
     }
     return xf__feed(p, data, len, consumed, frame);
 }
