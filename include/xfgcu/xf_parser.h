@@ -606,13 +606,26 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_f
  * xf_parser_feed() needs no stack frame. */
 XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
-    size_t used = len;
+    size_t used = 0, m = 0;
     int found = 0;
-    if (p->n > 0u && len < xf__left(p, 0) && !xf__tail(p) && XF_MEMCHR(data, p->h0, len) == NULL) {
-        xf__copy(p, data, len); /* inside a frame, no h0: nothing to look at (the commonest chunk) */
-    } else {
-        found = xf__take(p, data, len, &used, frame);
+    if (len > 0u && p->n > 0u && !xf__tail(p)) {
+        /* Inside a frame, the commonest chunk: with no h0 before candidate
+         * 0's last byte, the bytes are only stored, and that byte checks it. */
+        size_t left = xf__left(p, 0);
+        m = (len < left) ? len : left - 1u;
+        if (XF_MEMCHR(data, p->h0, m) != NULL) {
+            m = 0;
+        } else {
+            xf__copy(p, data, m);
+            if (len >= left) {
+                found = xf__byte(p, data[m++], frame);
+            }
+        }
     }
+    if (!found && m < len) {
+        found = xf__take(p, data + m, len - m, &used, frame);
+    }
+    used = !found ? len : used + m; /* (a frame from the first path: used is 0) */
     p->stats.bytes_in += (uint32_t)used;
     if (consumed != NULL) {
         *consumed = used;
