@@ -516,6 +516,7 @@ static void test_consumed_after_false_candidate(void **state)
     xf_parser p;
     xf_frame f;
     (void)state;
+    NEED_SLOTS(2);
     rng_seed(&r, 43);
     memcpy(buf, false_cand, 4);
     a = make_frame(&r, XF_DIR_GCU, 1, buf + 4);
@@ -961,24 +962,25 @@ static void test_reset(void **state)
 }
 
 /* Worst case input: the largest valid length every four bytes, then a
- * real frame. Every false candidate is checked or given up, exactly as the
- * model says. With 255-byte claims the frame ends before every candidate
- * pending at its header, so it survives; with shorter claims (84) whether
- * it does depends on which candidates hold the slots then (the model's
- * answer, which the harness checks). */
+ * real frame, zeros, and another frame. First come, first served: the
+ * false candidates hold every slot while the first frame's header arrives,
+ * so it is lost (the documented condition); once they have ended, the
+ * second is found. Every candidate admitted is checked, exactly as the
+ * model says. With XF_PACKET_MAX_LEN=84 the claims are length errors and
+ * both frames come out. */
 static void test_adversarial_lengths(void **state)
 {
     stream s;
     harness h;
     pr_model m;
     test_rng r;
-    uint8_t f[256];
-    size_t i, fl;
+    uint8_t f[256], g[256];
+    size_t i, fl, gl;
     (void)state;
     stream_init(&s);
     rng_seed(&r, 0xAD);
     for (i = 0; i < 16384; i++) {
-        static const uint8_t cand[4] = {0x8A, 0x5E, XF_PACKET_MAX_LEN, 0x00};
+        static const uint8_t cand[4] = {0x8A, 0x5E, 0xFF, 0x00};
         put(&s, cand, 4);
     }
     fl = make_frame(&r, XF_DIR_GCU, 1, f);
@@ -986,6 +988,8 @@ static void test_adversarial_lengths(void **state)
     for (i = 0; i < 300; i++) {
         put1(&s, 0);
     }
+    gl = make_frame(&r, XF_DIR_GCU, 0, g);
+    put(&s, g, gl);
     model_run(&s, XF_DIR_GCU, &m);
     harness_init(&h, XF_DIR_GCU);
     h.model = &m;
@@ -993,14 +997,16 @@ static void test_adversarial_lengths(void **state)
     for (i = 0; i < s.len; i += 1000) {
         harness_feed(&h, s.buf + i, (i + 1000 <= s.len) ? 1000 : s.len - i);
     }
-    assert_int_equal(h.nframes, m.nframes);
+    check_output(&h, &s, &m);
     if (XF_PACKET_MAX_LEN == 255) {
         assert_int_equal(h.nframes, 1);
+        assert_bytes_equal(h.out, g, gl);
+        assert_true(h.p.stats.given_up >= 1u);
+        assert_true(h.p.stats.crc_errors >= 16384u * 4u / 255u); /* at least one claim at a time */
+    } else {
+        assert_int_equal(h.nframes, 2);
+        assert_true(h.p.stats.length_errors >= 16384u);
     }
-    if (h.nframes == 1u) {
-        assert_bytes_equal(h.out, f, fl);
-    }
-    assert_true(h.p.stats.crc_errors + h.p.stats.given_up >= 16000u);
     harness_free(&h);
     pr_free(&m);
     stream_free(&s);
@@ -1051,8 +1057,8 @@ static void test_crafted_storms(void **state)
         }
         check_output(&h, &s, &m);
         assert_true(h.p.stats.length_errors > 0u && h.p.stats.crc_errors > 0u);
-        if (XF_PARSER_SLOTS >= 4 && XF_PACKET_MAX_LEN == 255) {
-            assert_true(h.nframes >= 3u); /* the frames after the h0 run, the pairs and the nested lengths */
+        if (XF_PACKET_MAX_LEN == 255) {
+            assert_true(h.nframes >= 2u); /* the frames after the h0 run and the pairs */
         }
         harness_free(&h);
         pr_free(&m);
@@ -1085,7 +1091,8 @@ static void test_parser_args(void **state)
     assert_int_equal(used, 0);
     assert_int_equal(xf_parser_feed(&p, b, 4, NULL, &f), XF_PARSE_MORE);
     assert_int_equal(p.stats.bytes_in, 4);
-    assert_int_equal(p.stats.bytes_skipped, 4);
+    assert_int_equal(p.stats.bytes_skipped, 1); /* the last three may begin a header */
+    assert_int_equal(xf_parser_pending(&p), 3);
 }
 
 int main(void)

@@ -134,8 +134,10 @@ static void test_clean_three(void **state)
             assert_int_equal(m.at[73].pending, 1);
             for (i = 0; i <= s.n; i++) {
                 assert_int_equal(m.at[i].bytes_skipped, 0);
-                assert_int_equal(m.at[i].crc_errors + m.at[i].length_errors + m.at[i].given_up, 0);
+                assert_int_equal(m.at[i].crc_errors + m.at[i].length_errors, 0);
             }
+            /* with one slot, each frame's candidate takes the last one */
+            assert_int_equal(m.final.given_up, (k_values[k] == 1u) ? 3u : 0u);
             assert_int_equal(m.final.pending, 0);
             pr_free(&m);
         }
@@ -212,17 +214,18 @@ static void test_length_errors(void **state)
     run(&s, 4, 255, 0, &m);
     check_identities(&s, &m, 255);
     assert_int_equal(m.at[2].pending, 2);
-    assert_int_equal(m.at[3].pending, 3); /* h0 h1 10: held until the length is complete */
+    assert_int_equal(m.at[3].pending, 3); /* with no candidate, the last three bytes */
     assert_int_equal(m.at[3].length_errors, 0);
     assert_int_equal(m.at[4].length_errors, 1); /* counted when the length's high byte arrives */
-    assert_int_equal(m.at[4].bytes_skipped, 4);
+    assert_int_equal(m.at[4].bytes_skipped, 1);
+    assert_int_equal(m.at[4].pending, 3);
     assert_int_equal(m.at[76].frames, 1);
     assert_int_equal(m.at[78].pending, 2);
-    assert_int_equal(m.at[79].pending, 3); /* h0 h1 x, whatever x */
+    assert_int_equal(m.at[79].pending, 3);
     assert_int_equal(m.at[80].length_errors, 2);
-    assert_int_equal(m.at[80].pending, 0);
+    assert_int_equal(m.at[80].pending, 3);
     assert_int_equal(m.at[83].pending, 3);
-    assert_int_equal(m.at[84].pending, 0);
+    assert_int_equal(m.at[84].pending, 3);
     assert_int_equal(m.final.length_errors, 3);
     assert_int_equal(m.final.crc_errors, 0);
     pr_free(&m);
@@ -242,56 +245,55 @@ static void test_length_errors(void **state)
     check_identities(&s, &m, 84);
     assert_int_equal(m.at[3].pending, 3);
     assert_int_equal(m.at[4].length_errors, 1);
-    assert_int_equal(m.at[4].pending, 0);
+    assert_int_equal(m.at[4].pending, 3);
     assert_int_equal(m.nframes, 1);
     pr_free(&m);
 }
 
-/* K + 1 nested false candidates that end after a frame: the one that would
- * end last is given up each time; the frame survives. */
-static void test_k_plus_one_false(void **state)
+/* First come, first served: K false candidates that end after a frame
+ * take every slot, so the headers after them (one more false one, then the
+ * frame's) are not looked at and the frame is lost; taking the last slot
+ * counts once in given_up. With K + 2 slots the frame has one (the last). */
+static void test_first_come_first_served(void **state)
 {
     size_t k;
     (void)state;
     for (k = 0; k < ARRAY_LEN(k_values); k++) {
         const unsigned K = k_values[k];
         stream s = {{0}, 0};
-        size_t i, f, fe;
+        size_t i, f;
         pr_model m;
         for (i = 0; i <= K; i++) {
             put_hex(&s, "8A 5E FF 00");
         }
         f = put_packet(&s, 72, 0x11);
-        fe = f + 72u;
         run(&s, K, 255, 1, &m);
         check_identities(&s, &m, 255);
-        assert_int_equal(m.at[4u * K + 3u].given_up, 0);
-        assert_int_equal(m.at[4u * K + 4u].given_up, 1); /* the (K+1)th: it would end last */
-        assert_int_equal(m.at[f + 3u].given_up, 1);
-        assert_int_equal(m.at[f + 4u].given_up, 2); /* the frame's: the latest false one goes */
-        assert_int_equal(m.nframes, 1);
-        assert_int_equal(m.frames[0].start, f);
-        assert_int_equal(m.at[fe - 1u].frames, 0);
-        assert_int_equal(m.at[fe].frames, 1);
-        /* held: from 0 while the first false one is pending (K > 1); with one
-         * slot, the frame's candidate replaced it */
-        assert_int_equal(m.at[fe - 1u].pending, (K > 1u) ? fe - 1u : fe - 1u - f);
-        assert_int_equal(m.final.crc_errors, 0);
-        assert_int_equal(m.final.given_up, 2);
-        assert_int_equal(m.final.bytes_skipped, 4u * (K + 1u));
+        assert_int_equal(m.at[4u * K - 1u].given_up, 0);
+        assert_int_equal(m.at[4u * K].given_up, 1); /* the K-th takes the last slot */
+        assert_int_equal(m.final.given_up, 1);
+        assert_int_equal(m.nframes, 0);
+        assert_int_equal(m.final.crc_errors + m.final.length_errors, 0); /* none ends in the stream */
+        assert_int_equal(m.at[s.n].pending, s.n);                          /* held from the first */
+        assert_int_equal(m.final.bytes_skipped, s.n);
         pr_free(&m);
 
-        /* two slots more: nothing given up */
         run(&s, K + 2u, 255, 1, &m);
         check_identities(&s, &m, 255);
-        assert_int_equal(m.final.given_up, 0);
         assert_int_equal(m.nframes, 1);
+        assert_int_equal(m.frames[0].start, f);
+        assert_int_equal(m.at[f + 71u].frames, 0);
+        assert_int_equal(m.at[f + 72u].frames, 1);
+        assert_int_equal(m.at[f + 3u].given_up, 0);
+        assert_int_equal(m.at[f + 4u].given_up, 1); /* the frame's took the last slot */
+        assert_int_equal(m.final.bytes_skipped, 4u * (K + 1u));
         pr_free(&m);
     }
 }
 
 /* K false candidates that end sooner than a frame starting after them: the
- * frame is not admitted (the documented loss); with K + 1 slots it is. */
+ * frame finds every slot taken and is lost (the documented loss); with
+ * K + 1 slots it takes the last. */
 static void test_k_false_ending_sooner(void **state)
 {
     size_t k, x;
@@ -309,8 +311,8 @@ static void test_k_false_ending_sooner(void **state)
             put_fill(&s, 0x00, 100);
             run(&s, K, max, 1, &m);
             check_identities(&s, &m, max);
-            assert_int_equal(m.at[f + 3u].given_up, 0);
-            assert_int_equal(m.at[f + 4u].given_up, 1);
+            assert_int_equal(m.at[f - 1u].given_up, 0);
+            assert_int_equal(m.at[f].given_up, 1);
             assert_int_equal(m.nframes, 0);
             assert_int_equal(m.final.crc_errors, K);
             assert_int_equal(m.at[84].crc_errors, 1); /* the first false one, at its end */
@@ -320,7 +322,7 @@ static void test_k_false_ending_sooner(void **state)
 
             run(&s, K + 1u, max, 1, &m);
             check_identities(&s, &m, max);
-            assert_int_equal(m.final.given_up, 0);
+            assert_int_equal(m.final.given_up, 1);
             assert_int_equal(m.final.crc_errors, K); /* they all end before the frame */
             assert_int_equal(m.nframes, 1);
             assert_int_equal(m.frames[0].start, f);
@@ -331,8 +333,7 @@ static void test_k_false_ending_sooner(void **state)
 }
 
 /* A false candidate and a frame that end on the same byte: the earlier start
- * is examined first; with one slot the frame is not admitted (it does not
- * end before the pending one). */
+ * is examined first; with one slot the frame's header finds it taken. */
 static void test_same_end(void **state)
 {
     stream s = {{0}, 0};
@@ -343,13 +344,14 @@ static void test_same_end(void **state)
     put_packet(&s, 72, 0x11); /* at 12, ends at 84 */
     run(&s, 1, 255, 0, &m);
     check_identities(&s, &m, 255);
-    assert_int_equal(m.at[16].given_up, 1);
+    assert_int_equal(m.at[3].given_up, 0);
+    assert_int_equal(m.at[4].given_up, 1);
     assert_int_equal(m.nframes, 0);
     assert_int_equal(m.final.crc_errors, 1);
     pr_free(&m);
     run(&s, 2, 255, 0, &m);
     check_identities(&s, &m, 255);
-    assert_int_equal(m.final.given_up, 0);
+    assert_int_equal(m.final.given_up, 1);
     assert_int_equal(m.at[84].crc_errors, 1);
     assert_int_equal(m.at[84].frames, 1);
     assert_int_equal(m.frames[0].start, 12);
@@ -388,8 +390,9 @@ static void test_truncated_then_intact(void **state)
     pr_free(&m);
 }
 
-/* What is held at the end of the input: from the earliest h0 whose fourth
- * byte has not come, whatever follows it. */
+/* What is held at the end of the input: a candidate from its first byte;
+ * with none, the last three bytes, whatever they are (they may begin a
+ * header; a length error comes with the fourth byte). */
 static void test_held_prefixes(void **state)
 {
     static const struct {
@@ -397,14 +400,10 @@ static void test_held_prefixes(void **state)
         unsigned max;
         uint32_t pending;
     } cases[] = {
-        /* h0 and what follows it are held until its fourth byte, whatever they are (a length
-         * error comes with the fourth byte) */
-        {"8A", 255, 1},          {"8A 5E", 255, 2},       {"8A 5E 48", 255, 3},    {"8A 5E 47", 255, 3},
-        {"8A 5E 55", 255, 3},    {"8A 5E 55", 84, 3},     {"8A 5E 00", 84, 3},     {"8A 8A", 255, 2},
-        {"8A 5E 8A", 255, 3},    {"8A 5E 48 00", 255, 4}, {"8A 5E 48 01", 255, 0}, {"8A 5E 55 00", 84, 0},
-        {"5E 48 00", 255, 0},    {"8A 11", 255, 2},       {"8A 11 22", 255, 3},    {"8A 5E FF 00", 255, 4},
-        {"8A 5E 8A 5E", 84, 2},  {"8A 5E 8A 5E", 255, 2}, {"8A 8A 5E", 255, 3},    {"11 8A 5E", 84, 2},
-        {"8A 11 22 33", 255, 0}, {"8A 11 8A 33", 255, 2},
+        {"8A", 255, 3},          {"8A 5E", 255, 3},       {"8A 5E 48", 255, 3},    {"8A 5E 55", 84, 3},
+        {"8A 5E 48 00", 255, 4}, {"8A 5E 48 01", 255, 3}, {"8A 5E 55 00", 84, 3},  {"8A 5E FF 00", 255, 4},
+        {"8A 5E FF 00 11", 255, 5}, {"5E 48 00", 255, 3}, {"8A 5E 8A 5E", 255, 3}, {"11 8A 5E", 84, 3},
+        {"", 255, 3},
     };
     size_t i;
     (void)state;
@@ -451,9 +450,9 @@ static void test_floor(void **state)
     check_identities(&s, &m, 255);
     assert_int_equal(m.at[72].frames, 1);
     assert_int_equal(m.at[72].pending, 0);
-    assert_int_equal(m.at[75].pending, 0);
+    assert_int_equal(m.at[75].pending, 3); /* 5E 48 00: held, as any last three bytes */
     assert_int_equal(m.final.crc_errors + m.final.length_errors + m.final.given_up, 0);
-    assert_int_equal(m.final.bytes_skipped, 83);
+    assert_int_equal(m.final.bytes_skipped, 80);
     pr_free(&m);
 }
 
@@ -526,7 +525,7 @@ int main(void)
         cmocka_unit_test(test_flipped_bit),
         cmocka_unit_test(test_frame_inside_false_candidate),
         cmocka_unit_test(test_length_errors),
-        cmocka_unit_test(test_k_plus_one_false),
+        cmocka_unit_test(test_first_come_first_served),
         cmocka_unit_test(test_k_false_ending_sooner),
         cmocka_unit_test(test_same_end),
         cmocka_unit_test(test_truncated_then_intact),
