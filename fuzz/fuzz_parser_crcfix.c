@@ -258,10 +258,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
     }
     /* Run A: 300 zero bytes end the stream, so every candidate has ended:
-     * only the last three zeros stay held (they might begin a header). Run B: the stream stops dead after the last item,
-     * and xf_parser_flush() drops what is held; the frames are run A's that
-     * end within the stream (a frame comes out at its own last byte, whatever
-     * follows it). */
+     * only the last three zeros stay held (they might begin a header). Run B: the stream stops dead after the last
+     * item, and xf_parser_flush() drops what is held; the frames are run A's that end within the stream (a frame comes
+     * out at its own last byte, whatever follows it). */
     memset(stream + n, 0, TAIL_ZEROS);
     dump_stream(stream, n + TAIL_ZEROS);
 

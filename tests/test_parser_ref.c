@@ -274,7 +274,7 @@ static void test_first_come_first_served(void **state)
         assert_int_equal(m.final.given_up, 1);
         assert_int_equal(m.nframes, 0);
         assert_int_equal(m.final.crc_errors + m.final.length_errors, 0); /* none ends in the stream */
-        assert_int_equal(m.at[s.n].pending, s.n);                          /* held from the first */
+        assert_int_equal(m.at[s.n].pending, s.n);                        /* held from the first */
         assert_int_equal(m.final.bytes_skipped, s.n);
         pr_free(&m);
 
@@ -400,9 +400,10 @@ static void test_held_prefixes(void **state)
         unsigned max;
         uint32_t pending;
     } cases[] = {
-        {"8A", 255, 3},          {"8A 5E", 255, 3},       {"8A 5E 48", 255, 3},    {"8A 5E 55", 84, 3},
-        {"8A 5E 48 00", 255, 4}, {"8A 5E 48 01", 255, 3}, {"8A 5E 55 00", 84, 3},  {"8A 5E FF 00", 255, 4},
-        {"8A 5E FF 00 11", 255, 5}, {"5E 48 00", 255, 3}, {"8A 5E 8A 5E", 255, 3}, {"11 8A 5E", 84, 3},
+        {"8A", 255, 3},         {"8A 5E", 255, 3},       {"8A 5E 48", 255, 3},
+        {"8A 5E 55", 84, 3},    {"8A 5E 48 00", 255, 4}, {"8A 5E 48 01", 255, 3},
+        {"8A 5E 55 00", 84, 3}, {"8A 5E FF 00", 255, 4}, {"8A 5E FF 00 11", 255, 5},
+        {"5E 48 00", 255, 3},   {"8A 5E 8A 5E", 255, 3}, {"11 8A 5E", 84, 3},
         {"", 255, 3},
     };
     size_t i;

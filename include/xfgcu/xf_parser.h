@@ -331,7 +331,7 @@ static void xf__admit(xf_parser *p, unsigned len)
         p->at[k] = XF__IX(p->end - 4u);
     }
     p->n++;
-    p->next = (uint8_t)xf__fin(p, 0); /* head stays: the new candidate began last */
+    p->next = (uint8_t)xf__fin(p, 0);     /* head stays: the new candidate began last */
     p->stats.given_up += (p->n == XF__K); /* deaf to headers until a slot is free */
     XF_ASSERT(p->n <= XF__K && xf__len(p, k) == len);
 }
@@ -557,40 +557,54 @@ static inline int xf__tail(const xf_parser *p)
     return r[XF__IX(e - 1u)] == h0 || r[XF__IX(e - 2u)] == h0 || r[XF__IX(e - 3u)] == h0;
 }
 
+/* No candidate, at d[*i]: when the bytes held are d's last three, give
+ * them back, so that the idle path sees whatever header they begin. */
+static size_t *xf__give_back(xf_parser *p, size_t *i)
+{
+    if (*i >= 3u) {
+        XF_ASSERT(xf__held(p) <= 3u);
+        *i -= xf__held(p);
+        p->head = 0;
+        p->end = 0;
+        p->next = 4;
+    }
+    return i;
+}
+
+/* Candidates pending, at d[i]: store the bytes before candidate 0's last
+ * and before the first valid header among them (its bad lengths counted),
+ * and return the index of the byte that needs the byte path, or n. Every
+ * slot taken: no header is looked at. The search begins three bytes back,
+ * at pairs begun before i. */
+static size_t xf__run(xf_parser *p, const uint8_t *d, size_t i, size_t n)
+{
+    size_t r = n - i, left = xf__left(p, 0) - 1u, k;
+    r = i + ((r < left) ? r : left);
+    k = (p->n == XF__K) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
+    xf__copy(p, d + i, k - i);
+    return k;
+}
+
 /* The main loop: take bytes until a frame is complete (1) or all are taken
  * (0). A byte goes through the byte path when it ends candidate 0, completes
  * a valid header, or may complete a pair begun among the bytes held; runs
  * between are searched for pairs in d and copied. */
 static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_frame *frame)
 {
-    size_t i = 0;
+    size_t i = 0, k;
     while (i < n) {
-        size_t k = i;
         if (i < 3u && p->n < XF__K && xf__tail(p)) {
-            /* a pair begun before d may end here: the byte path for d[i] */
-        } else if (p->n == 0u) {
-            if (i >= 3u) {
-                /* the bytes held are d's last three: give them back, so that the
-                 * idle path sees whatever header they begin */
-                XF_ASSERT(xf__held(p) <= 3u);
-                i -= xf__held(p);
-                p->head = 0;
-                p->end = 0;
-                p->next = 4;
-            }
-            if (xf__idle(p, d, n, &i, frame)) {
-                *used = i;
-                return 1;
-            }
-            continue;
+            k = i; /* a pair begun before d may end here: the byte path */
+        } else if (p->n > 0u) {
+            k = xf__run(p, d, i, n);
+        } else if (xf__idle(p, d, n, xf__give_back(p, &i), frame)) {
+            *used = i;
+            return 1;
         } else {
-            size_t r = n - i, left = xf__left(p, 0) - 1u; /* bytes before candidate 0's last */
-            r = i + ((r < left) ? r : left);
-            k = (p->n == XF__K) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
-            xf__copy(p, d + i, k - i);
-            if (k == n) {
-                break;
-            }
+            continue;
+        }
+        if (k == n) {
+            break;
         }
         i = k + 1u;
         if (xf__byte(p, d[k], frame)) {
