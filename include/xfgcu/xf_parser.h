@@ -337,16 +337,15 @@ static void xf__admit(xf_parser *p, unsigned len)
 }
 
 /* The last byte held completes a header pair, and a slot is free: a bad
- * length is counted; a valid one is admitted (1). */
-static int xf__header(xf_parser *p)
+ * length is counted; a valid one is admitted. */
+static void xf__header(xf_parser *p)
 {
     unsigned len = p->ring[XF__IX(p->end - 2u)] | ((unsigned)p->ring[XF__IX(p->end - 1u)] << 8);
-    if (!xf__len_ok(len)) {
+    if (xf__len_ok(len)) {
+        xf__admit(p, len);
+    } else {
         p->stats.length_errors++;
-        return 0;
     }
-    xf__admit(p, len);
-    return 1;
 }
 
 /* Reverse r[i, j). Three reversals rotate the ring: a frame that wraps round
@@ -408,8 +407,9 @@ XF__COLD int xf__look(xf_parser *p, int pair, xf_frame *frame)
     if (xf__ends(p, frame)) {
         return 1;
     }
-    if (pair && p->n < XF__K) {
-        (void)xf__header(p);
+    XF_ASSERT(p->n < XF__K); /* the candidate that ended here freed its slot */
+    if (pair) {
+        xf__header(p);
     }
     xf__settle(p);
     return 0;
@@ -433,10 +433,12 @@ static inline int xf__step(xf_parser *p, uint8_t b, int pair, xf_frame *frame)
     if (p->end == p->next && p->n > 0u) {
         return xf__look(p, pair, frame);
     }
-    if (pair && p->n < XF__K && xf__header(p)) {
-        /* admitted */
-    } else if (p->n == 0u && p->end == p->next) {
-        xf__trim(p);
+    XF_ASSERT(!pair || p->n < XF__K); /* callers give a pair only when a slot is free */
+    if (pair) {
+        xf__header(p);
+    }
+    if (p->n == 0u && p->end == p->next) {
+        xf__trim(p); /* no candidate (a bad length, or none): four bytes held */
     }
     return 0;
 }
