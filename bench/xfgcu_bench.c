@@ -16,7 +16,7 @@
  *                                          shorter stream is a prefix of a longer one);
  *                                          prints the number of intact frames first.
  *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
- *                                          | pairs | cpairs
+ *                                          | pairs | cpairs | mixed
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -62,6 +62,8 @@
  *                bytes, no candidate ever
  *   cpairs       8A 5E FF 00 and 125 pairs and an 8A, repeated: the pairs inside a
  *                pending candidate (a 255-byte claim that ends where the next begins)
+ *   mixed        three 72-byte claims 24 bytes apart with pairs between them, repeated:
+ *                a candidate checked every 24 bytes and a bad length every two
  *   Which crafted stream costs most depends on the parser: bench.sh's table says.
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
@@ -232,11 +234,12 @@ typedef enum xb_kind {
     XB_H0RUN,
     XB_PAIRS,
     XB_CPAIRS,
+    XB_MIXED,
     XB_KINDS
 } xb_kind;
 
-static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense", "uart4",
-                                                    "uart3", "storm", "h0run",       "pairs", "cpairs"};
+static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense",  "uart4", "uart3",
+                                                    "storm", "h0run", "pairs",       "cpairs", "mixed"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -396,6 +399,18 @@ static void xb_generate(xb_kind kind, xb_out *o)
         case XB_STORM: xb_false_cand(o, XF_GCU_HEADER0); break; /* 8A 5E 8A 00: its length byte is an h0 too */
         case XB_H0RUN: xb_put1(o, XF_GCU_HEADER0); break;
         case XB_PAIRS: xb_pair(o); break;
+        case XB_MIXED: {
+            /* three claims of the shortest length, pairs between them: a check every 24
+             * bytes and a bad length every two */
+            size_t k;
+            for (k = 0; k < 3u; k++) {
+                xb_false_cand(o, XF_PACKET_MIN_LEN);
+                for (i = 0; i < ((k < 2u) ? 10u : 6u); i++) {
+                    xb_pair(o);
+                }
+            }
+            break;
+        }
         case XB_CPAIRS: {
             /* a 255-byte candidate filled with pairs; the next one begins where it ends */
             xb_false_cand(o, 255);
@@ -689,17 +704,18 @@ static void xb_print_delay(const xb_delay_result *dr)
 
 static int xb_usage(void)
 {
-    fprintf(stderr,
-            "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-            "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-            "       xfgcu_bench crc FILE [--chunk N]\n"
-            "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs N_BYTES FILE\n"
-            "       xfgcu_bench pack N | unpack N\n"
-            "       xfgcu_bench time KIND N_BYTES [REPS]\n"
-            "       xfgcu_bench selftest\n"
-            "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-            " default 4096; parse prints the frames found first, then the counters and\n"
-            " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+    fprintf(
+        stderr,
+        "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
+        "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
+        "       xfgcu_bench crc FILE [--chunk N]\n"
+        "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed N_BYTES FILE\n"
+        "       xfgcu_bench pack N | unpack N\n"
+        "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+        "       xfgcu_bench selftest\n"
+        "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
+        " default 4096; parse prints the frames found first, then the counters and\n"
+        " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
     return 2;
 }
 

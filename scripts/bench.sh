@@ -5,7 +5,7 @@
 #   scripts/bench.sh            build (gcc -O2, Release) with the nibble CRC table and with
 #                               XFGCU_CRC_TABLE_256=ON in build/bench/, generate the streams,
 #                               print the tables. One to two minutes on a 2-core machine
-#                               (2 x 10 x 4 callgrind runs over 3 MiB; the crafted streams
+#                               (2 x 11 x 4 callgrind runs over 3 MiB; the crafted streams
 #                               are the slowest).
 #   scripts/bench.sh profile    the same builds with -g: where the instructions go, per
 #                               function of the headers (inlined code included), for the
@@ -71,7 +71,7 @@ build "nibble$suffix" OFF
 build "t256$suffix" ON
 
 # valid first: the other rows are compared with it
-kinds=(valid noisy uart4 uart3 adversarial dense storm h0run pairs cpairs)
+kinds=(valid noisy uart4 uart3 adversarial dense storm h0run pairs cpairs mixed)
 chunks=(1 16 64 4096)
 MiB=1048576
 streams="$bdir/streams"

@@ -13,9 +13,10 @@
  * they end, with one running CRC for all of them, and checks each when its
  * last byte arrives: the first intact one is returned at once, and the
  * others, which overlap it, are dropped. So a frame behind noise, a
- * truncated packet, a false header or a bogus length comes out on time. A
- * candidate that arrives while every slot holds one that ends sooner is
- * given up unchecked (stats.given_up); docs/codec.md states the exact rule.
+ * truncated packet, a false header or a bogus length comes out on time.
+ * First come, first served: while every slot is taken, no header is looked
+ * at, so a frame that begins then is lost (stats.given_up counts the times
+ * the slots filled); docs/codec.md states the exact rules.
  *
  * Counters only ever increase (the application may zero them):
  *
@@ -54,7 +55,7 @@ typedef struct xf_parser_stats {
     uint32_t crc_errors;    /**< candidates (header and valid length) whose CRC failed */
     uint32_t length_errors; /**< header pairs followed by a length outside [72, XF_PACKET_MAX_LEN] */
     uint32_t bytes_skipped; /**< bytes dropped as part of no valid frame */
-    uint32_t given_up;      /**< candidates given up unchecked: every slot held one that ends sooner */
+    uint32_t given_up;      /**< times a candidate took the last free slot (headers are then not looked at) */
 } xf_parser_stats;
 
 /** Parser state. Treat the members as private except `stats`. */
