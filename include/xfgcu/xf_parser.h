@@ -676,11 +676,17 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
  * a slot free. */
 XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
-    p->stats.bytes_in++;
-    if (consumed != NULL) {
-        *consumed = 1;
+    unsigned e = p->end, len = p->ring[XF__IX(e - 1u)] | ((unsigned)b << 8);
+    if (xf__len_ok(len) || (XF__IX(e + 1u) == p->next && p->n > 0u) || xf__held(p) < 3u) {
+        return xf__feed1(p, b, consumed, frame);
     }
-    return (xf_parse_status)xf__step(p, b, xf__held(p) >= 3u, frame);
+    /* a bad length that ends no candidate: counted, and with no candidate
+     * the fourth byte held pushes the first out */
+    p->stats.length_errors++;
+    if (XF__IX(e + 1u) == p->next) {
+        xf__trim(p);
+    }
+    return xf__store1(p, b, consumed);
 }
 
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
