@@ -60,11 +60,12 @@ typedef struct xf_parser_stats {
 
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
-    uint8_t ring[XF_PARSER_RING];   /**< private: bytes held, each at ring index = stream position mod XF_PARSER_RING */
+    uint8_t ring[XF_PARSER_RING];   /**< private: bytes held, in order from `head` (a ring: indices wrap) */
     xf_parser_stats stats;          /**< counters, readable at any time; the application may zero them */
     uint16_t want[XF_PARSER_SLOTS]; /**< private: per candidate, what `crc` must be at its end, before the shift
                                        (docs/codec.md) */
-    uint16_t crc;                   /**< private: CRC of the bytes from the first pending candidate's start to `sum` */
+    uint16_t crc;                   /**< private: CRC of the bytes from the start of the first candidate admitted
+                                       since none was pending, up to `sum` */
     uint8_t at[XF_PARSER_SLOTS];    /**< private: ring index of each candidate's first byte, soonest end first */
     uint8_t next;                   /**< private: ring index just past the next byte that needs a look */
     uint8_t head;                   /**< private: ring index of the first byte held */
@@ -321,7 +322,7 @@ static void xf__admit(xf_parser *p, unsigned len)
         p->sum = 2; /* xf__sum() takes the CRC on from the length bytes */
         p->want[0] = 0;
         p->at[0] = 0;
-    } else {
+    } else if (k < XF__K) { /* (always: a slot is free; the bound is for the compiler) */
         c = xf__crc_step(xf__crc_step((uint32_t)pair << 16, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
         xf__sum(p);
         for (; k > 0u && k < XF__K && xf__left(p, k - 1u) > left; k--) {
@@ -509,11 +510,12 @@ static void xf__keep(xf_parser *p, const uint8_t *d, size_t m)
 }
 
 /* No candidate, and no h0 among the bytes held: the first header in
- * d[*i, n) with a valid length. None: d's last bytes are held (0). A whole
- * packet there with no other header pair inside, so that no other
- * candidate can begin or end before it ends: intact, it is returned from d
- * itself with no copy (1); damaged, it is counted and skipped but for its
- * last three bytes. Else its candidate opens. */
+ * d[*i, n) with a valid length (the bad ones before it counted). None: d's
+ * last bytes are held (0). A whole packet there with no valid header inside
+ * and no pair ending on its last byte, so that no other candidate can begin
+ * or end before it ends: intact, it is returned from d itself with no copy
+ * (1); damaged, it is counted and skipped but for its last three bytes (the
+ * bad lengths inside counted either way). Else its candidate opens. */
 static int xf__idle(xf_parser *p, const uint8_t *d, size_t n, size_t *i, xf_frame *frame)
 {
     size_t k = xf__scan(p, d, *i, n, &p->stats.length_errors), s, end;
