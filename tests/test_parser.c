@@ -999,8 +999,13 @@ static void test_adversarial_lengths(void **state)
     }
     check_output(&h, &s, &m);
     if (XF_PACKET_MAX_LEN == 255) {
-        assert_int_equal(h.nframes, 1);
-        assert_bytes_equal(h.out, g, gl);
+        /* the second frame always comes out, last; the first only if its header found a slot
+         * free, which with few slots it does not */
+        assert_true(h.nframes >= 1u && h.out_len >= gl);
+        assert_bytes_equal(h.out + h.out_len - gl, g, gl);
+        if (XF_PARSER_SLOTS <= 4) {
+            assert_int_equal(h.nframes, 1);
+        }
         assert_true(h.p.stats.given_up >= 1u);
         assert_true(h.p.stats.crc_errors >= 16384u * 4u / 255u); /* at least one claim at a time */
     } else {
