@@ -679,11 +679,17 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
 XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
     unsigned e = p->end, len = p->ring[XF__IX(e - 1u)] | ((unsigned)b << 8);
-    if (xf__len_ok(len) || (XF__IX(e + 1u) == p->next && p->n > 0u) || xf__held(p) < 3u) {
-        return xf__feed1(p, b, consumed, frame);
+    xf_parse_status r;
+    if ((XF__IX(e + 1u) == p->next && p->n > 0u) || xf__held(p) < 3u) {
+        return xf__feed1(p, b, consumed, frame); /* a candidate's end first, or stale ring bytes */
     }
-    /* a bad length that ends no candidate: counted, and with no candidate
-     * the fourth byte held pushes the first out */
+    if (xf__len_ok(len)) {
+        r = xf__store1(p, b, consumed); /* a header that ends no candidate: admitted */
+        xf__admit(p, len);
+        return r;
+    }
+    /* a bad length: counted, and with no candidate the fourth byte held
+     * pushes the first out */
     p->stats.length_errors++;
     if (XF__IX(e + 1u) == p->next) {
         xf__trim(p);
