@@ -628,17 +628,18 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     size_t used = 0, m = 0;
     int found = 0;
     if (len > 0u && p->n > 0u && !xf__tail(p)) {
-        /* Inside a frame, the commonest chunk: with no h0 before candidate
-         * 0's last byte, the bytes are only stored, and that byte checks it. */
+        /* Inside a frame, the commonest chunk: the bytes before candidate
+         * 0's last and before the first h0 are only stored (no pair can end
+         * among them); with no h0, that last byte checks the candidate. The
+         * main loop takes the rest from the h0 on, with no second search. */
         size_t left = xf__left(p, 0);
+        const uint8_t *hit;
         m = (len < left) ? len : left - 1u;
-        if (XF_MEMCHR(data, p->h0, m) != NULL) {
-            m = 0;
-        } else {
-            xf__copy(p, data, m);
-            if (len >= left) {
-                found = xf__byte(p, data[m++], frame);
-            }
+        hit = (const uint8_t *)XF_MEMCHR(data, p->h0, m);
+        m = (hit != NULL) ? (size_t)(hit - data) : m;
+        xf__copy(p, data, m);
+        if (hit == NULL && len >= left) {
+            found = xf__byte(p, data[m++], frame);
         }
     }
     if (!found && m < len) {
