@@ -238,14 +238,21 @@ static inline unsigned xf__h1(const xf_parser *p)
 
 XF_API size_t xf_parser_pending(const xf_parser *p) { return (p == NULL) ? 0u : xf__held(p); }
 
-/* Drop everything held. Ring index 0 again, so that frames on a clean link never wrap. */
-static inline void xf__clear(xf_parser *p)
+/* Nothing held, no candidate, from ring index 0 (a frame held from there cannot wrap); the
+ * fourth byte is the first that may complete a header. Counts nothing. */
+static inline void xf__empty(xf_parser *p)
 {
-    p->stats.bytes_skipped += xf__held(p);
     p->n = 0;
     p->head = 0;
     p->end = 0;
     p->next = 4;
+}
+
+/* Drop everything held. */
+static inline void xf__clear(xf_parser *p)
+{
+    p->stats.bytes_skipped += xf__held(p);
+    xf__empty(p);
 }
 
 XF_API void xf_parser_reset(xf_parser *p)
@@ -378,10 +385,7 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     }
     frame->data = p->ring + i0;
     frame->len = len;
-    p->n = 0;
-    p->head = 0;
-    p->end = 0;
-    p->next = 4;
+    xf__empty(p);
 }
 
 /* The last byte held ends candidate 0, and maybe others: check them in
@@ -426,6 +430,19 @@ static inline void xf__trim(xf_parser *p)
     p->stats.bytes_skipped++;
 }
 
+/* After a byte that ends no candidate: the header pair it completes
+ * (pair), then, with no candidate and four bytes held, the first goes. */
+static inline void xf__no_end(xf_parser *p, int pair)
+{
+    XF_ASSERT(!pair || p->n < XF__K); /* callers give a pair only when a slot is free */
+    if (pair) {
+        xf__header(p);
+    }
+    if (p->n == 0u && p->end == p->next) {
+        xf__trim(p); /* no candidate (a bad length, or none): four bytes held */
+    }
+}
+
 /* One byte, through every rule (pair: it completes a header pair). 1 when
  * it completes a frame. */
 static inline int xf__step(xf_parser *p, uint8_t b, int pair, xf_frame *frame)
@@ -435,13 +452,7 @@ static inline int xf__step(xf_parser *p, uint8_t b, int pair, xf_frame *frame)
     if (p->end == p->next && p->n > 0u) {
         return xf__look(p, pair, frame);
     }
-    XF_ASSERT(!pair || p->n < XF__K); /* callers give a pair only when a slot is free */
-    if (pair) {
-        xf__header(p);
-    }
-    if (p->n == 0u && p->end == p->next) {
-        xf__trim(p); /* no candidate (a bad length, or none): four bytes held */
-    }
+    xf__no_end(p, pair);
     return 0;
 }
 
@@ -500,8 +511,7 @@ static void xf__keep(xf_parser *p, const uint8_t *d, size_t m)
 {
     if (m >= 3u) {
         p->stats.bytes_skipped += xf__held(p) + (uint32_t)(m - 3u);
-        p->head = 0;
-        p->end = 0;
+        xf__empty(p);
         d += m - 3u;
         m = 3;
     }
@@ -528,9 +538,7 @@ static int xf__idle(xf_parser *p, const uint8_t *d, size_t n, size_t *i, xf_fram
     s = k - 3u;
     end = s + d[k - 1u];
     p->stats.bytes_skipped += xf__held(p) + (uint32_t)(s - *i);
-    p->head = 0;
-    p->end = 0;
-    p->next = 4;
+    xf__empty(p);
     *i = k + 1u;
     if (end <= n && (XF__K == 1 || xf__scan(p, d, k + 1u, end - 1u, &errors) == end - 1u) &&
         (d[end - 4u] != p->h0 || d[end - 3u] != xf__h1(p))) {
@@ -569,9 +577,7 @@ static size_t *xf__give_back(xf_parser *p, size_t *i)
     if (*i >= 3u) {
         XF_ASSERT(xf__held(p) <= 3u);
         *i -= xf__held(p);
-        p->head = 0;
-        p->end = 0;
-        p->next = 4;
+        xf__empty(p); /* (nothing skipped: those bytes are taken again) */
     }
     return i;
 }
@@ -679,23 +685,13 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
  * a slot free. */
 XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
-    unsigned e = p->end, len = p->ring[XF__IX(e - 1u)] | ((unsigned)b << 8);
     xf_parse_status r;
-    if ((XF__IX(e + 1u) == p->next && p->n > 0u) || xf__held(p) < 3u) {
+    if ((XF__IX(p->end + 1u) == p->next && p->n > 0u) || xf__held(p) < 3u) {
         return xf__feed1(p, b, consumed, frame); /* a candidate's end first, or stale ring bytes */
     }
-    if (xf__len_ok(len)) {
-        r = xf__store1(p, b, consumed); /* a header that ends no candidate: admitted */
-        xf__admit(p, len);
-        return r;
-    }
-    /* a bad length: counted, and with no candidate the fourth byte held
-     * pushes the first out */
-    p->stats.length_errors++;
-    if (XF__IX(e + 1u) == p->next) {
-        xf__trim(p);
-    }
-    return xf__store1(p, b, consumed);
+    r = xf__store1(p, b, consumed); /* the byte path without its tests for an end and a pair */
+    xf__no_end(p, 1);
+    return r;
 }
 
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
