@@ -155,7 +155,7 @@ M = [
      '        if (0) {'),
     ('no_give_back',
      'hunting, the bytes held are not given back to the idle path (pairs they begin are missed)',
-     '    if (*i >= 3u) {\n        XF_ASSERT(xf__held(p) <= 3u);',
+     '    if (i >= 3u) {\n        XF_ASSERT(xf__held(p) <= 3u);',
      '    if (0) {\n        XF_ASSERT(xf__held(p) <= 3u);'),
     ('direct_no_crc',
      'a whole packet in the chunk is returned without its CRC checked',

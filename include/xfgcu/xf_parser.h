@@ -570,13 +570,14 @@ static inline int xf__tail(const xf_parser *p)
     return r[XF__IX(e - 1u)] == h0 || r[XF__IX(e - 2u)] == h0 || r[XF__IX(e - 3u)] == h0;
 }
 
-/* No candidate, at d[*i]: when the bytes held are d's last three, give
- * them back, so that the idle path sees whatever header they begin. */
-static size_t *xf__give_back(xf_parser *p, size_t *i)
+/* No candidate, at d[i]: when the bytes held are d's last three, give
+ * them back (the new i), so that the idle path sees whatever header they
+ * begin. */
+static size_t xf__give_back(xf_parser *p, size_t i)
 {
-    if (*i >= 3u) {
+    if (i >= 3u) {
         XF_ASSERT(xf__held(p) <= 3u);
-        *i -= xf__held(p);
+        i -= xf__held(p);
         xf__empty(p); /* (nothing skipped: those bytes are taken again) */
     }
     return i;
@@ -608,10 +609,12 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_f
             k = i; /* a pair begun before d may end here: the byte path */
         } else if (p->n > 0u) {
             k = xf__run(p, d, i, n);
-        } else if (xf__idle(p, d, n, xf__give_back(p, &i), frame)) {
-            *used = i;
-            return 1;
         } else {
+            i = xf__give_back(p, i);
+            if (xf__idle(p, d, n, &i, frame)) {
+                *used = i;
+                return 1;
+            }
             continue;
         }
         if (k == n) {
