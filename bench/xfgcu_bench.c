@@ -12,6 +12,9 @@
  *                                          parse + xf_frame_gcu (no second CRC) + xf_feedback_decode
  *   xfgcu_bench crc FILE [--chunk N]       the CRC floor: xf_crc16_update over the same bytes
  *                                          in the same chunking; prints the CRC
+ *   xfgcu_bench floor FILE [--chunk N]     the floor under any parser (xb_floor_feed): search,
+ *                                          store and CRC, one frame at a time; prints the
+ *                                          frames found first (all of them on valid only)
  *   xfgcu_bench gen KIND N_BYTES FILE      write an N_BYTES test stream (deterministic; a
  *                                          shorter stream is a prefix of a longer one);
  *                                          prints the number of intact frames first.
@@ -23,11 +26,12 @@
  *                                          stream, 4096-byte chunks (informative only)
  *   xfgcu_bench selftest                   generate every kind and parse it in memory in
  *                                          several chunkings; exit 1 if the parser misses
- *                                          an intact frame of valid, noisy, uart4 or uart3
+ *                                          an intact frame of valid, noisy, uart4 or uart3,
+ *                                          or the floor one of valid
  *
  * N_BYTES, N and the chunk accept a k or m suffix (KiB, MiB). The measured
  * functions (callgrind --toggle-collect, scripts/bench.sh) are xb_parse (parse,
- * decode), xb_crc, xb_pack and xb_unpack; nothing else runs inside them.
+ * decode), xb_crc, xb_floor_feed, xb_pack and xb_unpack; nothing else runs inside them.
  *
  * worst_delay: the parser promises no added latency, an intact frame comes out
  * of the feed call that hands over its last byte. A separate run (xb_delay, the
@@ -492,6 +496,99 @@ XB_NOINLINE uint16_t xb_crc(const uint8_t *d, size_t n, size_t chunk)
     return crc;
 }
 
+/* ---- the floor under any parser (measured) --------------------------------
+ * What every parser that keeps the rules must do at least on the valid
+ * stream (back-to-back intact frames), and nothing more: search every byte
+ * for an h0 (a header may begin anywhere), store every byte of a frame that
+ * spans calls, CRC every byte of a frame, return each frame from the call
+ * that feeds its last byte (in place when it lies whole in the chunk). It
+ * follows one frame at a time and trusts the stream: a header inside a
+ * frame is ignored, and after a CRC failure it hunts for the next h0. A
+ * reference for the parser's figures at 16 bytes per call and more
+ * (bench.sh's floor row), not a parser; at one byte per call a search per
+ * call makes it dearer than the parser. */
+typedef struct xb_floor {
+    uint8_t buf[256];
+    size_t have; /* bytes of the current frame held */
+    size_t hits; /* frames with an h0 inside (so that the searches are not optimised away) */
+} xb_floor;
+
+XB_NOINLINE int xb_floor_feed(xb_floor *s, const uint8_t *d, size_t n, size_t *used, xf_frame *f);
+
+/* A frame completed in s->buf: returned when intact (1). */
+static int xb_floor_end(xb_floor *s, size_t len, xf_frame *f)
+{
+    s->have = 0;
+    if (xf_crc16(s->buf, len) != 0u) {
+        return 0;
+    }
+    f->data = s->buf;
+    f->len = len;
+    return 1;
+}
+
+/* Take bytes of d[0, n) (*used: how many, at least 1 when n > 0) up to the
+ * end of a frame; 1 with *f set when an intact frame ends there. */
+XB_NOINLINE int xb_floor_feed(xb_floor *s, const uint8_t *d, size_t n, size_t *used, xf_frame *f)
+{
+    size_t i = 0, len, take;
+    if (s->have == 0u) { /* between frames: the next h0 */
+        const uint8_t *h = (const uint8_t *)memchr(d, XF_GCU_HEADER0, n);
+        *used = n;
+        if (h == NULL) {
+            return 0;
+        }
+        i = (size_t)(h - d);
+        len = (n - i >= 3u) ? d[i + 2u] : 0u;
+        if (len >= XF_PACKET_MIN_LEN && n - i >= len) { /* whole in the chunk: checked in place */
+            s->hits += memchr(d + i + 1u, XF_GCU_HEADER0, len - 1u) != NULL;
+            *used = i + len;
+            if (xf_crc16(d + i, len) != 0u) {
+                return 0;
+            }
+            f->data = d + i;
+            f->len = len;
+            return 1;
+        }
+    }
+    for (; s->have < 3u && i < n; i++) { /* the header's first three bytes: its length */
+        s->buf[s->have++] = d[i];
+    }
+    *used = i;
+    if (s->have < 3u || s->buf[2] < XF_PACKET_MIN_LEN) {
+        s->have = (s->have < 3u) ? s->have : 0u;
+        return 0;
+    }
+    len = s->buf[2];
+    take = (n - i < len - s->have) ? n - i : len - s->have;
+    s->hits += memchr(d + i, XF_GCU_HEADER0, take) != NULL;
+    memcpy(s->buf + s->have, d + i, take);
+    s->have += take;
+    *used = i + take;
+    return (s->have == len) ? xb_floor_end(s, len, f) : 0;
+}
+
+/* Feed d[0..n) to the floor as xb_parse feeds the parser; the frames found. */
+static size_t xb_floor_run(const uint8_t *d, size_t n, size_t chunk, size_t *hits)
+{
+    xb_floor s;
+    size_t off, frames = 0;
+    s.have = 0;
+    s.hits = 0;
+    for (off = 0; off < n; off += chunk) {
+        const uint8_t *c = d + off;
+        size_t left = (n - off < chunk) ? (n - off) : chunk, used;
+        while (left > 0u) {
+            xf_frame f;
+            frames += (size_t)xb_floor_feed(&s, c, left, &used, &f);
+            c += used;
+            left -= used;
+        }
+    }
+    *hits = s.hits;
+    return frames;
+}
+
 /* ---- latency: where each returned frame ends (not measured) --------------- */
 
 typedef struct xb_delay_result {
@@ -709,6 +806,7 @@ static int xb_usage(void)
         "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
         "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
         "       xfgcu_bench crc FILE [--chunk N]\n"
+        "       xfgcu_bench floor FILE [--chunk N]\n"
         "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed N_BYTES FILE\n"
         "       xfgcu_bench pack N | unpack N\n"
         "       xfgcu_bench time KIND N_BYTES [REPS]\n"
@@ -774,6 +872,20 @@ static int xb_cmd_crc(const char *path, size_t chunk)
     }
     crc = xb_crc(d, n, chunk);
     printf("crc=0x%04X over %lu bytes in chunks of %lu\n", (unsigned)crc, (unsigned long)n, (unsigned long)chunk);
+    free(d);
+    return 0;
+}
+
+static int xb_cmd_floor(const char *path, size_t chunk)
+{
+    size_t n = 0, hits, frames;
+    uint8_t *d = xb_read_file(path, &n);
+    if (d == NULL) {
+        return 1;
+    }
+    frames = xb_floor_run(d, n, chunk, &hits);
+    printf("%lu frames (floor; %lu with an h0 inside) in %lu bytes in chunks of %lu\n", (unsigned long)frames,
+           (unsigned long)hits, (unsigned long)n, (unsigned long)chunk);
     free(d);
     return 0;
 }
@@ -886,6 +998,14 @@ static int xb_cmd_selftest(void)
                 bad = 1;
             }
         }
+        for (c = 0; k == (int)XB_VALID && c < nchunks; c++) {
+            size_t hits, found = xb_floor_run(o.d, o.n, chunks[c], &hits);
+            if (found != o.frames) { /* the floor row of bench.sh would measure something else */
+                printf("selftest valid, chunk %lu: the floor found %lu frames of %lu\n", (unsigned long)chunks[c],
+                       (unsigned long)found, (unsigned long)o.frames);
+                bad = 1;
+            }
+        }
         /* res: the last chunking, 4096 */
         printf("selftest %-12s inserted %6lu found %6lu", xb_kind_names[k], (unsigned long)o.frames,
                (unsigned long)res.frames);
@@ -914,6 +1034,9 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "crc") == 0 && argc >= 3 && xb_options(argc, argv, 3, 0, &chunk, &delay) == 0) {
         return xb_cmd_crc(argv[2], chunk);
+    }
+    if (strcmp(argv[1], "floor") == 0 && argc >= 3 && xb_options(argc, argv, 3, 0, &chunk, &delay) == 0) {
+        return xb_cmd_floor(argv[2], chunk);
     }
     if (strcmp(argv[1], "gen") == 0 && argc == 5) {
         return xb_cmd_gen(argv[2], argv[3], argv[4]);
