@@ -513,16 +513,22 @@ typedef struct xb_floor {
 
 XB_NOINLINE int xb_floor_feed(xb_floor *s, const uint8_t *d, size_t n, size_t *used, xf_frame *f);
 
+/* The len bytes at d are a whole packet: returned when intact (1). */
+static int xb_floor_frame(const uint8_t *d, size_t len, xf_frame *f)
+{
+    if (xf_crc16(d, len) != 0u) {
+        return 0;
+    }
+    f->data = d;
+    f->len = len;
+    return 1;
+}
+
 /* A frame completed in s->buf: returned when intact (1). */
 static int xb_floor_end(xb_floor *s, size_t len, xf_frame *f)
 {
     s->have = 0;
-    if (xf_crc16(s->buf, len) != 0u) {
-        return 0;
-    }
-    f->data = s->buf;
-    f->len = len;
-    return 1;
+    return xb_floor_frame(s->buf, len, f);
 }
 
 /* A byte fed alone: a compare instead of a search. */
@@ -556,12 +562,7 @@ XB_NOINLINE static int xb_floor_chunk(xb_floor *s, const uint8_t *d, size_t n, s
         if (len >= XF_PACKET_MIN_LEN && n - i >= len) { /* whole in the chunk: checked in place */
             s->hits += memchr(d + i + 1u, XF_GCU_HEADER0, len - 1u) != NULL;
             *used = i + len;
-            if (xf_crc16(d + i, len) != 0u) {
-                return 0;
-            }
-            f->data = d + i;
-            f->len = len;
-            return 1;
+            return xb_floor_frame(d + i, len, f);
         }
     }
     for (; s->have < 3u && i < n; i++) { /* the header's first three bytes: its length */
@@ -978,6 +979,23 @@ static int xb_cmd_time(const char *kind_s, const char *size_s, const char *reps_
  * cpairs) the parser may give up candidates by design: found / inserted is
  * printed, not checked. The frames found in each chunking and the worst
  * delay are printed. */
+/* The floor finds every frame of the valid stream o at each chunk size; else
+ * bench.sh's floor row would measure something else (1). */
+static int xb_floor_selftest(const xb_out *o, const size_t *chunks, size_t nchunks)
+{
+    size_t c, hits;
+    int bad = 0;
+    for (c = 0; c < nchunks; c++) {
+        size_t found = xb_floor_run(o->d, o->n, chunks[c], &hits);
+        if (found != o->frames) {
+            printf("selftest valid, chunk %lu: the floor found %lu frames of %lu\n", (unsigned long)chunks[c],
+                   (unsigned long)found, (unsigned long)o->frames);
+            bad = 1;
+        }
+    }
+    return bad;
+}
+
 static int xb_cmd_selftest(void)
 {
     static const size_t chunks[] = {1, 7, 16, 64, 255, 4096};
@@ -1018,13 +1036,8 @@ static int xb_cmd_selftest(void)
                 bad = 1;
             }
         }
-        for (c = 0; k == (int)XB_VALID && c < nchunks; c++) {
-            size_t hits, found = xb_floor_run(o.d, o.n, chunks[c], &hits);
-            if (found != o.frames) { /* the floor row of bench.sh would measure something else */
-                printf("selftest valid, chunk %lu: the floor found %lu frames of %lu\n", (unsigned long)chunks[c],
-                       (unsigned long)found, (unsigned long)o.frames);
-                bad = 1;
-            }
+        if (k == (int)XB_VALID) {
+            bad |= xb_floor_selftest(&o, chunks, nchunks);
         }
         /* res: the last chunking, 4096 */
         printf("selftest %-12s inserted %6lu found %6lu", xb_kind_names[k], (unsigned long)o.frames,
