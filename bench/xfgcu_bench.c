@@ -12,7 +12,7 @@
  *                                          parse + xf_frame_gcu (no second CRC) + xf_feedback_decode
  *   xfgcu_bench crc FILE [--chunk N]       the CRC floor: xf_crc16_update over the same bytes
  *                                          in the same chunking; prints the CRC
- *   xfgcu_bench floor FILE [--chunk N]     the floor under any parser (xb_floor_feed): search,
+ *   xfgcu_bench floor FILE [--chunk N]     the floor (xb_floor_feed): only the search,
  *                                          store and CRC, one frame at a time; prints the
  *                                          frames found first (all of them on valid only)
  *   xfgcu_bench gen KIND N_BYTES FILE      write an N_BYTES test stream (deterministic; a
@@ -496,7 +496,7 @@ XB_NOINLINE uint16_t xb_crc(const uint8_t *d, size_t n, size_t chunk)
     return crc;
 }
 
-/* ---- the floor under any parser (measured) --------------------------------
+/* ---- the floor (measured) ------------------------------------------------
  * What every parser that keeps the rules must do at least on the valid
  * stream (back-to-back intact frames), and nothing more: search every byte
  * for an h0 (a header may begin anywhere), store every byte of a frame that
