@@ -59,9 +59,9 @@ defined=$(python3 - include/xfgcu/xf_parser.h include/xfgcu/xf_crc.h include/xfg
 import re, sys
 names = set()
 for path in sys.argv[1:]:
-    # a definition may begin with an attribute: __attribute__((noinline)) static ...
-    for m in re.finditer(r"^(?:__attribute__\(\([\w, ]+\)\)\s+)?(?:static|XF_API|XF__COLD)[^;{=(]*?\b(xf_\w+)\s*[(\[]",
-                         open(path).read(), re.M):
+    # any line at file level (not indented, a comment or a directive) that names an xf_
+    # function or table, whatever precedes the name (static, XF_API, an attribute ...)
+    for m in re.finditer(r"^(?![#/ *\t}])(?:[^;{=(]|\(\([^)]*\)\))*?\b(xf_\w+)\s*[(\[]", open(path).read(), re.M):
         names.add(m.group(1))
 print(" ".join(sorted(names)))
 PY
