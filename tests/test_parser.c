@@ -585,7 +585,8 @@ static void test_flush(void **state)
     assert_int_equal(xf_parser_flush(&p, NULL), XF_PARSE_ERR_ARG);
 }
 
-/* The constants the parser starts a candidate's CRC from. */
+/* The constants the parser starts a candidate's CRC from when it begins
+ * behind another (the CRC of its header pair). */
 static void test_pair_crc(void **state)
 {
     static const uint8_t gcu[2] = {XF_GCU_HEADER0, XF_GCU_HEADER1}, host[2] = {XF_HOST_HEADER0, XF_HOST_HEADER1};

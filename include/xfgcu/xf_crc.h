@@ -85,8 +85,13 @@ static inline uint32_t xf__crc_run(uint32_t c, const uint8_t *data, size_t len)
 {
     const uint32_t *table = xf__crc_table();
     size_t i = 0;
-    for (; i + 8u <= len; i += 8u) {
+    for (; i + 16u <= len; i += 16u) {
         c = xf__crc_word(xf__crc_word(c, table, data + i), table, data + i + 4u);
+        c = xf__crc_word(xf__crc_word(c, table, data + i + 8u), table, data + i + 12u);
+    }
+    if (i + 8u <= len) {
+        c = xf__crc_word(xf__crc_word(c, table, data + i), table, data + i + 4u);
+        i += 8u;
     }
     if (i + 4u <= len) {
         c = xf__crc_word(c, table, data + i);

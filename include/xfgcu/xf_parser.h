@@ -264,7 +264,7 @@ XF_API void xf_parser_reset(xf_parser *p)
 
 /* Bring crc up to the last byte held: bytes are stored first and CRC'd
  * only when a candidate needs it, four at a time (xf__crc_run). */
-static void xf__sum(xf_parser *p)
+static inline void xf__sum(xf_parser *p)
 {
     unsigned s = p->sum, e = p->end;
     uint32_t c = (uint32_t)p->crc << 16;
@@ -305,14 +305,24 @@ static void xf__shift(xf_parser *p)
     }
 }
 
+/* The first candidate since none was pending, its header held at ring index
+ * 0: its frame cannot wrap, the running CRC restarts at it, and want is 0. */
+static inline void xf__first(xf_parser *p)
+{
+    p->head = 0;
+    p->crc = 0;
+    p->sum = 0;
+    p->want[0] = 0;
+    p->at[0] = 0;
+}
+
 /* A header with a valid length ends with the last byte held, and a slot is
  * free: a new candidate, placed in order of end (after those that end with
  * it: they began earlier). Its `want` is what the CRC of everything before
  * it contributes at its end: the frame is intact exactly when the running
  * CRC then equals want * x^(8 (len - 4)) (xf__crc_zeros). Alone, it moves
- * to ring index 0 (its frame cannot wrap), the running CRC restarts at it
- * from its pair's constant, and want is 0. Taking the last slot counts in
- * given_up: until one is free again no header is looked at. */
+ * to ring index 0 (xf__first). Taking the last slot counts in given_up:
+ * until one is free again no header is looked at. */
 static void xf__admit(xf_parser *p, unsigned len)
 {
     unsigned left = len - 4u, k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
@@ -323,12 +333,8 @@ static void xf__admit(xf_parser *p, unsigned len)
         p->ring[1] = (uint8_t)xf__h1(p);
         p->ring[2] = (uint8_t)len;
         p->ring[3] = 0;
-        p->head = 0;
         p->end = 4;
-        p->crc = (uint16_t)pair;
-        p->sum = 2; /* xf__sum() takes the CRC on from the length bytes */
-        p->want[0] = 0;
-        p->at[0] = 0;
+        xf__first(p);
     } else if (k < XF__K) { /* (always: a slot is free; the bound is for the compiler) */
         c = xf__crc_step(xf__crc_step((uint32_t)pair << 16, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
         xf__sum(p);
@@ -519,46 +525,70 @@ static void xf__keep(xf_parser *p, const uint8_t *d, size_t m)
     xf__settle(p);
 }
 
+/* Nothing held, no candidate, and d begins with a header with a valid
+ * length (len): its candidate, the first. When no other header pair
+ * completes among its packet's bytes in d, they are taken at once: a packet
+ * whole in d is CRC'd where it lies and returned from d (1) or, damaged,
+ * counted and skipped but for its last three bytes; else its candidate
+ * opens at ring index 0 with all of d. When one does, the candidate opens
+ * with its header alone and the main loop takes the rest. *used: the bytes
+ * taken. */
+static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_frame *frame)
+{
+    unsigned len = d[2], h1 = xf__h1(p);
+    size_t m = (len < n) ? len : n;
+    const uint8_t *hit = d;
+    while ((hit = (const uint8_t *)XF_MEMCHR(hit + 1, p->h0, (size_t)(d + m - hit - 1))) != NULL) {
+        if (hit + 3 < d + m && hit[1] == h1) {
+            m = 4; /* a pair that completes among them */
+            break;
+        }
+    }
+    *used = m;
+    p->stats.given_up += (XF__K == 1); /* (with one slot, the packet's own candidate takes it) */
+    if (m < len) {
+        XF_MEMCPY(p->ring, d, m);
+        xf__first(p);
+        p->end = (uint8_t)m;
+        p->n = 1;
+        p->next = (uint8_t)len;
+        return 0;
+    }
+    if ((xf__crc_run(0, d, len) >> 16) == 0u) {
+        frame->data = d;
+        frame->len = len;
+        p->stats.frames++;
+        return 1;
+    }
+    p->stats.crc_errors++;
+    xf__keep(p, d, len);
+    return 0;
+}
+
+/* Whether d[0, n) begins with a header with a valid length. */
+static inline int xf__starts(const xf_parser *p, const uint8_t *d, size_t n)
+{
+    return n >= 4u && d[0] == p->h0 && d[1] == xf__h1(p) && d[3] == 0u && xf__len_ok(d[2]);
+}
+
 /* No candidate, and no h0 among the bytes held: the first header in
  * d[*i, n) with a valid length (the bad ones before it counted). None: d's
- * last bytes are held (0). A whole packet there with no valid header inside
- * and no pair ending on its last byte, so that no other candidate can begin
- * or end before it ends: intact, it is returned from d itself with no copy
- * (1); damaged, it is counted and skipped but for its last three bytes (the
- * bad lengths inside counted either way). Else its candidate opens. */
+ * last bytes are held (0). Else what is held and the bytes before it are
+ * skipped, and the fresh path takes it from there (1 with a frame). */
 static int xf__idle(xf_parser *p, const uint8_t *d, size_t n, size_t *i, xf_frame *frame)
 {
-    size_t k = xf__scan(p, d, *i, n, &p->stats.length_errors), s, end;
-    uint32_t errors = 0;
+    size_t k = xf__scan(p, d, *i, n, &p->stats.length_errors), s = k - 3u, used;
+    int found;
     if (k == n) {
         xf__keep(p, d + *i, n - *i);
         *i = n;
         return 0;
     }
-    s = k - 3u;
-    end = s + d[k - 1u];
     p->stats.bytes_skipped += xf__held(p) + (uint32_t)(s - *i);
     xf__empty(p);
-    *i = k + 1u;
-    if (end <= n && (XF__K == 1 || xf__scan(p, d, k + 1u, end - 1u, &errors) == end - 1u) &&
-        (d[end - 4u] != p->h0 || d[end - 3u] != xf__h1(p))) {
-        /* (with one slot, the packet's own candidate takes it: nothing inside is looked at) */
-        p->stats.given_up += (XF__K == 1);
-        p->stats.length_errors += errors;
-        *i = end;
-        if ((xf__crc_run(0, d + s, end - s) >> 16) == 0u) {
-            frame->data = d + s;
-            frame->len = end - s;
-            p->stats.frames++;
-            return 1;
-        }
-        p->stats.crc_errors++;
-        xf__keep(p, d + s, end - s);
-        return 0;
-    }
-    p->end = 4; /* xf__admit() writes the header at ring index 0 */
-    xf__admit(p, d[k - 1u]);
-    return 0;
+    found = xf__fresh(p, d + s, n - s, &used, frame);
+    *i = s + used;
+    return found;
 }
 
 /* An h0 among the last three bytes held: the next byte may complete a pair
@@ -590,7 +620,8 @@ static size_t xf__give_back(xf_parser *p, size_t i)
  * at pairs begun before i. */
 static size_t xf__run(xf_parser *p, const uint8_t *d, size_t i, size_t n)
 {
-    size_t r = n - i, left = xf__left(p, 0) - 1u, k;
+    size_t r = n - i, left = (unsigned)XF__IX(p->next - p->end) - 1u, k; /* up to candidate 0's last */
+    XF_ASSERT(left + 1u == xf__left(p, 0));
     r = i + ((r < left) ? r : left);
     k = (p->n == XF__K) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
     xf__copy(p, d + i, k - i);
@@ -639,17 +670,25 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     if (len > 0u && p->n > 0u && !xf__tail(p)) {
         /* Inside a frame, the commonest chunk: the bytes before candidate
          * 0's last and before the first h0 are only stored (no pair can end
-         * among them); with no h0, that last byte checks the candidate. The
-         * main loop takes the rest from the h0 on, with no second search. */
-        size_t left = xf__left(p, 0);
+         * among them); with no h0, the last byte is stored with them and the
+         * candidates that end there are checked at once. The main loop takes
+         * the rest from the h0 on, with no second search. */
+        size_t left = (unsigned)XF__IX(p->next - p->end); /* xf__left(p, 0) */
         const uint8_t *hit;
+        XF_ASSERT(left == xf__left(p, 0));
         m = (len < left) ? len : left - 1u;
         hit = (const uint8_t *)XF_MEMCHR(data, p->h0, m);
-        m = (hit != NULL) ? (size_t)(hit - data) : m;
-        xf__copy(p, data, m);
-        if (hit == NULL && len >= left) {
-            found = xf__byte(p, data[m++], frame);
+        if (hit != NULL) {
+            m = (size_t)(hit - data);
+        } else if (len >= left) {
+            m = left; /* its last byte completes no pair: no h0 three back (this search, or xf__tail) */
         }
+        xf__copy(p, data, m);
+        if (m == left) {
+            found = xf__look(p, 0, frame);
+        }
+    } else if (p->n == 0u && xf__held(p) == 0u && xf__starts(p, data, len)) {
+        found = xf__fresh(p, data, len, &m, frame); /* the commonest chunk after a frame */
     }
     if (!found && m < len) {
         found = xf__take(p, data + m, len - m, &used, frame);
@@ -685,7 +724,8 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
 }
 
 /* One byte fed alone that completes a pair of the bytes held, h0 h1, with
- * a slot free. */
+ * a slot free, and that xf_parser_feed() did not settle: a length's high
+ * byte of 0, a candidate's end, or stale ring bytes. */
 XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
     xf_parse_status r;
@@ -714,6 +754,15 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
                 return xf__store1(p, data[0], consumed);
             }
             return xf__feed1(p, data[0], consumed, frame); /* a candidate's end */
+        }
+        if (data[0] != 0u && xf__held(p) >= 3u && (XF__IX(e + 1u) != p->next || p->n == 0u)) {
+            /* A length's high byte other than 0, the commonest bad length (a
+             * flood of pairs), where the byte ends no candidate. */
+            p->stats.length_errors++;
+            if (XF__IX(e + 1u) == p->next) {
+                xf__trim(p); /* no candidate: the first of four goes */
+            }
+            return xf__store1(p, data[0], consumed);
         }
         return xf__pair1(p, data[0], consumed, frame);
     }
