@@ -19,7 +19,7 @@
  *                                          shorter stream is a prefix of a longer one);
  *                                          prints the number of intact frames first.
  *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
- *                                          | pairs | cpairs | mixed
+ *                                          | pairs | cpairs | mixed | mixed79
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -68,6 +68,9 @@
  *                pending candidate (a 255-byte claim that ends where the next begins)
  *   mixed        three 72-byte claims 24 bytes apart with pairs between them, repeated:
  *                a candidate checked every 24 bytes and a bad length every two
+ *   mixed79      a 79-byte claim and 8 pairs, repeated (20 bytes): a candidate
+ *                checked every 20 bytes, each product ending with 11 single bytes
+ *                (the dearest remainder of a short claim), a bad length every two
  *   Which crafted stream costs most depends on the parser: bench.sh's table says.
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
@@ -239,11 +242,12 @@ typedef enum xb_kind {
     XB_PAIRS,
     XB_CPAIRS,
     XB_MIXED,
+    XB_MIXED79,
     XB_KINDS
 } xb_kind;
 
 static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense",  "uart4", "uart3",
-                                                    "storm", "h0run", "pairs",       "cpairs", "mixed"};
+                                                    "storm", "h0run", "pairs",       "cpairs", "mixed", "mixed79"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -415,6 +419,15 @@ static void xb_generate(xb_kind kind, xb_out *o)
             }
             break;
         }
+        case XB_MIXED79:
+            /* a claim of 79 bytes every 20, pairs between: a check every 20 bytes whose
+             * product ends with 11 single bytes (79 - 4 = 4 * 16 + 11), and a bad length
+             * every two */
+            xb_false_cand(o, 79);
+            for (i = 0; i < 8u; i++) {
+                xb_pair(o);
+            }
+            break;
         case XB_CPAIRS: {
             /* a 255-byte candidate filled with pairs; the next one begins where it ends */
             xb_false_cand(o, 255);
@@ -547,7 +560,7 @@ XB_NOINLINE static int xb_floor_byte(xb_floor *s, uint8_t b, size_t *used, xf_fr
     return (s->have > 3u && s->have == s->buf[2]) ? xb_floor_end(s, s->have, f) : 0;
 }
 
-/* Bytes fed together: searched with memchr and copied. */
+/* Bytes fed together: searched with memchr and copied, each in one call. */
 XB_NOINLINE static int xb_floor_chunk(xb_floor *s, const uint8_t *d, size_t n, size_t *used, xf_frame *f)
 {
     size_t i = 0, len, take;
@@ -564,13 +577,22 @@ XB_NOINLINE static int xb_floor_chunk(xb_floor *s, const uint8_t *d, size_t n, s
             *used = i + len;
             return xb_floor_frame(d + i, len, f);
         }
+        if (n - i >= 3u && len < XF_PACKET_MIN_LEN) {
+            *used = i + 3u; /* a bad length: hunt on from the byte after it */
+            return 0;
+        }
+        /* The rest of the chunk is the start of a frame (or of its header). */
+        s->hits += memchr(d + i + 1u, XF_GCU_HEADER0, n - i - 1u) != NULL;
+        memcpy(s->buf, d + i, n - i);
+        s->have = n - i;
+        return 0;
     }
-    for (; s->have < 3u && i < n; i++) { /* the header's first three bytes: its length */
+    for (; s->have < 3u && i < n; i++) { /* rare: a header split before its length */
         s->buf[s->have++] = d[i];
     }
-    *used = i;
     if (s->have < 3u || s->buf[2] < XF_PACKET_MIN_LEN) {
         s->have = (s->have < 3u) ? s->have : 0u;
+        *used = i;
         return 0;
     }
     len = s->buf[2];
@@ -822,19 +844,18 @@ static void xb_print_delay(const xb_delay_result *dr)
 
 static int xb_usage(void)
 {
-    fprintf(
-        stderr,
-        "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-        "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-        "       xfgcu_bench crc FILE [--chunk N]\n"
-        "       xfgcu_bench floor FILE [--chunk N]\n"
-        "       xfgcu_bench gen valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed N_BYTES FILE\n"
-        "       xfgcu_bench pack N | unpack N\n"
-        "       xfgcu_bench time KIND N_BYTES [REPS]\n"
-        "       xfgcu_bench selftest\n"
-        "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-        " default 4096; parse prints the frames found first, then the counters and\n"
-        " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+    fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
+                    "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
+                    "       xfgcu_bench crc FILE [--chunk N]\n"
+                    "       xfgcu_bench floor FILE [--chunk N]\n"
+                    "       xfgcu_bench gen "
+                    "valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed|mixed79 N_BYTES FILE\n"
+                    "       xfgcu_bench pack N | unpack N\n"
+                    "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+                    "       xfgcu_bench selftest\n"
+                    "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
+                    " default 4096; parse prints the frames found first, then the counters and\n"
+                    " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
     return 2;
 }
 
