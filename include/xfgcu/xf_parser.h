@@ -537,10 +537,10 @@ static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *us
 {
     unsigned len = d[2], h1 = xf__h1(p);
     size_t m = (len < n) ? len : n;
-    const uint8_t *hit = d;
-    while ((hit = (const uint8_t *)XF_MEMCHR(hit + 1, p->h0, (size_t)(d + m - hit - 1))) != NULL) {
-        if (hit + 3 < d + m && hit[1] == h1) {
-            m = 4; /* a pair that completes among them */
+    const uint8_t *hit = d, *stop = d + m - 3u; /* a pair begun before stop completes among them */
+    while ((hit = (const uint8_t *)XF_MEMCHR(hit + 1, p->h0, (size_t)(stop - hit - 1))) != NULL) {
+        if (hit[1] == h1) {
+            m = 4; /* the main loop takes the rest */
             break;
         }
     }
