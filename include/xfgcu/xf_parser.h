@@ -263,7 +263,7 @@ XF_API void xf_parser_reset(xf_parser *p)
 }
 
 /* Bring crc up to the last byte held: bytes are stored first and CRC'd
- * only when a candidate needs it, four at a time (xf__crc_run). */
+ * only when a candidate needs it, sixteen at a time (xf__crc_run). */
 static inline void xf__sum(xf_parser *p)
 {
     unsigned s = p->sum, e = p->end;
@@ -675,7 +675,7 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
          * the rest from the h0 on, with no second search. */
         size_t left = (unsigned)XF__IX(p->next - p->end); /* xf__left(p, 0) */
         const uint8_t *hit;
-        XF_ASSERT(left == xf__left(p, 0));
+        XF_ASSERT(left > 0u && left == xf__left(p, 0));
         m = (len < left) ? len : left - 1u;
         hit = (const uint8_t *)XF_MEMCHR(data, p->h0, m);
         if (hit != NULL) {
@@ -693,7 +693,7 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     if (!found && m < len) {
         found = xf__take(p, data + m, len - m, &used, frame);
     }
-    used = !found ? len : used + m; /* (a frame from the first path: used is 0) */
+    used = !found ? len : used + m; /* (a frame from the in-frame or fresh path: used is 0) */
     p->stats.bytes_in += (uint32_t)used;
     if (consumed != NULL) {
         *consumed = used;
