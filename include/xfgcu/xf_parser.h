@@ -228,6 +228,13 @@ static inline unsigned xf__fin(const xf_parser *p, unsigned k) { return XF__IX(p
 /* Bytes still to come before candidate k ends, its last one included. */
 static inline unsigned xf__left(const xf_parser *p, unsigned k) { return (unsigned)XF__IX(xf__fin(p, k) - p->end); }
 
+/* xf__left(p, 0), with a candidate pending: next is candidate 0's end. */
+static inline unsigned xf__left0(const xf_parser *p)
+{
+    XF_ASSERT(p->n > 0u && p->next != p->end && XF__IX(p->next - p->end) == xf__left(p, 0));
+    return (unsigned)XF__IX(p->next - p->end);
+}
+
 static inline int xf__len_ok(unsigned len) { return len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN; }
 
 /* The second header byte of the direction parsed (h0 names it). */
@@ -620,8 +627,7 @@ static size_t xf__give_back(xf_parser *p, size_t i)
  * at pairs begun before i. */
 static size_t xf__run(xf_parser *p, const uint8_t *d, size_t i, size_t n)
 {
-    size_t r = n - i, left = (unsigned)XF__IX(p->next - p->end) - 1u, k; /* up to candidate 0's last */
-    XF_ASSERT(left + 1u == xf__left(p, 0));
+    size_t r = n - i, left = xf__left0(p) - 1u, k; /* up to candidate 0's last */
     r = i + ((r < left) ? r : left);
     k = (p->n == XF__K) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
     xf__copy(p, d + i, k - i);
@@ -673,9 +679,8 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
          * among them); with no h0, the last byte is stored with them and the
          * candidates that end there are checked at once. The main loop takes
          * the rest from the h0 on, with no second search. */
-        size_t left = (unsigned)XF__IX(p->next - p->end); /* xf__left(p, 0) */
+        size_t left = xf__left0(p);
         const uint8_t *hit;
-        XF_ASSERT(left > 0u && left == xf__left(p, 0));
         m = (len < left) ? len : left - 1u;
         hit = (const uint8_t *)XF_MEMCHR(data, p->h0, m);
         if (hit != NULL) {
