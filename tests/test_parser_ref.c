@@ -250,27 +250,32 @@ static void test_length_errors(void **state)
     pr_free(&m);
 }
 
-/* First come, first served: K false candidates that end after a frame
- * take every slot, so the headers after them (one more false one, then the
- * frame's) are not looked at and the frame is lost; taking the last slot
- * counts once in given_up. With K + 2 slots the frame has one (the last). */
+/* Headers back to back, from a full credit: the slots or the credit run
+ * out after B = min(K, 4) of them (the first is free, and PR_CAP pays for three). */
+static unsigned burst(unsigned K) { return (K < 4u) ? K : 4u; }
+
+/* First come, first served: B false candidates that end after a frame take
+ * every slot or spend the credit, so the headers after them (one more false
+ * one, then the frame's) are not looked at and the frame is lost; running
+ * out counts once in given_up. With K + 2 slots the frame has the last one
+ * when K + 2 <= 4; beyond, the credit still runs out before it. */
 static void test_first_come_first_served(void **state)
 {
     size_t k;
     (void)state;
     for (k = 0; k < ARRAY_LEN(k_values); k++) {
-        const unsigned K = k_values[k];
+        const unsigned K = k_values[k], B = burst(K);
         stream s = {{0}, 0};
         size_t i, f;
         pr_model m;
-        for (i = 0; i <= K; i++) {
+        for (i = 0; i <= B; i++) {
             put_hex(&s, "8A 5E FF 00");
         }
         f = put_packet(&s, 72, 0x11);
         run(&s, K, 255, 1, &m);
         check_identities(&s, &m, 255);
-        assert_int_equal(m.at[4u * K - 1u].given_up, 0);
-        assert_int_equal(m.at[4u * K].given_up, 1); /* the K-th takes the last slot */
+        assert_int_equal(m.at[4u * B - 1u].given_up, 0);
+        assert_int_equal(m.at[4u * B].given_up, 1); /* the B-th runs out */
         assert_int_equal(m.final.given_up, 1);
         assert_int_equal(m.nframes, 0);
         assert_int_equal(m.final.crc_errors + m.final.length_errors, 0); /* none ends in the stream */
@@ -280,41 +285,47 @@ static void test_first_come_first_served(void **state)
 
         run(&s, K + 2u, 255, 1, &m);
         check_identities(&s, &m, 255);
-        assert_int_equal(m.nframes, 1);
-        assert_int_equal(m.frames[0].start, f);
-        assert_int_equal(m.at[f + 71u].frames, 0);
-        assert_int_equal(m.at[f + 72u].frames, 1);
-        assert_int_equal(m.at[f + 3u].given_up, 0);
-        assert_int_equal(m.at[f + 4u].given_up, 1); /* the frame's took the last slot */
-        assert_int_equal(m.final.bytes_skipped, 4u * (K + 1u));
+        if (K + 2u <= 4u) {
+            assert_int_equal(m.nframes, 1);
+            assert_int_equal(m.frames[0].start, f);
+            assert_int_equal(m.at[f + 71u].frames, 0);
+            assert_int_equal(m.at[f + 72u].frames, 1);
+            assert_int_equal(m.at[f + 3u].given_up, 0);
+            assert_int_equal(m.at[f + 4u].given_up, 1); /* the frame's took the last slot */
+            assert_int_equal(m.final.bytes_skipped, 4u * (K + 1u));
+        } else {
+            assert_int_equal(m.nframes, 0);
+            assert_int_equal(m.at[16].given_up, 1); /* the fourth spent the credit */
+        }
         pr_free(&m);
     }
 }
 
-/* K false candidates that end sooner than a frame starting after them: the
- * frame finds every slot taken and is lost (the documented loss); with
- * K + 1 slots it takes the last. */
+/* B false candidates that end sooner than a frame starting after them: the
+ * frame finds every slot taken, or the credit spent, and is lost (the
+ * documented loss); with K + 1 slots it takes the last, unless the credit
+ * ran out first (B = 4). */
 static void test_k_false_ending_sooner(void **state)
 {
     size_t k, x;
     (void)state;
     for (k = 0; k < ARRAY_LEN(k_values); k++) {
         for (x = 0; x < ARRAY_LEN(max_values); x++) {
-            const unsigned K = k_values[k], max = max_values[x];
+            const unsigned K = k_values[k], B = burst(K), max = max_values[x];
             stream s = {{0}, 0};
             size_t i, f;
             pr_model m;
-            for (i = 0; i < K; i++) {
+            for (i = 0; i < B; i++) {
                 put_hex(&s, "8A 5E 54 00"); /* 84: ends at 84 + 4i */
             }
-            f = put_packet(&s, 84, 0x11); /* at 4K, ends at 4K + 84: after all of them */
+            f = put_packet(&s, 84, 0x11); /* at 4B, ends at 4B + 84: after all of them */
             put_fill(&s, 0x00, 100);
             run(&s, K, max, 1, &m);
             check_identities(&s, &m, max);
             assert_int_equal(m.at[f - 1u].given_up, 0);
             assert_int_equal(m.at[f].given_up, 1);
             assert_int_equal(m.nframes, 0);
-            assert_int_equal(m.final.crc_errors, K);
+            assert_int_equal(m.final.crc_errors, B);
             assert_int_equal(m.at[84].crc_errors, 1); /* the first false one, at its end */
             assert_int_equal(m.final.given_up, 1);
             assert_int_equal(m.final.bytes_skipped, s.n);
@@ -323,12 +334,48 @@ static void test_k_false_ending_sooner(void **state)
             run(&s, K + 1u, max, 1, &m);
             check_identities(&s, &m, max);
             assert_int_equal(m.final.given_up, 1);
-            assert_int_equal(m.final.crc_errors, K); /* they all end before the frame */
-            assert_int_equal(m.nframes, 1);
-            assert_int_equal(m.frames[0].start, f);
-            assert_int_equal(m.at[f + 84u].frames, 1);
+            assert_int_equal(m.final.crc_errors, B); /* they all end before the frame */
+            assert_int_equal(m.nframes, (B < 4u) ? 1u : 0u);
+            if (B < 4u) {
+                assert_int_equal(m.frames[0].start, f);
+                assert_int_equal(m.at[f + 84u].frames, 1);
+            }
             pr_free(&m);
         }
+    }
+}
+
+/* The credit. Eight false 72-byte claims back to back: B are admitted (the
+ * rest are not looked at), whatever the slots. The first one's check, at
+ * byte 72, earns the bytes since the last admission: a frame whose header
+ * ends after it is admitted, and found. */
+static void test_credit(void **state)
+{
+    size_t k;
+    (void)state;
+    for (k = 0; k < ARRAY_LEN(k_values); k++) {
+        const unsigned K = k_values[k], B = burst(K);
+        stream s = {{0}, 0};
+        size_t i, f;
+        pr_model m;
+        for (i = 0; i < 8u; i++) {
+            put_hex(&s, "8A 5E 48 00"); /* ends at 72 + 4i */
+        }
+        put_fill(&s, 0x00, 72u - s.n);
+        f = put_packet(&s, 72, 0x11); /* at 72 */
+        put_fill(&s, 0x00, 100);
+        run(&s, K, 255, 1, &m);
+        check_identities(&s, &m, 255);
+        assert_int_equal(m.at[4u * B].given_up, 1);
+        assert_int_equal(m.at[71].crc_errors, 0);
+        assert_int_equal(m.at[72].crc_errors, 1);
+        assert_int_equal(m.at[72u + 4u * (B - 1u)].crc_errors, B); /* B admitted, the others not looked at */
+        assert_int_equal(m.final.crc_errors, B);
+        assert_int_equal(m.final.length_errors, 0);
+        assert_int_equal(m.nframes, 1);
+        assert_int_equal(m.frames[0].start, f);
+        assert_int_equal(m.at[f + 72u].frames, 1);
+        pr_free(&m);
     }
 }
 
@@ -528,6 +575,7 @@ int main(void)
         cmocka_unit_test(test_length_errors),
         cmocka_unit_test(test_first_come_first_served),
         cmocka_unit_test(test_k_false_ending_sooner),
+        cmocka_unit_test(test_credit),
         cmocka_unit_test(test_same_end),
         cmocka_unit_test(test_truncated_then_intact),
         cmocka_unit_test(test_held_prefixes),

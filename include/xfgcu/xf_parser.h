@@ -60,19 +60,20 @@ typedef struct xf_parser_stats {
 
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
-    uint8_t ring[XF_PARSER_RING];   /**< private: bytes held, in order from `head` (a ring: indices wrap) */
+    uint8_t ring[XF_PARSER_RING];   /**< private: bytes held, in order (a ring: indices wrap) */
     xf_parser_stats stats;          /**< counters, readable at any time; the application may zero them */
     uint16_t want[XF_PARSER_SLOTS]; /**< private: per candidate, what `crc` must be at its end, before the shift
                                        (docs/codec.md) */
     uint16_t crc;                   /**< private: CRC of the bytes from the start of the first candidate admitted
                                        since none was pending, up to `sum` */
-    uint8_t at[XF_PARSER_SLOTS];    /**< private: ring index of each candidate's first byte, soonest end first */
-    uint8_t next;                   /**< private: ring index just past the next byte that needs a look */
-    uint8_t head;                   /**< private: ring index of the first byte held */
-    uint8_t end;                    /**< private: ring index just past the last byte held */
-    uint8_t n;                      /**< private: candidates pending */
-    uint8_t h0;                     /**< private: first header byte of the direction parsed */
-    uint8_t sum;                    /**< private: ring index up to which `crc` runs */
+    uint8_t at[XF_PARSER_SLOTS];    /**< private: ring index of each candidate's first byte, in order of start */
+    uint8_t next;   /**< private: ring index just past the next byte that needs a look: the soonest end of a
+                       candidate, or with none the fourth byte held */
+    uint8_t end;    /**< private: ring index just past the last byte held */
+    uint8_t n;      /**< private: candidates pending */
+    uint8_t h0;     /**< private: first header byte of the direction parsed */
+    uint8_t sum;    /**< private: ring index up to which `crc` runs */
+    uint8_t credit; /**< private: bytes' worth of candidates the parser may still admit (docs/codec.md) */
 } xf_parser;
 
 /**
@@ -188,6 +189,14 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 #define XF__RMASK (XF_PARSER_RING - 1u)
 #define XF__IX(i) ((uint8_t)((i)&XF__RMASK))
 #define XF__K     XF_PARSER_SLOTS
+/* The credit, in bytes: admitting a candidate behind another costs
+ * XF__COST, and each byte CRC'd while candidates are pending earns one, up
+ * to XF__CAP. So such candidates are admitted at most once per XF__COST
+ * bytes on average, three at once from a full credit (four candidates with
+ * the first, as many as the default slots): it bounds the checks
+ * a stream can cause (docs/codec.md). */
+#define XF__COST 63u
+#define XF__CAP  (3u * XF__COST)
 /* The CRC of each direction's header pair (tests/test_parser.c checks them). */
 #define XF__GCU_PAIR_CRC  0x4F68u
 #define XF__HOST_PAIR_CRC 0x395Cu
@@ -214,10 +223,19 @@ XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned lo
     XF_MEMSET(p, 0, sizeof(*p));
     p->h0 = (dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0;
     p->next = 4; /* nothing held: the fourth byte is the first that may complete a header */
+    p->credit = XF__CAP;
     return XF_OK;
 }
 
-static inline unsigned xf__held(const xf_parser *p) { return (unsigned)XF__IX(p->end - p->head); }
+/* Ring index of the first byte held: the earliest candidate's first, or
+ * with none four before next. */
+static inline unsigned xf__head(const xf_parser *p) { return (p->n > 0u) ? p->at[0] : XF__IX(p->next - 4u); }
+
+static inline unsigned xf__held(const xf_parser *p) { return (unsigned)XF__IX(p->end - xf__head(p)); }
+
+/* Whether fewer than three bytes are held (only with no candidate: the
+ * ring bytes before end are then stale, and begin no header). */
+static inline int xf__few(const xf_parser *p) { return p->n == 0u && XF__IX(p->next - p->end) > 1u; }
 
 /* Length and end (ring index just past its last byte) of candidate k: its
  * header is held as long as it is pending. */
@@ -228,10 +246,11 @@ static inline unsigned xf__fin(const xf_parser *p, unsigned k) { return XF__IX(p
 /* Bytes still to come before candidate k ends, its last one included. */
 static inline unsigned xf__left(const xf_parser *p, unsigned k) { return (unsigned)XF__IX(xf__fin(p, k) - p->end); }
 
-/* xf__left(p, 0), with a candidate pending: next is candidate 0's end. */
+/* Bytes still to come before the soonest end of a candidate, with one
+ * pending: next is that end. */
 static inline unsigned xf__left0(const xf_parser *p)
 {
-    XF_ASSERT(p->n > 0u && p->next != p->end && XF__IX(p->next - p->end) == xf__left(p, 0));
+    XF_ASSERT(p->n > 0u && p->next != p->end && XF__IX(p->next - p->end) <= xf__left(p, 0));
     return (unsigned)XF__IX(p->next - p->end);
 }
 
@@ -250,16 +269,16 @@ XF_API size_t xf_parser_pending(const xf_parser *p) { return (p == NULL) ? 0u : 
 static inline void xf__empty(xf_parser *p)
 {
     p->n = 0;
-    p->head = 0;
     p->end = 0;
     p->next = 4;
 }
 
-/* Drop everything held. */
+/* Drop everything held: the next byte starts afresh, with a full credit. */
 static inline void xf__clear(xf_parser *p)
 {
     p->stats.bytes_skipped += xf__held(p);
     xf__empty(p);
+    p->credit = XF__CAP;
 }
 
 XF_API void xf_parser_reset(xf_parser *p)
@@ -269,12 +288,27 @@ XF_API void xf_parser_reset(xf_parser *p)
     }
 }
 
+/* Whether headers are not looked at: candidates are pending and the credit
+ * is short (always, when every slot is taken: xf__admit). */
+static inline int xf__deaf(const xf_parser *p) { return p->credit < XF__COST && p->n > 0u; }
+
+/* The credit once a candidate took the last slot: short of another's. */
+static inline unsigned xf__full(unsigned credit) { return (credit < XF__COST) ? credit : XF__COST - 1u; }
+
+/* Credit for m bytes CRC'd. */
+static inline void xf__earn(xf_parser *p, unsigned m)
+{
+    unsigned c = p->credit + m;
+    p->credit = (uint8_t)((c < XF__CAP) ? c : XF__CAP);
+}
+
 /* Bring crc up to the last byte held: bytes are stored first and CRC'd
  * only when a candidate needs it, sixteen at a time (xf__crc_run). */
 static inline void xf__sum(xf_parser *p)
 {
     unsigned s = p->sum, e = p->end;
     uint32_t c = (uint32_t)p->crc << 16;
+    xf__earn(p, (unsigned)XF__IX(e - s));
     if (e < s) {
         c = xf__crc_run(c, p->ring + s, XF_PARSER_RING - s);
         s = 0;
@@ -283,30 +317,38 @@ static inline void xf__sum(xf_parser *p)
     p->sum = (uint8_t)e;
 }
 
-/* Move head up to the first byte that may still begin a frame: the earliest
- * candidate's, or with none the first of the last three (they may begin a
- * header); set next, just past the next byte that needs the byte path:
- * candidate 0's last, or with none the fourth byte held. */
+/* After candidates went: next is the soonest end of those left; with none,
+ * the last three bytes are held (they may begin a header), the rest
+ * skipped, and next is the fourth. */
 static void xf__settle(xf_parser *p)
 {
-    unsigned k, held = xf__held(p), keep = (p->n == 0u) ? 3u : 0u;
-    for (k = 0; k < p->n; k++) {
-        unsigned back = (unsigned)XF__IX(p->end - p->at[k]);
-        keep = (back > keep) ? back : keep;
+    unsigned k, held = xf__held(p), soon = 0;
+    if (p->n == 0u) {
+        if (held > 3u) {
+            p->stats.bytes_skipped += held - 3u;
+            held = 3;
+        }
+        p->next = XF__IX(p->end - held + 4u);
+        return;
     }
-    XF_ASSERT(p->n == 0u || keep <= held);
-    if (keep < held) {
-        p->stats.bytes_skipped += held - keep;
-        p->head = XF__IX(p->end - keep);
+    for (k = 1; k < p->n; k++) {
+        soon = (xf__left(p, k) < xf__left(p, soon)) ? k : soon;
     }
-    p->next = XF__IX((p->n == 0u) ? p->head + 4u : xf__fin(p, 0));
+    p->next = (uint8_t)xf__fin(p, soon);
 }
 
-/* Drop candidate 0 (its end has come), keeping the others in order. */
-static void xf__shift(xf_parser *p)
+/* Drop candidate k: it ended and its CRC failed. The bytes before the next
+ * candidate's are skipped; the last one's first byte stays the first held
+ * until xf__settle. */
+static void xf__drop(xf_parser *p, unsigned k)
 {
-    unsigned k;
-    for (p->n--, k = 0; k < p->n && k + 1u < XF__K; k++) { /* (the bound is for the compiler) */
+    p->stats.crc_errors++;
+    if (k == 0u && p->n > 1u) {
+        p->stats.bytes_skipped += (unsigned)XF__IX(p->at[1] - p->at[0]);
+    } else if (p->n == 1u) {
+        p->next = XF__IX(p->at[0] + 4u); /* (xf__head: four before next) */
+    }
+    for (p->n--; k < p->n && k + 1u < XF__K; k++) { /* (the bound is for the compiler) */
         p->want[k] = p->want[k + 1u];
         p->at[k] = p->at[k + 1u];
     }
@@ -316,24 +358,25 @@ static void xf__shift(xf_parser *p)
  * 0: its frame cannot wrap, the running CRC restarts at it, and want is 0. */
 static inline void xf__first(xf_parser *p)
 {
-    p->head = 0;
     p->crc = 0;
     p->sum = 0;
     p->want[0] = 0;
     p->at[0] = 0;
 }
 
-/* A header with a valid length ends with the last byte held, and a slot is
- * free: a new candidate, placed in order of end (after those that end with
- * it: they began earlier). Its `want` is what the CRC of everything before
- * it contributes at its end: the frame is intact exactly when the running
- * CRC then equals want * x^(8 (len - 4)) (xf__crc_zeros). Alone, it moves
- * to ring index 0 (xf__first). Taking the last slot counts in given_up:
- * until one is free again no header is looked at. */
+/* A header with a valid length ends with the last byte held, and the credit
+ * allows a candidate: a new one, the last in order of start. Its `want` is
+ * what the CRC of everything before it contributes at its end: the frame is
+ * intact exactly when the running CRC then equals want * x^(8 (len - 4))
+ * (xf__crc_zeros). Alone, it moves to ring index 0 (xf__first). It costs
+ * its credit; taking the last slot spends all. When the credit left is too
+ * little for another, given_up counts it: no header is looked at until a
+ * check earns enough. */
 static void xf__admit(xf_parser *p, unsigned len)
 {
-    unsigned left = len - 4u, k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
+    unsigned k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
     uint32_t c;
+    XF_ASSERT(k < XF__K && !xf__deaf(p));
     if (k == 0u) {
         p->stats.bytes_skipped += xf__held(p) - 4u;
         p->ring[0] = p->h0;
@@ -342,24 +385,25 @@ static void xf__admit(xf_parser *p, unsigned len)
         p->ring[3] = 0;
         p->end = 4;
         xf__first(p);
-    } else if (k < XF__K) { /* (always: a slot is free; the bound is for the compiler) */
+        p->next = (uint8_t)len;
+    } else if (k < XF__K) { /* (always; the bound is for the compiler) */
         c = xf__crc_step(xf__crc_step((uint32_t)pair << 16, xf__crc_table(), (uint8_t)len), xf__crc_table(), 0);
         xf__sum(p);
-        for (; k > 0u && k < XF__K && xf__left(p, k - 1u) > left; k--) {
-            p->want[k] = p->want[k - 1u];
-            p->at[k] = p->at[k - 1u];
-        }
+        p->credit = (uint8_t)(p->credit - XF__COST);
         p->want[k] = (uint16_t)(p->crc ^ (c >> 16));
         p->at[k] = XF__IX(p->end - 4u);
+        if (len - 4u < (unsigned)XF__IX(p->next - p->end - 1u) + 1u) { /* (next == end: xf__look settles it) */
+            p->next = (uint8_t)xf__fin(p, k);
+        }
     }
     p->n++;
-    p->next = (uint8_t)xf__fin(p, 0);     /* head stays: the new candidate began last */
-    p->stats.given_up += (p->n == XF__K); /* deaf to headers until a slot is free */
+    p->credit = (uint8_t)((p->n == XF__K) ? xf__full(p->credit) : p->credit);
+    p->stats.given_up += (p->credit < XF__COST); /* deaf to headers until a check earns enough */
     XF_ASSERT(p->n <= XF__K && xf__len(p, k) == len);
 }
 
-/* The last byte held completes a header pair, and a slot is free: a bad
- * length is counted; a valid one is admitted. */
+/* The last byte held completes a header pair, and the credit allows a
+ * candidate: a bad length is counted; a valid one is admitted. */
 static void xf__header(xf_parser *p)
 {
     unsigned len = p->ring[XF__IX(p->end - 2u)] | ((unsigned)p->ring[XF__IX(p->end - 1u)] << 8);
@@ -382,13 +426,13 @@ static void xf__reverse(uint8_t *r, unsigned i, unsigned j)
     }
 }
 
-/* Candidate 0 has ended intact: return it; everything else held overlaps it. */
-static void xf__emit(xf_parser *p, xf_frame *frame)
+/* Candidate k has ended intact: return it; everything else held overlaps it. */
+static void xf__emit(xf_parser *p, unsigned k, xf_frame *frame)
 {
-    unsigned i0 = p->at[0], len = xf__len(p, 0);
+    unsigned i0 = p->at[k], len = xf__len(p, k);
     XF_ASSERT(xf__len_ok(len) && p->ring[i0] == p->h0 &&
               xf_crc16(p->ring + i0, (i0 + len <= XF_PARSER_RING) ? len : 0u) == 0u);
-    p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->head);
+    p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->at[0]); /* (the first held: xf__head) */
     p->stats.frames++;
     if (i0 + len > XF_PARSER_RING) {
         xf__reverse(p->ring, 0, i0);
@@ -401,33 +445,36 @@ static void xf__emit(xf_parser *p, xf_frame *frame)
     xf__empty(p);
 }
 
-/* The last byte held ends candidate 0, and maybe others: check them in
- * order of start; the first intact one is returned (1), failed ones go. */
+/* The last byte held ends one candidate or more: check them in order of
+ * start; the first intact one is returned (1), failed ones go. */
 static int xf__ends(xf_parser *p, xf_frame *frame)
 {
+    unsigned k = 0, alone = (p->n == 1u);
     xf__sum(p);
-    do {
-        uint16_t w = p->want[0];
-        if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, 0) - 4u))) {
-            xf__emit(p, frame);
+    while (k < p->n) {
+        uint16_t w = p->want[k];
+        if (!alone && xf__fin(p, k) != p->end) { /* (one alone ends here: next) */
+            k++;
+        } else if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, k) - 4u))) {
+            xf__emit(p, k, frame);
             return 1;
+        } else {
+            xf__drop(p, k);
         }
-        p->stats.crc_errors++;
-        xf__shift(p);
-    } while (p->n > 0u && xf__fin(p, 0) == p->end);
+    }
     return 0;
 }
 
-/* The last byte held ends candidate 0: the candidates that end with it come
- * first (a frame returned drops whatever its last bytes begin), then a
- * header pair it completes (pair). 1 when it completes a frame. */
+/* The last byte held ends a candidate: the candidates that end with it
+ * come first (a frame returned drops whatever its last bytes begin), then
+ * a header pair it completes (pair), if the credit their check earned
+ * allows. 1 when it completes a frame. */
 XF__COLD int xf__look(xf_parser *p, int pair, xf_frame *frame)
 {
     if (xf__ends(p, frame)) {
         return 1;
     }
-    XF_ASSERT(p->n < XF__K); /* the candidate that ended here freed its slot */
-    if (pair) {
+    if (pair && !xf__deaf(p)) {
         xf__header(p);
     }
     xf__settle(p);
@@ -438,8 +485,7 @@ XF__COLD int xf__look(xf_parser *p, int pair, xf_frame *frame)
  * header now. */
 static inline void xf__trim(xf_parser *p)
 {
-    p->head = XF__IX(p->head + 1u);
-    p->next = XF__IX(p->next + 1u);
+    p->next = XF__IX(p->next + 1u); /* (and so the first byte held: xf__head) */
     p->stats.bytes_skipped++;
 }
 
@@ -447,7 +493,7 @@ static inline void xf__trim(xf_parser *p)
  * (pair), then, with no candidate and four bytes held, the first goes. */
 static inline void xf__no_end(xf_parser *p, int pair)
 {
-    XF_ASSERT(!pair || p->n < XF__K); /* callers give a pair only when a slot is free */
+    XF_ASSERT(!pair || !xf__deaf(p)); /* callers give a pair only when headers are looked at */
     if (pair) {
         xf__header(p);
     }
@@ -473,7 +519,7 @@ static inline int xf__step(xf_parser *p, uint8_t b, int pair, xf_frame *frame)
 static inline int xf__pair(const xf_parser *p)
 {
     unsigned e = p->end;
-    return p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && xf__held(p) >= 3u;
+    return p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && !xf__few(p);
 }
 
 static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame) { return xf__step(p, b, xf__pair(p), frame); }
@@ -552,7 +598,10 @@ static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *us
         }
     }
     *used = m;
-    p->stats.given_up += (XF__K == 1); /* (with one slot, the packet's own candidate takes it) */
+    if (XF__K == 1) { /* as xf__admit: the packet's candidate takes the last slot */
+        p->credit = (uint8_t)xf__full(p->credit);
+        p->stats.given_up++;
+    }
     if (m < len) {
         XF_MEMCPY(p->ring, d, m);
         xf__first(p);
@@ -561,6 +610,7 @@ static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *us
         p->next = (uint8_t)len;
         return 0;
     }
+    xf__earn(p, len); /* as xf__sum at its end */
     if ((xf__crc_run(0, d, len) >> 16) == 0u) {
         frame->data = d;
         frame->len = len;
@@ -629,7 +679,7 @@ static size_t xf__run(xf_parser *p, const uint8_t *d, size_t i, size_t n)
 {
     size_t r = n - i, left = xf__left0(p) - 1u, k; /* up to candidate 0's last */
     r = i + ((r < left) ? r : left);
-    k = (p->n == XF__K) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
+    k = xf__deaf(p) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
     xf__copy(p, d + i, k - i);
     return k;
 }
@@ -642,7 +692,7 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_f
 {
     size_t i = 0, k;
     while (i < n) {
-        if (i < 3u && p->n < XF__K && xf__tail(p)) {
+        if (i < 3u && !xf__deaf(p) && xf__tail(p)) {
             k = i; /* a pair begun before d may end here: the byte path */
         } else if (p->n > 0u) {
             k = xf__run(p, d, i, n);
@@ -734,7 +784,7 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
 XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
 {
     xf_parse_status r;
-    if ((XF__IX(p->end + 1u) == p->next && p->n > 0u) || xf__held(p) < 3u) {
+    if ((XF__IX(p->end + 1u) == p->next && p->n > 0u) || xf__few(p)) {
         return xf__feed1(p, b, consumed, frame); /* a candidate's end first, or stale ring bytes */
     }
     r = xf__store1(p, b, consumed); /* the byte path without its tests for an end and a pair */
@@ -749,7 +799,7 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
     }
     if (len == 1u) {
         unsigned e = p->end;
-        if (p->ring[XF__IX(e - 3u)] != p->h0 || p->ring[XF__IX(e - 2u)] != xf__h1(p) || p->n == XF__K) {
+        if (p->ring[XF__IX(e - 3u)] != p->h0 || p->ring[XF__IX(e - 2u)] != xf__h1(p) || xf__deaf(p)) {
             /* A UART's byte that completes no header pair to look at. */
             if (XF__IX(e + 1u) != p->next) {
                 return xf__store1(p, data[0], consumed);
@@ -760,7 +810,7 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
             }
             return xf__feed1(p, data[0], consumed, frame); /* a candidate's end */
         }
-        if (data[0] != 0u && xf__held(p) >= 3u && (XF__IX(e + 1u) != p->next || p->n == 0u)) {
+        if (data[0] != 0u && !xf__few(p) && (XF__IX(e + 1u) != p->next || p->n == 0u)) {
             /* A length's high byte other than 0, the commonest bad length (a
              * flood of pairs), where the byte ends no candidate. */
             p->stats.length_errors++;
