@@ -19,7 +19,7 @@
  *                                          shorter stream is a prefix of a longer one);
  *                                          prints the number of intact frames first.
  *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
- *                                          | pairs | cpairs | mixed | mixed79
+ *                                          | pairs | cpairs | mixed | mixed79 | credit
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -71,6 +71,9 @@
  *   mixed79      a 79-byte claim and 8 pairs, repeated (20 bytes): a candidate
  *                checked every 20 bytes, each product ending with 11 single bytes
  *                (the dearest remainder of a short claim), a bad length every two
+ *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): candidates as
+ *                fast as the parser's credit admits them, each checked with a
+ *                product, and every byte between them looked at
  *   Which crafted stream costs most depends on the parser: bench.sh's table says.
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
@@ -243,11 +246,13 @@ typedef enum xb_kind {
     XB_CPAIRS,
     XB_MIXED,
     XB_MIXED79,
+    XB_CREDIT,
     XB_KINDS
 } xb_kind;
 
-static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy", "adversarial", "dense",  "uart4", "uart3",
-                                                    "storm", "h0run", "pairs",       "cpairs", "mixed", "mixed79"};
+static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy",   "adversarial", "dense", "uart4",
+                                                    "uart3", "storm",   "h0run",       "pairs", "cpairs",
+                                                    "mixed", "mixed79", "credit"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -426,6 +431,14 @@ static void xb_generate(xb_kind kind, xb_out *o)
             xb_false_cand(o, 79);
             for (i = 0; i < 8u; i++) {
                 xb_pair(o);
+            }
+            break;
+        case XB_CREDIT:
+            /* a claim of 79 bytes every 40 with h0 bytes between: more candidates than the
+             * credit admits, so one is admitted whenever a check has earned enough */
+            xb_false_cand(o, 79);
+            for (i = 0; i < 36u; i++) {
+                xb_put1(o, XF_GCU_HEADER0);
             }
             break;
         case XB_CPAIRS: {
@@ -844,18 +857,19 @@ static void xb_print_delay(const xb_delay_result *dr)
 
 static int xb_usage(void)
 {
-    fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-                    "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-                    "       xfgcu_bench crc FILE [--chunk N]\n"
-                    "       xfgcu_bench floor FILE [--chunk N]\n"
-                    "       xfgcu_bench gen "
-                    "valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed|mixed79 N_BYTES FILE\n"
-                    "       xfgcu_bench pack N | unpack N\n"
-                    "       xfgcu_bench time KIND N_BYTES [REPS]\n"
-                    "       xfgcu_bench selftest\n"
-                    "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-                    " default 4096; parse prints the frames found first, then the counters and\n"
-                    " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+    fprintf(stderr,
+            "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
+            "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
+            "       xfgcu_bench crc FILE [--chunk N]\n"
+            "       xfgcu_bench floor FILE [--chunk N]\n"
+            "       xfgcu_bench gen "
+            "valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed|mixed79|credit N_BYTES FILE\n"
+            "       xfgcu_bench pack N | unpack N\n"
+            "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+            "       xfgcu_bench selftest\n"
+            "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
+            " default 4096; parse prints the frames found first, then the counters and\n"
+            " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
     return 2;
 }
 
@@ -1015,7 +1029,7 @@ static int xb_floor_selftest(const xb_out *o, const size_t *chunks, size_t nchun
  * inserted; more is a false candidate whose CRC matched, possible but very
  * rare), when the byte counters do not add up, or when the floor misses a
  * frame of valid. On the crafted streams (adversarial, dense, storm, h0run,
- * pairs, cpairs, mixed, mixed79) the parser may give up candidates by design:
+ * pairs, cpairs, mixed, mixed79, credit) the parser may give up candidates by design:
  * found / inserted is printed, not checked. The frames found in each
  * chunking and the worst delay are printed. */
 static int xb_cmd_selftest(void)

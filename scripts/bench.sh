@@ -73,7 +73,7 @@ build "nibble$suffix" OFF
 build "t256$suffix" ON
 
 # valid first: the other rows are compared with it
-kinds=(valid noisy uart4 uart3 adversarial dense storm h0run pairs cpairs mixed mixed79)
+kinds=(valid noisy uart4 uart3 adversarial dense storm h0run pairs cpairs mixed mixed79 credit)
 chunks=(1 16 64 4096)
 MiB=1048576
 streams="$bdir/streams"

@@ -1018,34 +1018,130 @@ static void test_adversarial_lengths(void **state)
     stream_free(&s);
 }
 
+/* The credit at its edges. Four false claims back to back spend it; their
+ * checks earn it back. Then a false claim L at 84 (ending at 156) and a
+ * frame y at 88 (ending at 160) whose bytes 64..67 are a header that
+ * completes at 156: admitted with what L's check earned, it leaves the
+ * credit short, and y is returned with nothing pending and the credit still
+ * short. The next frame's header is looked at all the same: the first
+ * candidate after none costs nothing. A reset gives back a full credit:
+ * three false claims and a frame after it, the frame is found. */
+static void test_credit_edges(void **state)
+{
+    static const uint8_t claim72[4] = {0x8A, 0x5E, 72, 0x00}, claim255[4] = {0x8A, 0x5E, 0xFF, 0x00};
+    static const size_t chunks[] = {1, 5, 16, 4096};
+    uint8_t y[72], z[256];
+    size_t i, c, zl, ylen;
+    uint16_t crc;
+    stream s;
+    test_rng r;
+    (void)state;
+    stream_init(&s);
+    rng_seed(&r, 77);
+    for (i = 0; i < 4u; i++) {
+        put(&s, claim72, 4);
+    }
+    while (s.len < 84u) {
+        put1(&s, 0x00);
+    }
+    put(&s, claim72, 4);
+    memset(y, 0x11, sizeof(y));
+    memcpy(y, claim72, 4);
+    memcpy(y + 64, claim72, 4);
+    crc = xf_crc16(y, 70);
+    y[70] = (uint8_t)(crc >> 8);
+    y[71] = (uint8_t)crc;
+    put(&s, y, sizeof(y));
+    ylen = s.len;
+    zl = make_frame(&r, XF_DIR_GCU, 0, z);
+    put(&s, z, zl);
+    for (c = 0; c < sizeof(chunks) / sizeof(chunks[0]); c++) {
+        harness h;
+        pr_model m;
+        model_run(&s, XF_DIR_GCU, &m);
+        harness_init(&h, XF_DIR_GCU);
+        h.model = &m;
+        h.base = s.buf;
+        for (i = 0; i < ylen; i += chunks[c]) {
+            harness_feed(&h, s.buf + i, (i + chunks[c] <= ylen) ? chunks[c] : ylen - i);
+        }
+        if (XF_PARSER_SLOTS >= 3) { /* L, y and the header inside y pending at once */
+            assert_int_equal(h.nframes, 1);
+            assert_true(h.p.n == 0u && h.p.credit < 63u);
+        }
+        for (i = ylen; i < s.len; i += chunks[c]) {
+            harness_feed(&h, s.buf + i, (i + chunks[c] <= s.len) ? chunks[c] : s.len - i);
+        }
+        check_output(&h, &s, &m);
+        if (XF_PARSER_SLOTS >= 2) { /* (one slot: the header inside y takes it while z begins) */
+            assert_true(h.nframes > 0u && h.lens[h.nframes - 1u] == zl);
+            assert_memory_equal(h.out + h.frame_bytes - zl, z, zl); /* z, the last */
+        }
+        if (XF_PARSER_SLOTS >= 4) {
+            xf_parser_reset(&h.p);
+            h.model = NULL;
+            for (i = 0; i < 3u; i++) {
+                harness_feed(&h, claim255, 4);
+            }
+            assert_int_equal(harness_feed(&h, z, zl), 1); /* the fourth candidate, with a full credit */
+        }
+        harness_free(&h);
+        pr_free(&m);
+    }
+    stream_free(&s);
+}
+
 /* Crafted storms, each followed by a real frame, fed in several chunk sizes
  * and compared with the model after every call: a run of h0 bytes (every
  * byte the fourth after an h0), header pairs with bad lengths, h0 h1 h0 00
  * (a candidate and an h0 look every four bytes), nested lengths (each
  * candidate ends before the last one pending), the largest length every
- * four bytes. They drive the paths a clean stream never takes. */
+ * four bytes, a 79-byte claim every 40 bytes with h0 bytes between (more
+ * candidates than the credit admits), and 72-byte claims every 24 bytes
+ * with a real frame among them every eighth (some admitted, some lost to
+ * the credit). They drive the paths a clean stream never takes. */
 static void test_crafted_storms(void **state)
 {
     static const size_t chunks[] = {1, 2, 3, 5, 16, 64, 4096};
     stream s;
     test_rng r;
     uint8_t f[256];
-    size_t i, c, k, fl;
+    size_t i, c, k, fl, inserted = 0;
     (void)state;
     stream_init(&s);
     rng_seed(&r, 0x5708);
-    for (k = 0; k < 5; k++) {
+    for (k = 0; k < 7; k++) {
         for (i = 0; i < 600; i++) {
             static const uint8_t pair8a[4] = {0x8A, 0x5E, 0x8A, 0x00};
             static const uint8_t dense[4] = {0x8A, 0x5E, XF_PACKET_MAX_LEN, 0x00};
-            uint8_t nested[4] = {0x8A, 0x5E, 0, 0x00};
+            static const uint8_t claim72[4] = {0x8A, 0x5E, 72, 0x00};
+            uint8_t nested[4] = {0x8A, 0x5E, 0, 0x00}, claim79[4] = {0x8A, 0x5E, 79, 0x00};
             nested[2] = (uint8_t)(XF_PACKET_MAX_LEN - 5u * (i % ((XF_PACKET_MAX_LEN - 72u) / 5u + 1u)));
             switch (k) {
             case 0: put1(&s, 0x8A); break;
             case 1: put(&s, pair8a, 2); break;
             case 2: put(&s, pair8a, 4); break;
             case 3: put(&s, nested, 4); break;
-            default: put(&s, dense, 4); break;
+            case 4: put(&s, dense, 4); break;
+            case 5:
+                claim79[2] = (uint8_t)((XF_PACKET_MAX_LEN < 79) ? XF_PACKET_MAX_LEN : 79);
+                put(&s, claim79, 4);
+                for (fl = 0; fl < 36u; fl++) {
+                    put1(&s, 0x8A);
+                }
+                break;
+            default:
+                if (i % 8u == 7u) {
+                    fl = make_frame(&r, XF_DIR_GCU, 0, f);
+                    put(&s, f, fl);
+                    inserted++;
+                    break;
+                }
+                put(&s, claim72, 4);
+                for (fl = 0; fl < 10u; fl++) {
+                    put(&s, pair8a, 2);
+                }
+                break;
             }
         }
         fl = make_frame(&r, XF_DIR_GCU, k & 1u, f);
@@ -1065,6 +1161,9 @@ static void test_crafted_storms(void **state)
         assert_true(h.p.stats.length_errors > 0u && h.p.stats.crc_errors > 0u);
         if (XF_PACKET_MAX_LEN == 255) {
             assert_true(h.nframes >= 2u); /* the frames after the h0 run and the pairs */
+        }
+        if (XF_PARSER_SLOTS >= 4) { /* among the claims every 24 bytes, the credit admits some frames, not all */
+            assert_true(h.nframes > 7u && h.nframes < 7u + inserted);
         }
         harness_free(&h);
         pr_free(&m);
@@ -1120,6 +1219,7 @@ int main(void)
         cmocka_unit_test(test_reset),
         cmocka_unit_test(test_adversarial_lengths),
         cmocka_unit_test(test_crafted_storms),
+        cmocka_unit_test(test_credit_edges),
         cmocka_unit_test(test_parser_args),
         cmocka_unit_test(test_random_stream_whole),
         cmocka_unit_test(test_random_stream_byte_at_a_time),

@@ -600,8 +600,8 @@ static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *us
     *used = m;
     if (XF__K == 1) { /* as xf__admit: the packet's candidate takes the last slot */
         p->credit = (uint8_t)xf__full(p->credit);
-        p->stats.given_up++;
     }
+    p->stats.given_up += (p->credit < XF__COST); /* as xf__admit */
     if (m < len) {
         XF_MEMCPY(p->ring, d, m);
         xf__first(p);
@@ -810,9 +810,10 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
             }
             return xf__feed1(p, data[0], consumed, frame); /* a candidate's end */
         }
-        if (data[0] != 0u && !xf__few(p) && (XF__IX(e + 1u) != p->next || p->n == 0u)) {
-            /* A length's high byte other than 0, the commonest bad length (a
-             * flood of pairs), where the byte ends no candidate. */
+        if ((data[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) && !xf__few(p) &&
+            (XF__IX(e + 1u) != p->next || p->n == 0u)) {
+            /* A bad length (a flood of pairs has a high byte other than 0),
+             * where the byte ends no candidate. */
             p->stats.length_errors++;
             if (XF__IX(e + 1u) == p->next) {
                 xf__trim(p); /* no candidate: the first of four goes */
