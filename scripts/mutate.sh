@@ -227,7 +227,7 @@ M = [
      '    p->stats.bytes_skipped += xf__held(p);'),
     ('drop_skip_uncounted',
      'when the first candidate fails, the bytes before the next one are not counted in bytes_skipped',
-     '        p->stats.bytes_skipped += (unsigned)XF__IX(p->at[1] - p->at[0]);\n',
+     '        p->stats.bytes_skipped += (unsigned)XF__IX(p->at[XF__K > 1 ? 1 : 0] - p->at[0]); /* (one slot: never) */\n',
      ''),
     ('credit_no_cost',
      'a candidate admitted behind others costs no credit',

@@ -89,9 +89,10 @@
 #endif
 /**
  * Candidates (a header pair and a valid length) the parser checks at once,
- * 1..16 (default 4). A candidate that arrives while this many that end
- * sooner are pending is given up unchecked (xf_parser_stats::given_up).
- * Each slot costs 3 bytes of RAM (docs/codec.md).
+ * 1..16 (default 4). A header that arrives while this many are pending is
+ * not looked at (xf_parser_stats::given_up); the parser's credit allows
+ * four at once anyway, more only as it checks bytes (docs/codec.md). Each
+ * slot costs 3 bytes of RAM.
  */
 #ifndef XF_PARSER_SLOTS
 #define XF_PARSER_SLOTS 4

@@ -9,14 +9,17 @@
  * ::XF_PACKET_MAX_LEN]) and CRC are right.
  *
  * How. A *candidate* is a header pair followed by a valid length. The parser
- * tracks up to ::XF_PARSER_SLOTS candidates at once, in the order in which
- * they end, with one running CRC for all of them, and checks each when its
- * last byte arrives: the first intact one is returned at once, and the
- * others, which overlap it, are dropped. So a frame behind noise, a
- * truncated packet, a false header or a bogus length comes out on time.
- * First come, first served: while every slot is taken, no header is looked
- * at, so a frame that begins then is lost (stats.given_up counts the times
- * the slots filled); docs/codec.md states the exact rules.
+ * tracks up to ::XF_PARSER_SLOTS candidates at once, with one running CRC
+ * for all of them, and checks each when its last byte arrives: the first
+ * intact one is returned at once, and the others, which overlap it, are
+ * dropped. So a frame behind noise, a truncated packet, a false header or a
+ * bogus length comes out on time. First come, first served, within a
+ * credit: a candidate that begins behind others costs credit, which the
+ * bytes checked earn back (four candidates at once from a full credit, then
+ * about one per 63 bytes). While every slot is taken or the credit is short,
+ * no header is looked at, so a frame that begins then is lost
+ * (stats.given_up counts the times this began). That bounds the work any
+ * input can cause; docs/codec.md states the exact rules and the bound.
  *
  * Counters only ever increase (the application may zero them):
  *
@@ -55,7 +58,8 @@ typedef struct xf_parser_stats {
     uint32_t crc_errors;    /**< candidates (header and valid length) whose CRC failed */
     uint32_t length_errors; /**< header pairs followed by a length outside [72, XF_PACKET_MAX_LEN] */
     uint32_t bytes_skipped; /**< bytes dropped as part of no valid frame */
-    uint32_t given_up;      /**< times a candidate took the last free slot (headers are then not looked at) */
+    uint32_t given_up;      /**< times the parser stopped looking at headers: a candidate took the last free slot
+                                 or left the credit short (docs/codec.md) */
 } xf_parser_stats;
 
 /** Parser state. Treat the members as private except `stats`. */
@@ -344,7 +348,7 @@ static void xf__drop(xf_parser *p, unsigned k)
 {
     p->stats.crc_errors++;
     if (k == 0u && p->n > 1u) {
-        p->stats.bytes_skipped += (unsigned)XF__IX(p->at[1] - p->at[0]);
+        p->stats.bytes_skipped += (unsigned)XF__IX(p->at[XF__K > 1 ? 1 : 0] - p->at[0]); /* (one slot: never) */
     } else if (p->n == 1u) {
         p->next = XF__IX(p->at[0] + 4u); /* (xf__head: four before next) */
     }
