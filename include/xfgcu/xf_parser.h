@@ -303,7 +303,9 @@ static inline unsigned xf__full(unsigned credit) { return (credit < XF__COST) ? 
 static inline void xf__earn(xf_parser *p, unsigned m)
 {
     unsigned c = p->credit + m;
-    p->credit = (uint8_t)((c < XF__CAP) ? c : XF__CAP);
+    if (p->credit != XF__CAP) { /* (full on a clean stream: no store) */
+        p->credit = (uint8_t)((c < XF__CAP) ? c : XF__CAP);
+    }
 }
 
 /* Bring crc up to the last byte held: bytes are stored first and CRC'd
@@ -402,7 +404,9 @@ static void xf__admit(xf_parser *p, unsigned len)
     }
     p->n++;
     p->credit = (uint8_t)((p->n == XF__K) ? xf__full(p->credit) : p->credit);
-    p->stats.given_up += (p->credit < XF__COST); /* deaf to headers until a check earns enough */
+    if (p->credit < XF__COST) { /* deaf to headers until a check earns enough */
+        p->stats.given_up++;
+    }
     XF_ASSERT(p->n <= XF__K && xf__len(p, k) == len);
 }
 
@@ -436,7 +440,9 @@ static void xf__emit(xf_parser *p, unsigned k, xf_frame *frame)
     unsigned i0 = p->at[k], len = xf__len(p, k);
     XF_ASSERT(xf__len_ok(len) && p->ring[i0] == p->h0 &&
               xf_crc16(p->ring + i0, (i0 + len <= XF_PARSER_RING) ? len : 0u) == 0u);
-    p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->at[0]); /* (the first held: xf__head) */
+    if (k > 0u) { /* the bytes before it (from the first held: xf__head) */
+        p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->at[0]);
+    }
     p->stats.frames++;
     if (i0 + len > XF_PARSER_RING) {
         xf__reverse(p->ring, 0, i0);
@@ -453,11 +459,11 @@ static void xf__emit(xf_parser *p, unsigned k, xf_frame *frame)
  * start; the first intact one is returned (1), failed ones go. */
 static int xf__ends(xf_parser *p, xf_frame *frame)
 {
-    unsigned k = 0, alone = (p->n == 1u);
+    unsigned k = 0;
     xf__sum(p);
-    while (k < p->n) {
+    do {
         uint16_t w = p->want[k];
-        if (!alone && xf__fin(p, k) != p->end) { /* (one alone ends here: next) */
+        if (xf__fin(p, k) != p->end) {
             k++;
         } else if (p->crc == ((w == 0u) ? 0u : xf__crc_zeros(w, xf__len(p, k) - 4u))) {
             xf__emit(p, k, frame);
@@ -465,7 +471,7 @@ static int xf__ends(xf_parser *p, xf_frame *frame)
         } else {
             xf__drop(p, k);
         }
-    }
+    } while (k < p->n);
     return 0;
 }
 
@@ -605,7 +611,9 @@ static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *us
     if (XF__K == 1) { /* as xf__admit: the packet's candidate takes the last slot */
         p->credit = (uint8_t)xf__full(p->credit);
     }
-    p->stats.given_up += (p->credit < XF__COST); /* as xf__admit */
+    if (p->credit < XF__COST) { /* as xf__admit */
+        p->stats.given_up++;
+    }
     if (m < len) {
         XF_MEMCPY(p->ring, d, m);
         xf__first(p);
