@@ -337,7 +337,7 @@ static void xf__settle(xf_parser *p)
         p->next = XF__IX(p->end - held + 4u);
         return;
     }
-    for (k = 1; k < p->n; k++) {
+    for (k = 1; k < p->n && k < XF__K; k++) { /* (the bound is for the compiler) */
         soon = (xf__left(p, k) < xf__left(p, soon)) ? k : soon;
     }
     p->next = (uint8_t)xf__fin(p, soon);
