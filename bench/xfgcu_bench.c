@@ -20,6 +20,7 @@
  *                                          prints the number of intact frames first.
  *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
  *                                          | pairs | cpairs | mixed | mixed79 | credit
+ *                                          | chain
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -74,6 +75,11 @@
  *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): candidates as
  *                fast as the parser's credit admits them, each checked with a
  *                product, and every byte between them looked at
+ *   chain        two 72-byte claims 4 bytes apart and 32 pairs, four times, then
+ *                three claims and 32 pairs, repeated: each unit's second claim fails
+ *                as the next unit's first header completes, so that one is a first
+ *                candidate (free of credit) every 72 bytes, with one behind it
+ *                whenever the credit allows and a bad length every two bytes
  *   Which crafted stream costs most depends on the parser: bench.sh's table says.
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
@@ -247,12 +253,13 @@ typedef enum xb_kind {
     XB_MIXED,
     XB_MIXED79,
     XB_CREDIT,
+    XB_CHAIN,
     XB_KINDS
 } xb_kind;
 
 static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy",   "adversarial", "dense", "uart4",
                                                     "uart3", "storm",   "h0run",       "pairs", "cpairs",
-                                                    "mixed", "mixed79", "credit"};
+                                                    "mixed", "mixed79", "credit",      "chain"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -441,6 +448,19 @@ static void xb_generate(xb_kind kind, xb_out *o)
                 xb_put1(o, XF_GCU_HEADER0);
             }
             break;
+        case XB_CHAIN: {
+            /* two claims and pairs (72 bytes) four times, then three claims and pairs */
+            size_t k, c;
+            for (k = 0; k < 5u; k++) {
+                for (c = 0; c < ((k < 4u) ? 2u : 3u); c++) {
+                    xb_false_cand(o, XF_PACKET_MIN_LEN);
+                }
+                for (i = 0; i < 32u; i++) {
+                    xb_pair(o);
+                }
+            }
+            break;
+        }
         case XB_CPAIRS: {
             /* a 255-byte candidate filled with pairs; the next one begins where it ends */
             xb_false_cand(o, 255);
@@ -857,19 +877,20 @@ static void xb_print_delay(const xb_delay_result *dr)
 
 static int xb_usage(void)
 {
-    fprintf(stderr,
-            "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-            "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-            "       xfgcu_bench crc FILE [--chunk N]\n"
-            "       xfgcu_bench floor FILE [--chunk N]\n"
-            "       xfgcu_bench gen "
-            "valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed|mixed79|credit N_BYTES FILE\n"
-            "       xfgcu_bench pack N | unpack N\n"
-            "       xfgcu_bench time KIND N_BYTES [REPS]\n"
-            "       xfgcu_bench selftest\n"
-            "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-            " default 4096; parse prints the frames found first, then the counters and\n"
-            " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+    fprintf(
+        stderr,
+        "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
+        "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
+        "       xfgcu_bench crc FILE [--chunk N]\n"
+        "       xfgcu_bench floor FILE [--chunk N]\n"
+        "       xfgcu_bench gen "
+        "valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed|mixed79|credit|chain N_BYTES FILE\n"
+        "       xfgcu_bench pack N | unpack N\n"
+        "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+        "       xfgcu_bench selftest\n"
+        "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
+        " default 4096; parse prints the frames found first, then the counters and\n"
+        " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
     return 2;
 }
 
@@ -1029,7 +1050,7 @@ static int xb_floor_selftest(const xb_out *o, const size_t *chunks, size_t nchun
  * inserted; more is a false candidate whose CRC matched, possible but very
  * rare), when the byte counters do not add up, or when the floor misses a
  * frame of valid. On the crafted streams (adversarial, dense, storm, h0run,
- * pairs, cpairs, mixed, mixed79, credit) the parser may give up candidates by design:
+ * pairs, cpairs, mixed, mixed79, credit, chain) the parser may give up candidates by design:
  * found / inserted is printed, not checked. The frames found in each
  * chunking and the worst delay are printed. */
 static int xb_cmd_selftest(void)

@@ -269,6 +269,18 @@ M = [
      'a returned frame that began second: the bytes before it are not counted in bytes_skipped',
      '    if (k > 0u) { /* the bytes before it',
      '    if (k > 1u) { /* the bytes before it'),
+    ('plain_no_end',
+     'a few bytes fed together: a byte that ends a candidate is stored unchecked',
+     "    } else if (XF__IX(e + 1u) == p->next && p->n > 0u) {\n        return 0; /* a candidate's end */",
+     "    } else if (0) {\n        return 0; /* a candidate's end */"),
+    ('plain_no_few',
+     'a few bytes fed together: a pair of stale ring bytes (fewer than three held) counts a bad length',
+     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p) ||',
+     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) ||'),
+    ('plain_end_pair',
+     'a few bytes fed together: a bad length on a byte that also ends a candidate skips the check',
+     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p) ||\n            (XF__IX(e + 1u) == p->next && p->n > 0u)) {',
+     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p)) {'),
 ]
 by_name = {m[0]: m for m in M}
 assert len(by_name) == len(M), "two mutants share a name"

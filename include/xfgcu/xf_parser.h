@@ -193,6 +193,9 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 #define XF__RMASK (XF_PARSER_RING - 1u)
 #define XF__IX(i) ((uint8_t)((i)&XF__RMASK))
 #define XF__K     XF_PARSER_SLOTS
+/* Chunks shorter than this go one byte at a time (xf__bytes), unless they
+ * begin a packet: a call of the chunk path costs more than their tests. */
+#define XF__FEW 12u
 /* The credit, in bytes: admitting a candidate behind another costs
  * XF__COST, and each byte CRC'd while candidates are pending earns one, up
  * to XF__CAP. So such candidates are admitted at most once per XF__COST
@@ -769,10 +772,16 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
 }
 
 /* Store one byte that needs no look. */
-static inline xf_parse_status xf__store1(xf_parser *p, uint8_t b, size_t *consumed)
+static inline void xf__store(xf_parser *p, uint8_t b)
 {
     p->ring[p->end] = b;
     p->end = XF__IX(p->end + 1u);
+}
+
+/* Store one byte fed alone that needs no look. */
+static inline xf_parse_status xf__store1(xf_parser *p, uint8_t b, size_t *consumed)
+{
+    xf__store(p, b);
     p->stats.bytes_in++;
     if (consumed != NULL) {
         *consumed = 1;
@@ -804,6 +813,63 @@ XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf
     return r;
 }
 
+/* A byte of a few fed together: when it needs no look, it is stored (the
+ * first of four held goes when hunting, a bad length is counted), 1; when
+ * it ends a candidate or completes a header pair to look at, nothing is
+ * done, 0 (xf__rest). The tests of the one-byte path in xf_parser_feed(). */
+static inline int xf__plain(xf_parser *p, uint8_t b)
+{
+    unsigned e = p->end;
+    if (p->ring[XF__IX(e - 3u)] == p->h0 && p->ring[XF__IX(e - 2u)] == xf__h1(p) && !xf__deaf(p)) {
+        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p) ||
+            (XF__IX(e + 1u) == p->next && p->n > 0u)) {
+            return 0; /* a valid length, stale ring bytes, or a candidate's end too */
+        }
+        p->stats.length_errors++;
+    } else if (XF__IX(e + 1u) == p->next && p->n > 0u) {
+        return 0; /* a candidate's end */
+    }
+    if (XF__IX(e + 1u) == p->next) {
+        xf__trim(p); /* no candidate: the first of four goes */
+    }
+    xf__store(p, b);
+    return 1;
+}
+
+/* A few bytes from d[i], which needs a look: it takes the byte path, the
+ * rest xf__plain() or the byte path, up to a frame's last byte. */
+XF__COLD xf_parse_status xf__rest(xf_parser *p, const uint8_t *d, size_t len, size_t i, size_t *consumed,
+                                  xf_frame *frame)
+{
+    int found = xf__byte(p, d[i++], frame);
+    for (; !found && i < len; i++) {
+        found = !xf__plain(p, d[i]) && xf__byte(p, d[i], frame);
+    }
+    p->stats.bytes_in += (uint32_t)i;
+    if (consumed != NULL) {
+        *consumed = i;
+    }
+    return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
+}
+
+/* A few bytes (2 to XF__FEW - 1), not a packet's start: one at a time, as
+ * in the one-byte path, for the chunk path's call costs more than their
+ * tests (docs/codec.md). */
+XF__COLD xf_parse_status xf__bytes(xf_parser *p, const uint8_t *d, size_t len, size_t *consumed, xf_frame *frame)
+{
+    size_t i;
+    for (i = 0; i < len; i++) {
+        if (!xf__plain(p, d[i])) {
+            return xf__rest(p, d, len, i, consumed, frame);
+        }
+    }
+    p->stats.bytes_in += (uint32_t)len;
+    if (consumed != NULL) {
+        *consumed = len;
+    }
+    return XF_PARSE_MORE;
+}
+
 XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
@@ -833,6 +899,9 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
             return xf__store1(p, data[0], consumed);
         }
         return xf__pair1(p, data[0], consumed, frame);
+    }
+    if (len < XF__FEW && (p->n > 0u || xf__held(p) > 0u || !xf__starts(p, data, len))) {
+        return xf__bytes(p, data, len, consumed, frame); /* (a packet's start: the fresh path) */
     }
     return xf__feed(p, data, len, consumed, frame);
 }
