@@ -16,8 +16,8 @@
 # xf_parser_feed (--toggle-collect; everything it calls included): the parser's own
 # cost, not the benchmark's feeding loop (about 24 more per call at one byte per call);
 # start-up and file reading are excluded; the 1 MiB
-# stream is a prefix of the 2 MiB one. The same sizes at every chunk size (1, 2, 4, 8,
-# 16, 64, 4096 bytes per feed call): 256 KiB streams would make the one-byte runs
+# stream is a prefix of the 2 MiB one. The same sizes at every chunk size (1, 2, 3, 4,
+# 8, 16, 64, 4096 bytes per feed call): 256 KiB streams would make the one-byte runs
 # cheaper but move some figures by up to 8 % (dense, 16 per call, old parser),
 # and the whole script fits in CI's budget without them. The CRC floor is xb_crc
 # (xf_crc16_update over the same bytes, 4096 per call) measured the same way; the
@@ -74,7 +74,7 @@ build "t256$suffix" ON
 
 # valid first: the other rows are compared with it
 kinds=(valid noisy uart4 uart3 adversarial dense storm h0run pairs cpairs mixed mixed79 credit chain)
-chunks=(1 2 4 8 16 64 4096)
+chunks=(1 2 3 4 8 16 64 4096)
 MiB=1048576
 streams="$bdir/streams"
 mkdir -p "$streams"
@@ -106,17 +106,17 @@ fi
 N=100000
 declare -A res found delay
 hdr() {
-  printf '%-6s %-12s %6s %6s %6s %6s %6s %6s %6s %6s %15s %7s\n' "$@"
+  printf '%-6s %-12s %6s %6s %6s %6s %6s %6s %6s %6s %6s %15s %7s\n' "$@"
 }
 echo
-echo "Ir/byte inside xf_parser_feed with the parser fed 1, 2, 4, 8, 16, 64, 4096 bytes per call; the CRC floor"
+echo "Ir/byte inside xf_parser_feed with the parser fed 1, 2, 3, 4, 8, 16, 64, 4096 bytes per call; the CRC floor"
 echo "(xf_crc16_update alone, 4096 per call); frames found / intact inserted (2 MiB, 4096 per"
 echo "call; '!' when another chunk size found another number, listed below the table); worst"
 echo "delay: bytes between a frame's last byte and the end of the data handed over when it came"
 echo "out, the largest over the chunk sizes (0: no added latency)."
 echo
-hdr table stream c=1 c=2 c=4 c=8 c=16 c=64 c=4096 "CRC" "frames" delay
-hdr ------ ------------ ------ ------ ------ ------ ------ ------ ------ ------ --------------- -------
+hdr table stream c=1 c=2 c=3 c=4 c=8 c=16 c=64 c=4096 "CRC" "frames" delay
+hdr ------ ------------ ------ ------ ------ ------ ------ ------ ------ ------ ------ --------------- -------
 notes=()
 for t in nibble t256; do
   b="$bdir/$t$suffix/bench/xfgcu_bench"
@@ -164,7 +164,7 @@ for t in nibble t256; do
   i1=$(ir "$b" xb_parse decode "$streams/valid-1m.bin" --no-delay)
   i2=$(ir "$b" xb_parse decode "$streams/valid-2m.bin" --no-delay)
   res[$t.decode]=$(per "$i2" "$i1" "$MiB")
-  hdr "$t" "valid+decode" - - - - - - "${res[$t.decode]}" "" "(parse+decode)" ""
+  hdr "$t" "valid+decode" - - - - - - - "${res[$t.decode]}" "" "(parse+decode)" ""
   echo "worst Ir/byte over every stream and chunk: $worst ($worst_at)"
   res[$t.worst]="$worst ($worst_at)"
   echo

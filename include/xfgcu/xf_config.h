@@ -195,10 +195,15 @@
 
 /* Internal: a function kept out of line (GCC, clang), so that its caller's
  * fast path needs no stack frame (the parser's one-byte feed). */
+/* Internal: a function inlined where it is called (GCC, clang), so that a
+ * fast path written once serves two callers (the parser's one and two
+ * bytes) without a call. */
 #if defined(__GNUC__)
-#define XF__COLD __attribute__((noinline)) static
+#define XF__COLD   __attribute__((noinline)) static
+#define XF__INLINE __attribute__((always_inline)) static inline
 #else
-#define XF__COLD static
+#define XF__COLD   static
+#define XF__INLINE static inline
 #endif
 
 /**

@@ -779,22 +779,22 @@ static inline void xf__store(xf_parser *p, uint8_t b)
 }
 
 /* Store one byte fed alone that needs no look. */
-static inline xf_parse_status xf__store1(xf_parser *p, uint8_t b, size_t *consumed)
+static inline xf_parse_status xf__store1(xf_parser *p, uint8_t b, size_t *consumed, size_t used)
 {
     xf__store(p, b);
     p->stats.bytes_in++;
     if (consumed != NULL) {
-        *consumed = 1;
+        *consumed = used;
     }
     return XF_PARSE_MORE;
 }
 
 /* One byte fed alone that may need a look. */
-XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
+XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, size_t used, xf_frame *frame)
 {
     p->stats.bytes_in++;
     if (consumed != NULL) {
-        *consumed = 1;
+        *consumed = used;
     }
     return (xf_parse_status)xf__byte(p, b, frame); /* 1 is XF_PARSE_FRAME, 0 XF_PARSE_MORE */
 }
@@ -802,13 +802,13 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, xf
 /* One byte fed alone that completes a pair of the bytes held, h0 h1, with
  * a slot free, and that xf_parser_feed() did not settle: a length's high
  * byte of 0, a candidate's end, or stale ring bytes. */
-XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, xf_frame *frame)
+XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, size_t used, xf_frame *frame)
 {
     xf_parse_status r;
     if ((XF__IX(p->end + 1u) == p->next && p->n > 0u) || xf__few(p)) {
-        return xf__feed1(p, b, consumed, frame); /* a candidate's end first, or stale ring bytes */
+        return xf__feed1(p, b, consumed, used, frame); /* a candidate's end first, or stale ring bytes */
     }
-    r = xf__store1(p, b, consumed); /* the byte path without its tests for an end and a pair */
+    r = xf__store1(p, b, consumed, used); /* the byte path without its tests for an end and a pair */
     xf__no_end(p, 1);
     return r;
 }
@@ -870,40 +870,70 @@ XF__COLD xf_parse_status xf__bytes(xf_parser *p, const uint8_t *d, size_t len, s
     return XF_PARSE_MORE;
 }
 
-XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
+/* One byte, the last of the call's used bytes (*consumed = used, when not
+ * NULL): most need two tests and a store, and no stack frame. */
+XF__INLINE xf_parse_status xf__one(xf_parser *p, const uint8_t *d, size_t *consumed, size_t used, xf_frame *frame)
 {
-    if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
-        return XF_PARSE_ERR_ARG;
+    unsigned e = p->end;
+    if (p->ring[XF__IX(e - 3u)] != p->h0 || p->ring[XF__IX(e - 2u)] != xf__h1(p) || xf__deaf(p)) {
+        /* A UART's byte that completes no header pair to look at. */
+        if (XF__IX(e + 1u) != p->next) {
+            return xf__store1(p, d[0], consumed, used);
+        }
+        if (p->n == 0u) {
+            xf__trim(p);
+            return xf__store1(p, d[0], consumed, used);
+        }
+        return xf__feed1(p, d[0], consumed, used, frame); /* a candidate's end */
     }
-    if (len == 1u) {
-        unsigned e = p->end;
-        if (p->ring[XF__IX(e - 3u)] != p->h0 || p->ring[XF__IX(e - 2u)] != xf__h1(p) || xf__deaf(p)) {
-            /* A UART's byte that completes no header pair to look at. */
-            if (XF__IX(e + 1u) != p->next) {
-                return xf__store1(p, data[0], consumed);
-            }
-            if (p->n == 0u) {
-                xf__trim(p);
-                return xf__store1(p, data[0], consumed);
-            }
-            return xf__feed1(p, data[0], consumed, frame); /* a candidate's end */
+    if ((d[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) && !xf__few(p) &&
+        (XF__IX(e + 1u) != p->next || p->n == 0u)) {
+        /* A bad length (a flood of pairs has a high byte other than 0),
+         * where the byte ends no candidate. */
+        p->stats.length_errors++;
+        if (XF__IX(e + 1u) == p->next) {
+            xf__trim(p); /* no candidate: the first of four goes */
         }
-        if ((data[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) && !xf__few(p) &&
-            (XF__IX(e + 1u) != p->next || p->n == 0u)) {
-            /* A bad length (a flood of pairs has a high byte other than 0),
-             * where the byte ends no candidate. */
-            p->stats.length_errors++;
-            if (XF__IX(e + 1u) == p->next) {
-                xf__trim(p); /* no candidate: the first of four goes */
-            }
-            return xf__store1(p, data[0], consumed);
-        }
-        return xf__pair1(p, data[0], consumed, frame);
+        return xf__store1(p, d[0], consumed, used);
+    }
+    return xf__pair1(p, d[0], consumed, used, frame);
+}
+
+/* Two or three bytes: the first ones, then the last as if alone (no stack
+ * frame). */
+XF__COLD xf_parse_status xf__two(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
+{
+    if (!xf__plain(p, data[0])) {
+        return xf__rest(p, data, len, 0, consumed, frame);
+    }
+    if (len == 3u && !xf__plain(p, data[1])) {
+        return xf__rest(p, data, len, 1, consumed, frame);
+    }
+    p->stats.bytes_in += (uint32_t)(len - 1u);
+    return xf__one(p, data + len - 1u, consumed, len, frame);
+}
+
+/* Any number of bytes but one: two, a few, or a chunk. */
+XF__COLD xf_parse_status xf__many(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
+{
+    if (len == 2u || len == 3u) {
+        return xf__two(p, data, len, consumed, frame);
     }
     if (len < XF__FEW && (p->n > 0u || xf__held(p) > 0u || !xf__starts(p, data, len))) {
         return xf__bytes(p, data, len, consumed, frame); /* (a packet's start: the fresh path) */
     }
     return xf__feed(p, data, len, consumed, frame);
+}
+
+XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
+{
+    if (p == NULL || frame == NULL || (data == NULL && len > 0u)) {
+        return XF_PARSE_ERR_ARG;
+    }
+    if (len != 1u) {
+        return xf__many(p, data, len, consumed, frame);
+    }
+    return xf__one(p, data, consumed, 1, frame);
 }
 /* cppcheck-suppress constParameter ; frame stays writable: a parser that holds frames back may fill it */
 XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame)
