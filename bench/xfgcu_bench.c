@@ -68,9 +68,10 @@
  *   cpairs       8A 5E FF 00 and 125 pairs and an 8A, repeated: the pairs inside a
  *                pending candidate (a 255-byte claim that ends where the next begins)
  *   mixed        three 72-byte claims 24 bytes apart with pairs between them, repeated:
- *                a candidate checked every 24 bytes and a bad length every two
- *   mixed79      a 79-byte claim and 8 pairs, repeated (20 bytes): a candidate
- *                checked every 20 bytes, each product ending with 11 single bytes
+ *                a claim every 24 bytes (the credit admits fewer) and a bad length
+ *                every two
+ *   mixed79      a 79-byte claim and 8 pairs, repeated (20 bytes): a claim every 20
+ *                bytes (the credit admits fewer), each product ending with 11 single bytes
  *                (the dearest remainder of a short claim), a bad length every two
  *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): candidates as
  *                fast as the parser's credit admits them, each checked with a

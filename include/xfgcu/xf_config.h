@@ -90,9 +90,9 @@
 /**
  * Candidates (a header pair and a valid length) the parser checks at once,
  * 1..16 (default 4). A header that arrives while this many are pending is
- * not looked at (xf_parser_stats::given_up); the parser's credit allows
- * four at once anyway, more only as it checks bytes (docs/codec.md). Each
- * slot costs 3 bytes of RAM.
+ * not looked at (xf_parser_stats::given_up counts the times the parser
+ * stops looking); the parser's credit allows four at once anyway, more only
+ * as it checks bytes (docs/codec.md). Each slot costs 3 bytes of RAM.
  */
 #ifndef XF_PARSER_SLOTS
 #define XF_PARSER_SLOTS 4

@@ -377,10 +377,11 @@ static inline void xf__first(xf_parser *p)
  * allows a candidate: a new one, the last in order of start. Its `want` is
  * what the CRC of everything before it contributes at its end: the frame is
  * intact exactly when the running CRC then equals want * x^(8 (len - 4))
- * (xf__crc_zeros). Alone, it moves to ring index 0 (xf__first). It costs
- * its credit; taking the last slot spends all. When the credit left is too
- * little for another, given_up counts it: no header is looked at until a
- * check earns enough. */
+ * (xf__crc_zeros). Alone, it moves to ring index 0 (xf__first) and costs
+ * nothing; behind others it costs XF__COST. Taking the last slot leaves
+ * less than another's cost. When the credit left is too little for
+ * another, given_up counts it: no header is looked at until a check earns
+ * enough or nothing is pending. */
 static void xf__admit(xf_parser *p, unsigned len)
 {
     unsigned k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
@@ -685,14 +686,15 @@ static size_t xf__give_back(xf_parser *p, size_t i)
     return i;
 }
 
-/* Candidates pending, at d[i]: store the bytes before candidate 0's last
- * and before the first valid header among them (its bad lengths counted),
- * and return the index of the byte that needs the byte path, or n. Every
- * slot taken: no header is looked at. The search begins three bytes back,
- * at pairs begun before i. */
+/* Candidates pending, at d[i]: store the bytes before the soonest end's
+ * last byte and before the first valid header among them (its bad lengths
+ * counted), and return the index of the byte that needs the byte path, or
+ * n. While headers are not looked at (every slot taken, or the credit
+ * short), none is searched for. The search begins three bytes back, at
+ * pairs begun before i. */
 static size_t xf__run(xf_parser *p, const uint8_t *d, size_t i, size_t n)
 {
-    size_t r = n - i, left = xf__left0(p) - 1u, k; /* up to candidate 0's last */
+    size_t r = n - i, left = xf__left0(p) - 1u, k; /* up to the soonest end's last */
     r = i + ((r < left) ? r : left);
     k = xf__deaf(p) ? r : xf__scan(p, d, (i < 3u) ? i : i - 3u, r, &p->stats.length_errors);
     xf__copy(p, d + i, k - i);
@@ -700,7 +702,7 @@ static size_t xf__run(xf_parser *p, const uint8_t *d, size_t i, size_t n)
 }
 
 /* The main loop: take bytes until a frame is complete (1) or all are taken
- * (0). A byte goes through the byte path when it ends candidate 0, completes
+ * (0). A byte goes through the byte path when it ends a candidate, completes
  * a valid header, or may complete a pair begun among the bytes held; runs
  * between are searched for pairs in d and copied. */
 static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_frame *frame)
@@ -739,8 +741,8 @@ XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len,
     size_t used = 0, m = 0;
     int found = 0;
     if (len > 0u && p->n > 0u && !xf__tail(p)) {
-        /* Inside a frame, the commonest chunk: the bytes before candidate
-         * 0's last and before the first h0 are only stored (no pair can end
+        /* Inside a frame, the commonest chunk: the bytes before the soonest
+         * end's last and before the first h0 are only stored (no pair can end
          * among them); with no h0, the last byte is stored with them and the
          * candidates that end there are checked at once. The main loop takes
          * the rest from the h0 on, with no second search. */
@@ -799,9 +801,9 @@ XF__COLD xf_parse_status xf__feed1(xf_parser *p, uint8_t b, size_t *consumed, si
     return (xf_parse_status)xf__byte(p, b, frame); /* 1 is XF_PARSE_FRAME, 0 XF_PARSE_MORE */
 }
 
-/* One byte fed alone that completes a pair of the bytes held, h0 h1, with
- * a slot free, and that xf_parser_feed() did not settle: a length's high
- * byte of 0, a candidate's end, or stale ring bytes. */
+/* One byte, the last of a call, that completes a pair of the bytes held,
+ * h0 h1, while headers are looked at, and that xf__one() did not settle: a
+ * valid length, a candidate's end too, or stale ring bytes. */
 XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, size_t used, xf_frame *frame)
 {
     xf_parse_status r;
