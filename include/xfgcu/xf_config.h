@@ -197,12 +197,16 @@
  * fast path needs no stack frame (the parser's one-byte feed). */
 /* Internal: a function inlined where it is called (GCC, clang), so that a
  * fast path written once serves two callers (the parser's one and two
- * bytes) without a call. */
+ * bytes) without a call; left to the compiler when optimising for size
+ * (-Os), where the copy would cost flash. */
 #if defined(__GNUC__)
-#define XF__COLD   __attribute__((noinline)) static
+#define XF__COLD __attribute__((noinline)) static
+#else
+#define XF__COLD static
+#endif
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
 #define XF__INLINE __attribute__((always_inline)) static inline
 #else
-#define XF__COLD   static
 #define XF__INLINE static inline
 #endif
 
