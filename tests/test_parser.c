@@ -322,6 +322,24 @@ static void check_output(const harness *h, const stream *s, const pr_model *m)
     }
 }
 
+/* A GCU harness that compares with the model of s after every call. */
+static void harness_model(harness *h, pr_model *m, const stream *s)
+{
+    model_run(s, XF_DIR_GCU, m);
+    harness_init(h, XF_DIR_GCU);
+    h->model = m;
+    h->base = s->buf;
+}
+
+/* Feed s's bytes [from, to) in chunks of c. */
+static void feed_chunks(harness *h, const stream *s, size_t from, size_t to, size_t c)
+{
+    size_t i;
+    for (i = from; i < to; i += c) {
+        harness_feed(h, s->buf + i, (i + c <= to) ? c : to - i);
+    }
+}
+
 typedef enum feed_mode { FEED_WHOLE, FEED_BYTES, FEED_CHUNKS, FEED_SMALL_CHUNKS } feed_mode;
 
 /* Build a stream from @p seed; the model must return every frame the
@@ -991,13 +1009,8 @@ static void test_adversarial_lengths(void **state)
     }
     gl = make_frame(&r, XF_DIR_GCU, 0, g);
     put(&s, g, gl);
-    model_run(&s, XF_DIR_GCU, &m);
-    harness_init(&h, XF_DIR_GCU);
-    h.model = &m;
-    h.base = s.buf;
-    for (i = 0; i < s.len; i += 1000) {
-        harness_feed(&h, s.buf + i, (i + 1000 <= s.len) ? 1000 : s.len - i);
-    }
+    harness_model(&h, &m, &s);
+    feed_chunks(&h, &s, 0, s.len, 1000);
     check_output(&h, &s, &m);
     if (XF_PACKET_MAX_LEN == 255) {
         /* the second frame always comes out, last; the first only if its header found a slot
@@ -1058,20 +1071,13 @@ static void test_credit_edges(void **state)
     for (c = 0; c < sizeof(chunks) / sizeof(chunks[0]); c++) {
         harness h;
         pr_model m;
-        model_run(&s, XF_DIR_GCU, &m);
-        harness_init(&h, XF_DIR_GCU);
-        h.model = &m;
-        h.base = s.buf;
-        for (i = 0; i < ylen; i += chunks[c]) {
-            harness_feed(&h, s.buf + i, (i + chunks[c] <= ylen) ? chunks[c] : ylen - i);
-        }
+        harness_model(&h, &m, &s);
+        feed_chunks(&h, &s, 0, ylen, chunks[c]);
         if (XF_PARSER_SLOTS >= 3) { /* L, y and the header inside y pending at once */
             assert_int_equal(h.nframes, 1);
             assert_true(h.p.n == 0u && h.p.credit < 63u);
         }
-        for (i = ylen; i < s.len; i += chunks[c]) {
-            harness_feed(&h, s.buf + i, (i + chunks[c] <= s.len) ? chunks[c] : s.len - i);
-        }
+        feed_chunks(&h, &s, ylen, s.len, chunks[c]);
         check_output(&h, &s, &m);
         if (XF_PARSER_SLOTS >= 2) { /* (one slot: the header inside y takes it while z begins) */
             assert_true(h.nframes > 0u && h.lens[h.nframes - 1u] == zl);
@@ -1150,13 +1156,8 @@ static void test_crafted_storms(void **state)
     for (c = 0; c < sizeof(chunks) / sizeof(chunks[0]); c++) {
         harness h;
         pr_model m;
-        model_run(&s, XF_DIR_GCU, &m);
-        harness_init(&h, XF_DIR_GCU);
-        h.model = &m;
-        h.base = s.buf;
-        for (i = 0; i < s.len; i += chunks[c]) {
-            harness_feed(&h, s.buf + i, (i + chunks[c] <= s.len) ? chunks[c] : s.len - i);
-        }
+        harness_model(&h, &m, &s);
+        feed_chunks(&h, &s, 0, s.len, chunks[c]);
         check_output(&h, &s, &m);
         assert_true(h.p.stats.length_errors > 0u && h.p.stats.crc_errors > 0u);
         if (XF_PACKET_MAX_LEN == 255) {
