@@ -734,8 +734,8 @@ static int xf__take(xf_parser *p, const uint8_t *d, size_t n, size_t *used, xf_f
     return 0;
 }
 
-/* Everything but one byte, out of line so that the one-byte path in
- * xf_parser_feed() needs no stack frame. */
+/* A chunk: twelve bytes or more, or a packet's start with nothing held
+ * (xf__many). */
 XF__COLD xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     size_t used = 0, m = 0;
@@ -818,7 +818,8 @@ XF__COLD xf_parse_status xf__pair1(xf_parser *p, uint8_t b, size_t *consumed, si
 /* A byte of a few fed together: when it needs no look, it is stored (the
  * first of four held goes when hunting, a bad length is counted), 1; when
  * it ends a candidate or completes a header pair to look at, nothing is
- * done, 0 (xf__rest). The tests of the one-byte path in xf_parser_feed(). */
+ * done, 0 (xf__rest). The tests of xf__one(), which also keeps the call's
+ * counters and hands the byte on at once. */
 static inline int xf__plain(xf_parser *p, uint8_t b)
 {
     unsigned e = p->end;
@@ -854,7 +855,7 @@ XF__COLD xf_parse_status xf__rest(xf_parser *p, const uint8_t *d, size_t len, si
     return found ? XF_PARSE_FRAME : XF_PARSE_MORE;
 }
 
-/* A few bytes (2 to XF__FEW - 1), not a packet's start: one at a time, as
+/* A few bytes (4 to XF__FEW - 1), not a packet's start: one at a time, as
  * in the one-byte path, for the chunk path's call costs more than their
  * tests (docs/codec.md). */
 XF__COLD xf_parse_status xf__bytes(xf_parser *p, const uint8_t *d, size_t len, size_t *consumed, xf_frame *frame)
