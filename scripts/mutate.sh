@@ -206,7 +206,7 @@ M = [
      '    if (len > 0u && p->n > 0u && !xf__tail(p)) {',
      '    if (len > 0u && p->n > 0u) {'),
     ('feed_end_unchecked',
-     "the in-frame path stores candidate 0's last byte without checking the candidate",
+     "the in-frame path stores the soonest end's last byte without checking the candidates",
      '        if (m == left) {\n            found = xf__look(p, 0, frame);',
      '        if (0) {\n            found = xf__look(p, 0, frame);'),
     ('pair1_no_held_check',
