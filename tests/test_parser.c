@@ -389,11 +389,7 @@ static void run_stream(uint64_t seed, xf_direction dir, size_t frames, feed_mode
     h.base = s.buf;
     switch (mode) {
     case FEED_WHOLE: harness_feed(&h, s.buf, s.len); break;
-    case FEED_BYTES:
-        for (i = 0; i < s.len; i++) {
-            harness_feed(&h, s.buf + i, 1);
-        }
-        break;
+    case FEED_BYTES: feed_chunks(&h, &s, 0, s.len, 1); break;
     case FEED_CHUNKS:
     case FEED_SMALL_CHUNKS:
         for (i = 0; i < s.len;) {
