@@ -302,6 +302,20 @@ static inline int xf__deaf(const xf_parser *p) { return p->credit < XF__COST && 
 /* The credit once a candidate took the last slot: short of another's. */
 static inline unsigned xf__full(unsigned credit) { return (credit < XF__COST) ? credit : XF__COST - 1u; }
 
+/* A candidate was just taken, the n-th pending: taking the last slot leaves
+ * the credit short of another's. When the credit is short, given_up counts
+ * it: no header is looked at until a check earns enough or nothing is
+ * pending. */
+static inline void xf__taken(xf_parser *p, unsigned n)
+{
+    if (n == XF__K) {
+        p->credit = (uint8_t)xf__full(p->credit);
+    }
+    if (p->credit < XF__COST) {
+        p->stats.given_up++;
+    }
+}
+
 /* Credit for m bytes CRC'd. */
 static inline void xf__earn(xf_parser *p, unsigned m)
 {
@@ -378,10 +392,7 @@ static inline void xf__first(xf_parser *p)
  * what the CRC of everything before it contributes at its end: the frame is
  * intact exactly when the running CRC then equals want * x^(8 (len - 4))
  * (xf__crc_zeros). Alone, it moves to ring index 0 (xf__first) and costs
- * nothing; behind others it costs XF__COST. Taking the last slot leaves
- * less than another's cost. When the credit left is too little for
- * another, given_up counts it: no header is looked at until a check earns
- * enough or nothing is pending. */
+ * nothing; behind others it costs XF__COST; then xf__taken. */
 static void xf__admit(xf_parser *p, unsigned len)
 {
     unsigned k = p->n, pair = (p->h0 == XF_GCU_HEADER0) ? XF__GCU_PAIR_CRC : XF__HOST_PAIR_CRC;
@@ -407,10 +418,7 @@ static void xf__admit(xf_parser *p, unsigned len)
         }
     }
     p->n++;
-    p->credit = (uint8_t)((p->n == XF__K) ? xf__full(p->credit) : p->credit);
-    if (p->credit < XF__COST) { /* deaf to headers until a check earns enough */
-        p->stats.given_up++;
-    }
+    xf__taken(p, p->n);
     XF_ASSERT(p->n <= XF__K && xf__len(p, k) == len);
 }
 
@@ -612,12 +620,7 @@ static inline int xf__fresh(xf_parser *p, const uint8_t *d, size_t n, size_t *us
         }
     }
     *used = m;
-    if (XF__K == 1) { /* as xf__admit: the packet's candidate takes the last slot */
-        p->credit = (uint8_t)xf__full(p->credit);
-    }
-    if (p->credit < XF__COST) { /* as xf__admit */
-        p->stats.given_up++;
-    }
+    xf__taken(p, 1); /* the packet's candidate, as if admitted */
     if (m < len) {
         XF_MEMCPY(p->ring, d, m);
         xf__first(p);
