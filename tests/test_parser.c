@@ -1041,7 +1041,6 @@ static void test_credit_edges(void **state)
     static const size_t chunks[] = {1, 5, 16, 4096};
     uint8_t y[72], z[256];
     size_t i, c, zl, ylen;
-    uint16_t crc;
     stream s;
     test_rng r;
     (void)state;
@@ -1055,11 +1054,8 @@ static void test_credit_edges(void **state)
     }
     put(&s, claim72, 4);
     memset(y, 0x11, sizeof(y));
-    memcpy(y, claim72, 4);
     memcpy(y + 64, claim72, 4);
-    crc = xf_crc16(y, 70);
-    y[70] = (uint8_t)(crc >> 8);
-    y[71] = (uint8_t)crc;
+    ref_finish_packet(y, sizeof(y), XF_DIR_GCU);
     put(&s, y, sizeof(y));
     ylen = s.len;
     zl = make_frame(&r, XF_DIR_GCU, 0, z);
