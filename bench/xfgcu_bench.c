@@ -878,20 +878,22 @@ static void xb_print_delay(const xb_delay_result *dr)
 
 static int xb_usage(void)
 {
-    fprintf(
-        stderr,
-        "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-        "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-        "       xfgcu_bench crc FILE [--chunk N]\n"
-        "       xfgcu_bench floor FILE [--chunk N]\n"
-        "       xfgcu_bench gen "
-        "valid|noisy|uart4|uart3|adversarial|dense|storm|h0run|pairs|cpairs|mixed|mixed79|credit|chain N_BYTES FILE\n"
-        "       xfgcu_bench pack N | unpack N\n"
-        "       xfgcu_bench time KIND N_BYTES [REPS]\n"
-        "       xfgcu_bench selftest\n"
-        "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-        " default 4096; parse prints the frames found first, then the counters and\n"
-        " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+    size_t k;
+    fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
+                    "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
+                    "       xfgcu_bench crc FILE [--chunk N]\n"
+                    "       xfgcu_bench floor FILE [--chunk N]\n"
+                    "       xfgcu_bench gen ");
+    for (k = 0; k < XB_KINDS; k++) {
+        fprintf(stderr, "%s%s", (k > 0u) ? "|" : "", xb_kind_names[k]);
+    }
+    fprintf(stderr, " N_BYTES FILE\n"
+                    "       xfgcu_bench pack N | unpack N\n"
+                    "       xfgcu_bench time KIND N_BYTES [REPS]\n"
+                    "       xfgcu_bench selftest\n"
+                    "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
+                    " default 4096; parse prints the frames found first, then the counters and\n"
+                    " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
     return 2;
 }
 
