@@ -1,67 +1,109 @@
 #!/usr/bin/env bash
-# The whole test suite: what CI runs (.ci/run). Installs what it needs first (Debian packages).
-# Stages: gcc -Werror Debug build + ctest (the Wireshark dissector's tests with tshark among them);
-# the Python package's pytest suite; the README's recipes as printed (Release gcc -O3 + ctest,
-# install to a fresh prefix, find_package / pkg-config / add_subdirectory consumers run, the Python
-# package installed into a venv and tested, a capture dissected by tshark, the clang
-# ASan+UBSan preset + ctest, the bare-metal presets); gcc -O2, clang -O2 and -O3 builds + ctest;
-# fuzz smoke; compiler matrix; docs (Doxygen with warnings as errors, man page, no references
-# outside the project); static analysis; MCU sizes; big-endian tests under qemu; benchmark figures
-# (printed, never asserted).
+# The whole test suite, in named stages: what CI runs (.ci/run). Installs what it needs first
+# (Debian packages, scripts/setup.sh --dev).
+#
+#   scripts/test.sh                 every stage, in order; then a table of stage, seconds, verdict
+#   scripts/test.sh STAGE [STAGE…]  only these (each builds what it needs), e.g. scripts/test.sh lint
+#   scripts/test.sh --list          the stages and what each checks
+#
+# A failing stage does not stop the others: every stage gets its own verdict, and the run fails
+# at the end if any stage failed. Each stage runs in its own process, so it can be run alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh --dev
 jobs=$(nproc)
+
+stages=(tree build python readme optimised fuzz matrix docs lint mcu bigendian bench mutation)
+
+describe() {
+  case $1 in
+    tree)      echo "no binaries, build products or files over 1 MB tracked (scripts/check_tree.py)" ;;
+    build)     echo "gcc Debug build with -Werror (the Python package's native library too), every ctest" ;;
+    python)    echo "the Python package's tests (pytest, hypothesis) over build/gcc's library and program" ;;
+    readme)    echo "every recipe README.md prints, run as printed (Release, install, consumers, presets)" ;;
+    optimised) echo "gcc -O2, clang -O2, clang -O3 builds with -Werror, their tests" ;;
+    fuzz)      echo "libFuzzer harnesses over the saved corpus, and a short run" ;;
+    matrix)    echo "gcc/clang x C99/C11, headers alone as C and C++, a user TU at -O0..-O3/-Os" ;;
+    docs)      echo "API reference (Doxygen, warnings are errors), man page current, nothing outside" ;;
+    lint)      echo "generated files current, cppcheck, clang-tidy, clang-format, the parser's size" ;;
+    mcu)       echo "Cortex-M4 firmware and RISC-V builds, their flash and RAM" ;;
+    bigendian) echo "codec and client tests on s390x under qemu-user" ;;
+    bench)     echo "parser instructions per byte (callgrind), client latency and CPU, send's time" ;;
+    mutation)  echo "named mutants of the parser, each killed by its tests (scripts/mutate.sh)" ;;
+    *) return 1 ;;
+  esac
+}
+
+# The Debug build that several stages use; incremental when it exists.
+gcc_build() {
+  cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc -DXFGCU_BUILD_PYTHON=ON >/dev/null
+  cmake --build build/gcc --parallel "$jobs"
+}
+
+stage_tree() { scripts/check_tree.py --self-test && scripts/check_tree.py; }
+stage_build() { gcc_build && ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"; }
+stage_python() { gcc_build >/dev/null && python/run_tests.sh build/gcc; }
+stage_readme() { scripts/check_readme.sh; }
+stage_optimised() {
+  local cfg dir
+  for cfg in "gcc -O2" "clang -O2" "clang -O3"; do
+    set -- $cfg
+    dir=build/opt-$1$2
+    echo "--- $1 $2"
+    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="$1" \
+          -DCMAKE_C_FLAGS_RELEASE="$2 -DNDEBUG" >/dev/null
+    cmake --build "$dir" --parallel "$jobs"
+    # The build, readme (Release) and ASan runs have the live tests.
+    ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --label-exclude live
+  done
+}
+stage_fuzz() { scripts/fuzz.sh smoke; }
+stage_matrix() { scripts/matrix.sh; }
+stage_docs() { scripts/check_docs.sh; }
+stage_lint() { scripts/lint.sh; }
+stage_mcu() { scripts/mcu_size.sh; }
+stage_bigendian() { scripts/bigendian.sh; }
+stage_bench() {
+  gcc_build >/dev/null
+  scripts/bench.sh
+  build/gcc/bench/xfgcu_client_bench latency 500
+  build/gcc/bench/xfgcu_client_bench cpu 3
+  scripts/bench_send.sh build/gcc/tools/xfgcu 30
+}
+stage_mutation() { scripts/mutate.sh; }
+
+# One stage, in this process (the driver below starts one process per stage).
+if [ "${1:-}" = --run-one ]; then
+  set -euo pipefail
+  "stage_$2"
+  exit
+fi
+
+case ${1:-} in
+  --list)
+    for s in "${stages[@]}"; do printf '%-10s %s\n' "$s" "$(describe "$s")"; done
+    exit 0 ;;
+  -h|--help)
+    sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
+    exit 0 ;;
+esac
+selected=("$@")
+[ ${#selected[@]} -gt 0 ] || selected=("${stages[@]}")
+for s in "${selected[@]}"; do
+  describe "$s" >/dev/null || { echo "test.sh: unknown stage '$s' (scripts/test.sh --list)" >&2; exit 2; }
+done
+
+scripts/setup.sh --dev
 t0=$(date +%s)
-stage() { printf '\n=== %s  (%ss)\n' "$*" "$(($(date +%s) - t0))"; }
+rows=()
+failed=0
+for s in "${selected[@]}"; do
+  printf '\n=== %s: %s  (at %ss)\n' "$s" "$(describe "$s")" "$(($(date +%s) - t0))"
+  start=$(date +%s)
+  if bash "$0" --run-one "$s"; then verdict=pass; else verdict=FAIL; failed=$((failed + 1)); fi
+  rows+=("$(printf '%-10s %6s  %s' "$s" "$(($(date +%s) - start))" "$verdict")")
+done
 
-stage "gcc: Debug build with -Werror (the Python package's native library too), run the tests"
-cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc -DXFGCU_BUILD_PYTHON=ON >/dev/null
-cmake --build build/gcc --parallel "$jobs"
-ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"
-
-stage "Python: the package's tests (pytest, hypothesis) over build/gcc's library and program"
-python/run_tests.sh build/gcc
-
-stage "README: every recipe it prints, run as printed (Release, install, consumers, presets)"
-scripts/check_readme.sh
-
-stage "optimised builds with -Werror: gcc -O2, clang -O2, clang -O3; run the tests"
-for cfg in "gcc -O2" "clang -O2" "clang -O3"; do
-  set -- $cfg
-  dir=build/opt-$1$2
-  echo "--- $1 $2"
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="$1" \
-        -DCMAKE_C_FLAGS_RELEASE="$2 -DNDEBUG" >/dev/null
-  cmake --build "$dir" --parallel "$jobs"
-  ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --label-exclude live # the Debug, Release
-done                                                                                 # and ASan runs have them
-
-stage "fuzz smoke: libFuzzer harnesses over the saved corpus and a short run"
-scripts/fuzz.sh smoke
-
-stage "compiler matrix: gcc/clang x C99/C11, headers as C++, a user TU of the codec at -O0..-O3/-Os"
-scripts/matrix.sh
-
-stage "docs: API reference (Doxygen, warnings are errors), man page up to date, nothing outside"
-scripts/check_docs.sh
-
-stage "static analysis: cppcheck, clang-tidy"
-scripts/lint.sh
-
-stage "MCU: Cortex-M4 firmware and RISC-V builds, sizes"
-scripts/mcu_size.sh
-
-stage "big-endian: codec and client tests on s390x under qemu-user"
-scripts/bigendian.sh
-
-stage "benchmarks: parser instructions per byte (callgrind), client latency and CPU"
-scripts/bench.sh
-build/gcc/bench/xfgcu_client_bench latency 500
-build/gcc/bench/xfgcu_client_bench cpu 3
-scripts/bench_send.sh build/gcc/tools/xfgcu 30
-
-stage "mutation: named mutants of the parser, each killed by its tests (scripts/mutate.sh)"; scripts/mutate.sh
-
-stage "done"
-echo "all stages passed"
+printf '\n%-10s %6s  %s\n' stage seconds verdict
+printf '%s\n' "${rows[@]}"
+printf '%-10s %6s  %s\n' total "$(($(date +%s) - t0))" "$([ $failed -eq 0 ] && echo pass || echo "FAIL ($failed)")"
+[ $failed -eq 0 ]
