@@ -6,7 +6,7 @@
  *
  * Every wait is bounded by a deadline; the timing checks leave room for a
  * loaded machine and sanitizers (the exact timing is tested on the fake
- * clock in test_client_logic.c).
+ * clock in the test_client_*.c files of this folder).
  */
 #define _XOPEN_SOURCE 700 /* mkdtemp, readlink */
 #include <arpa/inet.h>
