@@ -505,13 +505,20 @@ static uint8_t xf__mode_reads(uint8_t mode)
     }
 }
 
-/* Orders during which the control quantities must be invalid (§11.2):
- * neutral, track and click-to-aim say so; gaze-geo turns into gaze lock on
- * any valid non-zero quantity. */
-static int xf__order_holds_ctrl(uint8_t order)
+/* Orders that want the control quantities invalid while they run (§11.2): neutral, track and
+ * click-to-aim say so; gaze-geo turns into gaze lock on any valid non-zero quantity. */
+static int xf__order_wants_invalid(uint8_t order)
 {
     return order == XF_ORDER_NEUTRAL || order == XF_ORDER_TRACK || order == XF_ORDER_CLICK_TO_AIM ||
            order == XF_ORDER_GAZE_GEO;
+}
+
+/* Orders during which no control quantities go: those, and every order that sets the mode, which
+ * changes how the GCU reads them from the packet that carries it on. */
+static int xf__order_holds_ctrl(uint8_t order)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    return xf__order_wants_invalid(order) || (info != NULL && (info->flags & XF_ORDER_SETS_MODE) != 0u);
 }
 
 xf_ctrl_status xf_client_control_status(const xf_client *c)
@@ -607,8 +614,11 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
         c->packets = 0;
         c->answered = 0;
         c->started_ms = c->now_ms;
-        if (xf__order_holds_ctrl(cmd->order) && (c->ctrl_kind == XF__CTRL_RATES || c->ctrl_kind == XF__CTRL_ANGLES)) {
-            xf__drop_ctrl(c); /* what was set before it must not be read after it */
+        /* What was set before it must not be read after it; a setpoint that a mode change waits for
+         * (held: the reported mode reads the other kind) is kept for the new mode. */
+        if ((c->ctrl_kind == XF__CTRL_RATES || c->ctrl_kind == XF__CTRL_ANGLES) &&
+            (xf__order_wants_invalid(cmd->order) || (xf__order_holds_ctrl(cmd->order) && c->ctrl_mode != 0u))) {
+            xf__drop_ctrl(c);
         }
     }
     if (c->active) { /* checked and encoded at submit */

@@ -656,15 +656,18 @@ void xf_client_set_main_camera(xf_client *c, uint8_t camera);
  * | head lock 0x11, head follow 0x12, orthoview 0x13, gaze 0x16  | rates  |
  * | track 0x17, any other mode, no reply yet                     | none   |
  *
- * and never while a neutral, track, click-to-aim or gaze-geo command runs
- * (the quantities must be invalid then; after click-to-aim the gimbal is in
- * head lock, and a valid non-zero quantity turns gaze-geo into gaze lock).
- * Otherwise the packet carries zeros with ctrl_valid clear. A setpoint is
- * dropped, and must be set again, when the mode that read it changes, and
- * when one of those four commands starts: the next mode may read the same
- * bytes as something else. A setpoint held because the mode reads the other
- * kind is kept, and goes out once a mode that reads it is reported ("set
- * the angles, then switch to Euler").
+ * and never while a neutral, click-to-aim or mode command (one that sets
+ * the mode: angle control, head lock, ..., track, gaze-geo, FPV) runs: the
+ * first three need the quantities invalid (after click-to-aim the gimbal is
+ * in head lock, and a valid non-zero quantity turns gaze-geo into gaze
+ * lock), and a mode command changes how the GCU reads them from its first
+ * packet on. Otherwise the packet carries zeros with ctrl_valid clear. A
+ * setpoint is dropped, and must be set again, when the mode that read it
+ * changes, when a mode command starts while it is on the wire, and when a
+ * neutral, track, click-to-aim or gaze-geo command starts: the next mode
+ * may read the same bytes as something else. A setpoint held because the
+ * mode reads the other kind is kept, and goes out once a mode that reads it
+ * is reported ("set the angles, then switch to Euler").
  */
 typedef enum xf_ctrl_status {
     XF_CTRL_SENT = 0,       /**< on the wire, ctrl_valid set (zero rates when the watchdog has tripped) */
@@ -672,7 +675,7 @@ typedef enum xf_ctrl_status {
     XF_CTRL_NO_MODE = 2,    /**< held: no reply yet, so the mode that would read it is unknown */
     XF_CTRL_WRONG_KIND = 3, /**< held: the reported mode reads the other kind (rates, angles) */
     XF_CTRL_NOT_READ = 4,   /**< held: the reported mode reads no control quantities (track) */
-    XF_CTRL_COMMAND = 5,    /**< held: a neutral, track, click-to-aim or gaze-geo command runs */
+    XF_CTRL_COMMAND = 5,    /**< held: a neutral, click-to-aim or mode command runs (track, gaze-geo, Euler, ...) */
     XF_CTRL_DROPPED = 6     /**< dropped: the mode that read it changed, or one of those commands started */
 } xf_ctrl_status;
 

@@ -42,6 +42,90 @@ static void test_rates_scaled_by_zoom(void **state)
     ct_rig_free(r);
 }
 
+/* Camera 2 on the main screen, at 4x, camera 1 at 1x: the client and the GCU both divide by the
+ * main screen's zoom, so the gimbal turns as asked; a client that scales by the other camera's
+ * zoom turns it four times too fast. */
+static void test_rates_main_screen_end_to_end(void **state)
+{
+    xf_sim_config sc;
+    ct_rig *r;
+    const xf_telemetry *t;
+    xf_command cmd;
+    uint32_t i;
+    (void)state;
+    xf_sim_config_init(&sc);
+    sc.main_camera = 2;
+    r = rig_up(NULL, &sc);
+    t = xf_client_telemetry(&r->c);
+    xf_command_init(&cmd, XF_ORDER_ZOOM_TO);
+    cmd.cameras = XF_CAM2;
+    cmd.zoom = xf_zoom_to_rate_raw(4.0f);
+    assert_status(ct_run_cmd(r, ct_submit_cmd(r, &cmd), 1000, NULL), XF_CMD_OK);
+    for (i = 0; i < 5000u && t->zoom_cam2 != 40u; i++) {
+        ct_tick(r);
+    }
+    assert_int_equal(t->zoom_cam2, 40);
+    assert_int_equal(t->zoom_cam1, 10);
+    xf_client_set_main_camera(&r->c, 2);
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 5.0f, r->now);
+    ct_run(r, 60);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 200); /* 5 deg/s at 4x */
+    assert_near(r->s.rate[2], 5.0, 0.01);
+    xf_client_set_main_camera(&r->c, 1); /* the client says camera 1: wrong for this GCU */
+    xf_client_set_rates(&r->c, 0.0f, 0.0f, 5.0f, r->now);
+    ct_run(r, 60);
+    assert_int_equal(r->s.host.main.yaw_ctrl, 50);
+    assert_near(r->s.rate[2], 1.25, 0.01);
+    ct_rig_free(r);
+}
+
+/* The client sends no control quantities after a mode change until the application sets them
+ * again (its setpoint is dropped); the GCU holds meanwhile (V2.0.6: desired angles keep their
+ * value), in every angle mode it is switched to, so the gimbal does not swing away. */
+static void test_mode_change_holds(void **state)
+{
+    static const uint8_t to[] = {XF_ORDER_ANGLE_CONTROL, XF_ORDER_FPV, XF_ORDER_EULER, XF_ORDER_ANGLE_CONTROL};
+    xf_client_config cc;
+    xf_sim_config sc;
+    ct_rig *r;
+    const xf_telemetry *t;
+    xf_carrier car;
+    size_t k;
+    int i;
+    (void)state;
+    xf_client_config_init(&cc);
+    cc.protocol_version = 2;
+    xf_sim_config_init(&sc);
+    sc.version = 2;
+    r = rig_up(&cc, &sc);
+    t = xf_client_telemetry(&r->c);
+    memset(&car, 0, sizeof(car));
+    car.pitch_deg = 4.0f;
+    car.yaw_deg = 45.0f;
+    xf_client_set_carrier(&r->c, &car, r->now);
+    assert_status(ct_run_cmd(r, ct_submit(r, XF_ORDER_EULER), 1000, NULL), XF_CMD_OK);
+    ct_run(r, 60);
+    assert_int_equal(xf_client_set_angles(&r->c, 0.0f, -30.0f, 90.0f, r->now), XF_CTRL_SENT);
+    for (i = 0; i < 30; i++) {
+        xf_client_set_carrier(&r->c, &car, r->now);
+        ct_run(r, 50);
+    }
+    assert_near(xf_cdeg(t->cam_pitch), -30.0, 0.011);
+    for (k = 0; k < sizeof(to); k++) {
+        assert_status(ct_run_cmd(r, ct_submit(r, to[k]), 1000, NULL), XF_CMD_OK);
+        for (i = 0; i < 20; i++) {
+            xf_client_set_carrier(&r->c, &car, r->now);
+            ct_run(r, 50);
+        }
+        assert_int_equal(r->s.host.main.status & XF_STATUS_CTRL_VALID, 0);
+        assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED);
+        assert_near(xf_cdeg(t->cam_pitch), -30.0, 0.011);
+        assert_angle_near(xf_cdeg(t->cam_yaw), 90.0, 0.011);
+        assert_near(xf_cdeg(t->rel_angle_z), 45.0, 0.011);
+    }
+    ct_rig_free(r);
+}
+
 /* Head lock: rates integrate; at zero the angles hold. */
 static void test_head_lock_rates_integrate(void **state)
 {
@@ -187,7 +271,8 @@ static void cr_case(uint8_t mode, char kind, uint8_t order)
     xf_ctrl_status st = XF_CTRL_NOT_SET;
     int holds = order == XF_ORDER_NEUTRAL || order == XF_ORDER_TRACK || order == XF_ORDER_CLICK_TO_AIM ||
                 order == XF_ORDER_GAZE_GEO;
-    int want = kind != '-' && !holds && cr_reads(mode) == kind;
+    int sets_mode = (xf_order_lookup(order)->flags & XF_ORDER_SETS_MODE) != 0u; /* the new mode reads them */
+    int want = kind != '-' && !holds && !sets_mode && cr_reads(mode) == kind;
     /* with no reply yet, no reply to a null either: the command waits, nulls go out */
     uint8_t sent = (mode == CR_NO_REPLY) ? (uint8_t)XF_ORDER_NULL : order;
     size_t n;
@@ -229,6 +314,8 @@ static void cr_case(uint8_t mode, char kind, uint8_t order)
     }
     if (holds && kind != '-' && sent == order) {
         assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_DROPPED); /* set before it: gone */
+    } else if (sets_mode && kind != '-' && sent == order) {
+        assert_int_equal(xf_client_control_status(&r->c), XF_CTRL_COMMAND); /* not yet on the wire: kept */
     }
     ct_rig_free(r);
 }
@@ -346,14 +433,11 @@ static void test_rates_main_camera_zoom(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_control_rule_every_case),
-        cmocka_unit_test(test_control_mode_changes),
-        cmocka_unit_test(test_rates_main_camera_zoom),
-        cmocka_unit_test(test_rates_scaled_by_zoom),
-        cmocka_unit_test(test_head_lock_rates_integrate),
-        cmocka_unit_test(test_euler_reaches_target),
-        cmocka_unit_test(test_orthoview_points_down),
-        cmocka_unit_test(test_fpv_follows_carrier),
+        cmocka_unit_test(test_control_rule_every_case),      cmocka_unit_test(test_control_mode_changes),
+        cmocka_unit_test(test_rates_main_camera_zoom),       cmocka_unit_test(test_rates_scaled_by_zoom),
+        cmocka_unit_test(test_rates_main_screen_end_to_end), cmocka_unit_test(test_mode_change_holds),
+        cmocka_unit_test(test_head_lock_rates_integrate),    cmocka_unit_test(test_euler_reaches_target),
+        cmocka_unit_test(test_orthoview_points_down),        cmocka_unit_test(test_fpv_follows_carrier),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

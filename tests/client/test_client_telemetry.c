@@ -404,10 +404,12 @@ static void test_pod_order_per_gcu(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        /* what the replies say */
         cmocka_unit_test(test_telemetry_and_ages),
         cmocka_unit_test(test_telemetry_convert),
         cmocka_unit_test(test_wire_agrees_with_the_codec),
         cmocka_unit_test(test_pod_order_per_gcu),
+        /* what goes out besides commands */
         cmocka_unit_test(test_carrier_only_while_fresh),
         cmocka_unit_test(test_gnss_only_while_fresh),
     };
