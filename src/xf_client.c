@@ -60,8 +60,9 @@ const char *xf_client_config_problem(const xf_client_config *cfg)
     if (xf_client_config_timing(cfg, &t) != XF_OK) {
         return "rate_hz: 1..200";
     }
-    if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u) {
-        return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000";
+    if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u ||
+        cfg->version_auto > 1u) {
+        return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000; version_auto: 0 or 1";
     }
     /* A link that reads stale (or down) between two good replies cannot work. */
     if (cfg->stale_ms <= t.gap_ms || cfg->down_ms <= cfg->stale_ms) {
@@ -94,6 +95,7 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
     xf_parser_init(&c->parser, XF_DIR_GCU);
     c->period_ms = (uint16_t)((1000u + cfg->rate_hz / 2u) / cfg->rate_hz);
     c->next_id = 1;
+    c->health.version_sent = cfg->protocol_version;
     return (cfg->rate_hz < 30u || cfg->rate_hz > 50u) ? XF_WARN_RATE : XF_OK;
 }
 
@@ -222,6 +224,10 @@ static void xf__update_link(xf_client *c)
     c->health.link = s;
     if (s == XF_LINK_DOWN) {
         xf__fail_all(c, XF_CMD_LINK_LOST); /* fail fast: never run a stale command later */
+        if (c->cfg.version_auto) {
+            c->health.version_answered = 0; /* a GCU may come back another: look again, from this version */
+            c->version_ms = c->now_ms;
+        }
     }
     if (c->cfg.on_link != NULL) {
         c->cfg.on_link(c->cfg.user, s);
@@ -388,6 +394,10 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
          * of theirs can follow. A late reply to another command closes nothing. */
         c->guard_open = 0;
         c->guard_multi = 0;
+    }
+    if (c->health.version_answered == 0u && (f->data[XF_OFF_ORDER] == XF_ORDER_NULL ||
+                                             (f->data[XF_OFF_ORDER] == XF_ORDER_EXTERNAL_TRACK && c->stream_on))) {
+        c->health.version_answered = c->health.version_sent; /* what it answers: kept from now on */
     }
     if (!c->synced && f->data[XF_OFF_ORDER] == XF_ORDER_NULL) {
         /* A reply to a null: every reply to what was sent before (by an earlier client, on this
@@ -637,6 +647,19 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
     return XF_ORDER_EXTERNAL_TRACK;
 }
 
+/* version_auto: while no packet of the version sent has been answered for stale_ms (a link
+ * that works answers well within it), try the other version. */
+static void xf__search_version(xf_client *c)
+{
+    if (!c->cfg.version_auto || c->health.version_answered != 0u ||
+        xf_ms_since(c->now_ms, c->version_ms) < c->cfg.stale_ms ||
+        (c->health.replies != 0u && xf_ms_since(c->now_ms, c->health.last_rx_ms) < c->cfg.stale_ms)) {
+        return;
+    }
+    c->health.version_sent = (c->health.version_sent == XF_PROTOCOL_V2) ? XF_PROTOCOL_V1 : XF_PROTOCOL_V2;
+    c->version_ms = c->now_ms;
+}
+
 static xf_err xf__send(xf_client *c)
 {
     uint8_t buf[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX];
@@ -655,7 +678,8 @@ static xf_err xf__send(xf_client *c)
     xf__put_control(c, buf);
     len = XF_PACKET_MIN_LEN + n;
     /* header, order, parameters and CRC as the codec's packer writes them */
-    xf_packet_put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
+    xf__search_version(c);
+    xf_packet_put_header(buf, XF_DIR_HOST, len, c->health.version_sent);
     xf_packet_put_tail(buf, len, (uint8_t)order, params, (uint8_t)n);
     err = c->hal.write(c->hal.ctx, buf, len);
     if (err != XF_OK) {
@@ -711,6 +735,7 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
         c->started = 1;
         c->next_send_ms = now_ms; /* (a command submitted before it waits from here: head_new) */
         c->window_start_ms = now_ms;
+        c->version_ms = now_ms;
     }
     if (c->head_new) {
         c->head_new = 0;
@@ -846,6 +871,8 @@ uint8_t xf_client_gcu_version(const xf_client *c)
     }
     return c->tele.have_main ? c->tele.version : c->cfg.protocol_version;
 }
+
+uint8_t xf_client_answered_version(const xf_client *c) { return (c == NULL) ? 0u : c->health.version_answered; }
 
 xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
 {

@@ -183,6 +183,10 @@ typedef struct xf_health {
     uint32_t replies_missing; /**< packets of the last full second that got no reply */
     uint32_t send_errors;     /**< HAL writes that failed */
     uint32_t watchdog_trips;  /**< times the rate watchdog started sending zero rates */
+    uint8_t version_sent;     /**< the version byte the client sends now (with version_auto: the one it tries) */
+    /** the version byte of the packets the GCU answers: the one a reply to a null came for; 0 before (and,
+     *  with version_auto, while the client looks for it again after the link went down) */
+    uint8_t version_answered;
 } xf_health;
 
 /** Carrier state; gravity excluded from the accelerations. */
@@ -329,6 +333,10 @@ typedef struct xf_client_config {
     uint16_t down_ms;            /**< no valid reply for this long: ::XF_LINK_DOWN; > stale_ms, default 1000 */
     uint16_t rate_watchdog_ms;   /**< rates older than this become zero rates; default 500; 0 = off (not recommended) */
     uint8_t protocol_version;    /**< sent in byte 4, and the version commands are checked for; >= 1, default 1 */
+    /** 1: find the version the GCU answers (xf_client_answered_version()): send protocol_version, and the other
+     *  version (1 or 2) whenever no reply has come for stale_ms, until a null is answered; then keep the version
+     *  that was answered, looking again only once the link has gone down. 0 (default): send protocol_version. */
+    uint8_t version_auto;
     /** The longest a packet or a reply can be overtaken by a later one on the link, ms; default 0:
      *  the link keeps order (serial, TCP, UDP on loopback or a wired LAN). Over a network that can
      *  reorder or duplicate datagrams, set the bound: the client then waits this long around each
@@ -445,6 +453,7 @@ typedef struct xf_client {
     uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
     uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
     uint8_t head_new;    /**< private: the queue's head is new: it waits from the next step's time */
+    uint32_t version_ms; /**< private: when the client began to send the version it sends now */
 } xf_client;
 
 /**
@@ -490,7 +499,7 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
 /**
  * Why xf_client_init() would refuse @p cfg with ::XF_ERR_RANGE, as one
  * short line naming the members and their limits: a rate outside 1..200; a version or
- * operating timeout of 0; reorder_ms over 1000; stale_ms not above one packet
+ * operating timeout of 0; reorder_ms over 1000; version_auto other than 0 or 1; stale_ms not above one packet
  * period plus twice reorder_ms (the link would read stale between two good
  * replies: at 1 Hz the default 250 ms is), down_ms not above stale_ms;
  * command_timeout_ms under a round trip (two packet periods plus twice
@@ -767,11 +776,25 @@ xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_fi
  * speaks (the version byte of its replies) once it has answered, before
  * that cfg.protocol_version. Commands are checked and encoded for it
  * (ranges such as palette and picture-in-picture); the version byte the
- * client sends stays cfg.protocol_version.
+ * client sends is cfg.protocol_version, or with version_auto the one the GCU
+ * answers (xf_client_answered_version()).
  * @param c  the client
  * @return 1 or 2 (what the GCU sends), or 0 for a NULL @p c
  */
 uint8_t xf_client_gcu_version(const xf_client *c);
+
+/**
+ * The version byte of the host packets the GCU answers: the one the client
+ * was sending when the reply to one of its nulls came back. With
+ * xf_client_config.version_auto the client keeps sending it; the GCU's own
+ * version, whose meaning the client follows, is xf_client_gcu_version().
+ * Also in xf_health.version_answered.
+ * @param c  the client
+ * @return 1 or 2 (protocol_version without version_auto), or 0 before a null
+ *   has been answered (and while a version_auto client looks again after
+ *   the link went down), and for a NULL @p c
+ */
+uint8_t xf_client_answered_version(const xf_client *c);
 
 /**
  * Show or hide the on-screen display: an ::XF_ORDER_OSD command with the

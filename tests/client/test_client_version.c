@@ -158,13 +158,121 @@ static void test_gcu_version_decides(void **state)
     assert_xf(xf_client_osd(NULL, 1, NULL), XF_ERR_ARG);
 }
 
+/* ---- the version the GCU answers (version_auto) ---------------------------------------- */
+
+/* A client with version_auto against a simulator that answers only @p gcu (and replies in it),
+ * trying @p first first. */
+static ct_rig *auto_rig(uint8_t first, uint8_t gcu)
+{
+    xf_client_config cc;
+    xf_sim_config sc;
+    xf_client_config_init(&cc);
+    cc.protocol_version = first;
+    cc.version_auto = 1;
+    xf_sim_config_init(&sc);
+    sc.version = gcu;
+    sc.answer_only = gcu;
+    return ct_rig_new(&cc, &sc);
+}
+
+/* A GCU that answers only version 1 and one that answers only version 2: the client finds either,
+ * from either first guess, within stale_ms of trying the wrong one, says which answered, sends it
+ * from then on, and follows the GCU's version (pip mode 3 is V0.2's, palette 50 V0.1's). */
+static void test_auto_version_finds_it(void **state)
+{
+    static const uint8_t cases[][2] = {{1, 1}, {1, 2}, {2, 1}, {2, 2}}; /* first tried, the GCU's */
+    size_t k;
+    (void)state;
+    for (k = 0; k < 4u; k++) {
+        ct_rig *r = auto_rig(cases[k][0], cases[k][1]);
+        const xf_health *h = xf_client_health(&r->c);
+        uint8_t gcu = cases[k][1];
+        uint32_t t0 = r->now, id = 0;
+        xf_command cmd;
+        assert_int_equal(xf_client_answered_version(&r->c), 0);
+        assert_int_equal(h->version_sent, cases[k][0]);
+        assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+        /* the right guess answers within a packet; a wrong one costs stale_ms (250) and a packet */
+        assert_true(r->now - t0 <= (cases[k][0] == gcu ? 2u : 250u + 2u * 20u + 2u));
+        ct_run(r, 20);
+        assert_int_equal(xf_client_answered_version(&r->c), gcu);
+        assert_int_equal(h->version_answered, gcu);
+        assert_int_equal(h->version_sent, gcu);
+        assert_int_equal(xf_client_gcu_version(&r->c), gcu);
+        assert_int_equal(r->s.stats.ignored, cases[k][0] == gcu ? 0u : 13u); /* the wrong guess's packets */
+        xf_command_init(&cmd, gcu == 2u ? XF_ORDER_PIP : XF_ORDER_PALETTE);
+        cmd.value = gcu == 2u ? 3u : 50u;
+        assert_xf(xf_client_submit(&r->c, &cmd, &id, NULL), XF_OK);
+        assert_status(ct_run_cmd(r, id, 1000, NULL), XF_CMD_OK);
+        ct_run(r, 200);
+        assert_int_equal(r->s.host.version, gcu);
+        assert_int_equal(r->s.stats.ignored, cases[k][0] == gcu ? 0u : 13u); /* none since */
+        ct_rig_free(r);
+    }
+}
+
+/* It keeps the version that was answered while the link is up, also through a silence that makes
+ * the link stale; once the link has gone down it looks again, from that version, and finds it. */
+static void test_auto_version_sticks(void **state)
+{
+    ct_rig *r = auto_rig(1, 2);
+    const xf_health *h = xf_client_health(&r->c);
+    uint32_t ignored;
+    (void)state;
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    r->s.fault.silent = 1;
+    assert_true(ct_run_link(r, XF_LINK_STALE, 1000));
+    ct_run(r, 500); /* stale, not down */
+    assert_int_equal(xf_client_link(&r->c), XF_LINK_STALE);
+    assert_int_equal(h->version_sent, 2);
+    assert_int_equal(h->version_answered, 2);
+    assert_true(ct_run_link(r, XF_LINK_DOWN, 1000));
+    assert_int_equal(h->version_answered, 0); /* looking again */
+    ct_run(r, 240);
+    assert_int_equal(h->version_sent, 2); /* from the version that was answered */
+    ct_run(r, 40);
+    assert_int_equal(h->version_sent, 1); /* then the other */
+    ignored = r->s.stats.ignored;
+    r->s.fault.silent = 0;
+    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    assert_int_equal(xf_client_answered_version(&r->c), 2);
+    assert_true(r->s.stats.ignored > ignored);
+    ct_rig_free(r);
+}
+
+/* Without version_auto a client that sends version 1 gets no answer from a GCU that answers only
+ * version 2, and says nothing was answered; and version_auto takes 0 or 1. */
+static void test_fixed_version_unanswered(void **state)
+{
+    xf_client_config cc;
+    xf_sim_config sc;
+    ct_rig *r;
+    xf_client c;
+    (void)state;
+    xf_sim_config_init(&sc);
+    sc.version = 2;
+    sc.answer_only = 2;
+    r = ct_rig_new(NULL, &sc);
+    assert_false(ct_run_link(r, XF_LINK_UP, 2000));
+    assert_int_equal(xf_client_answered_version(&r->c), 0);
+    assert_int_equal(xf_client_health(&r->c)->version_sent, 1);
+    assert_int_equal(r->s.stats.ignored, 100);
+    xf_client_config_init(&cc);
+    assert_int_equal(cc.version_auto, 0);
+    cc.version_auto = 2;
+    assert_xf(xf_client_init(&c, &r->host_hal, &cc), XF_ERR_RANGE);
+    assert_non_null(strstr(xf_client_config_problem(&cc), "version_auto"));
+    assert_int_equal(xf_client_answered_version(NULL), 0);
+    ct_rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_protocol_v2_rates),
-        cmocka_unit_test(test_protocol_v2_orders),
-        cmocka_unit_test(test_submit_model_support),
-        cmocka_unit_test(test_gcu_version_decides),
+        cmocka_unit_test(test_protocol_v2_rates),        cmocka_unit_test(test_protocol_v2_orders),
+        cmocka_unit_test(test_submit_model_support),     cmocka_unit_test(test_gcu_version_decides),
+        cmocka_unit_test(test_auto_version_finds_it),    cmocka_unit_test(test_auto_version_sticks),
+        cmocka_unit_test(test_fixed_version_unanswered),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
