@@ -33,8 +33,10 @@
  * none of the old command's replies gives up after command_timeout_ms,
  * leaving the client unsettled). Before it stops,
  * a program lets the client settle (xf_client_settled()). On a link that
- * reorders or duplicates, reorder_ms bounds how far (docs/protocol.md
- * §7.4 says what each rule guarantees). Calibration's "operating" keeps it
+ * reorders or duplicates, reorder_ms bounds how far; while it is 0 the
+ * client uses a bound of its own until the link has shown that it keeps
+ * order, and whenever replies come out of turn or twice (xf_health;
+ * docs/protocol.md §7.4 says what each rule guarantees). Calibration's "operating" keeps it
  * going until its final state. Results: ok, failed (with the failed-camera
  * mask), timeout, link lost; by callback and by polling the command's id.
  *
@@ -187,6 +189,17 @@ typedef struct xf_health {
     /** the version byte of the packets the GCU answers: the one a reply to a null came for; 0 before (and,
      *  with version_auto, while the client looks for it again after the link went down) */
     uint8_t version_answered;
+    /** 1: the link has shown that it keeps order (the first packet answered before the second was sent,
+     *  or 25 packet periods in a row with one reply each) and no reply came out of turn since; never again
+     *  once a reply came that no link in order delivers (docs/protocol.md §7.4) */
+    uint8_t in_order;
+    /** the reorder bound in force, ms: xf_client_config.reorder_ms when the application set one (or fixed
+     *  0); else the client's own while the link is not in_order, 0 while it is */
+    uint16_t reorder_ms;
+    /** replies that came out of turn or twice: more in one packet period than packets sent in it, a reply
+     *  of a command's order after another order's reply that followed one of its own, more replies of a
+     *  command than its packets. On a link that keeps order and does not duplicate, 0. */
+    uint32_t out_of_turn;
 } xf_health;
 
 /** Carrier state; gravity excluded from the accelerations. */
@@ -342,8 +355,14 @@ typedef struct xf_client_config {
      *  reorder or duplicate datagrams, set the bound: the client then waits this long around each
      *  command (docs/protocol.md §7.4), so that no reply is taken for the wrong command and the
      *  GCU runs each command once. At most 1000, and stale_ms must exceed a packet period plus
-     *  twice this (xf_client_config_problem()). */
+     *  twice this (xf_client_config_problem()). While it is 0, and unless reorder_fixed is set, the client
+     *  judges the link itself and uses the largest bound stale_ms and command_timeout_ms allow (114 ms with
+     *  the defaults) while the link has not shown that it keeps order (xf_health.reorder_ms, in_order,
+     *  out_of_turn; docs/protocol.md §7.4). */
     uint16_t reorder_ms;
+    /** 1: keep reorder_ms as set (0 included) whatever the link shows; 0 (default): the client may apply a
+     *  bound of its own on a link that reorders or duplicates, while reorder_ms is 0 */
+    uint8_t reorder_fixed;
 } xf_client_config;
 
 /**
@@ -450,10 +469,16 @@ typedef struct xf_client {
      *  private: replies of the running command's order so far */
     uint32_t guard_ms;
     uint16_t answered;
-    uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
-    uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
-    uint8_t head_new;    /**< private: the queue's head is new: it waits from the next step's time */
-    uint32_t version_ms; /**< private: when the client began to send the version it sends now */
+    uint8_t guard_wait;       /**< private: a reply of guard_order must come first (none had come when it ended) */
+    uint8_t guard_multi;      /**< private: the guard holds for every order (another guard was still open) */
+    uint8_t head_new;         /**< private: the queue's head is new: it waits from the next step's time */
+    uint32_t version_ms;      /**< private: when the client began to send the version it sends now */
+    uint16_t auto_reorder_ms; /**< private: the bound the client applies when it sees replies out of turn */
+    uint8_t round_replies;    /**< private: replies since the last packet sent (saturating) */
+    uint8_t run_order;        /**< private: the order of the running command, or of the last one */
+    uint8_t run_seen;         /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
+    uint8_t steady;           /**< private: packet periods in a row with one reply each */
+    uint8_t out_of_order;     /**< private: a reply came that no link in order can deliver: never in_order again */
 } xf_client;
 
 /**

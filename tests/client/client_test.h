@@ -466,23 +466,12 @@ static inline size_t ct_drain_host(ct_rig *r, xf_host_packet *last)
     uint8_t buf[CT_FIFO];
     size_t len = ct_fifo_get(&r->h2g, buf, sizeof(buf)), off = 0;
     xf_parser_init(&p, XF_DIR_HOST);
-    while (off < len) {
+    while (off < len) { /* a frame comes from the call that feeds its last byte */
         size_t used = 0;
         xf_frame f;
         xf_parse_status rc = xf_parser_feed(&p, buf + off, len - off, &used, &f);
         off += used;
         if (rc != XF_PARSE_FRAME) {
-            break;
-        }
-        if (last != NULL) {
-            assert_xf(xf_host_unpack(f.data, f.len, last), XF_OK);
-        }
-        n++;
-    }
-    for (;;) { /* frames the parser still holds */
-        size_t used = 0;
-        xf_frame f;
-        if (xf_parser_feed(&p, NULL, 0, &used, &f) != XF_PARSE_FRAME) {
             break;
         }
         if (last != NULL) {
