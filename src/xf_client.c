@@ -82,12 +82,10 @@ static void xf__set_bound(xf_client *c);
  * 1000 ms: what the client applies when it sees replies out of turn. */
 static uint16_t xf__auto_reorder_ms(const xf_client_config *cfg, uint32_t period)
 {
-    uint32_t b = 1000u;
     uint32_t by_stale = (cfg->stale_ms > period + 1u) ? (cfg->stale_ms - period - 1u) / 2u : 0u;
     uint32_t by_timeout = (cfg->command_timeout_ms > 2u * period) ? (cfg->command_timeout_ms - 2u * period) / 2u : 0u;
-    b = (by_stale < b) ? by_stale : b;
-    b = (by_timeout < b) ? by_timeout : b;
-    return (uint16_t)b;
+    uint32_t b = (by_stale < by_timeout) ? by_stale : by_timeout;
+    return (uint16_t)((b < 1000u) ? b : 1000u);
 }
 
 xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
