@@ -79,7 +79,7 @@ static void xf__set_bound(xf_client *c);
 
 /* The largest reorder bound @p cfg's times allow (xf_client_config_problem(): stale_ms above a
  * period plus twice the bound, command_timeout_ms at least two periods plus twice it), at most
- * 1000 ms: what the client applies when it sees replies out of turn. */
+ * 1000 ms: the bound the client uses on a link that has not shown it keeps order. */
 static uint16_t xf__auto_reorder_ms(const xf_client_config *cfg, uint32_t period)
 {
     uint32_t by_stale = (cfg->stale_ms > period + 1u) ? (cfg->stale_ms - period - 1u) / 2u : 0u;
