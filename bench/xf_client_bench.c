@@ -198,6 +198,7 @@ static int host_open(host_side *h, size_t i, int kind, const sim_side *s, const 
     }
     xf_client_config_init(&cc);
     cc.rate_hz = rate;
+    cc.reorder_fixed = 1; /* loopback keeps order: no bound where a loaded machine bunches replies */
     cc.on_telemetry = on_tele;
     cc.user = h;
     return xf_client_init(&h->client[i], &hal, &cc) < 0 ? -1 : 0;

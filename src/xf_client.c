@@ -11,6 +11,7 @@
 #define XF__CTRL_ANGLES   2u
 #define XF__CTRL_DROPPED  3u /* none, because the last one was dropped (XF_CTRL_DROPPED) */
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
+#define XF__STEADY        25 /* packet periods in a row with one reply each: a link that keeps order */
 
 /* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
 static const xf_client_config xf__defaults = {
@@ -60,8 +61,9 @@ const char *xf_client_config_problem(const xf_client_config *cfg)
     if (xf_client_config_timing(cfg, &t) != XF_OK) {
         return "rate_hz: 1..200";
     }
-    if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u) {
-        return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000";
+    if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u ||
+        cfg->version_auto > 1u) {
+        return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000; version_auto: 0 or 1";
     }
     /* A link that reads stale (or down) between two good replies cannot work. */
     if (cfg->stale_ms <= t.gap_ms || cfg->down_ms <= cfg->stale_ms) {
@@ -71,6 +73,19 @@ const char *xf_client_config_problem(const xf_client_config *cfg)
         return "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)";
     }
     return NULL;
+}
+
+static void xf__set_bound(xf_client *c);
+
+/* The largest reorder bound @p cfg's times allow (xf_client_config_problem(): stale_ms above a
+ * period plus twice the bound, command_timeout_ms at least two periods plus twice it), at most
+ * 1000 ms: the bound the client uses on a link that has not shown it keeps order. */
+static uint16_t xf__auto_reorder_ms(const xf_client_config *cfg, uint32_t period)
+{
+    uint32_t by_stale = (cfg->stale_ms > period + 1u) ? (cfg->stale_ms - period - 1u) / 2u : 0u;
+    uint32_t by_timeout = (cfg->command_timeout_ms > 2u * period) ? (cfg->command_timeout_ms - 2u * period) / 2u : 0u;
+    uint32_t b = (by_stale < by_timeout) ? by_stale : by_timeout;
+    return (uint16_t)((b < 1000u) ? b : 1000u);
 }
 
 xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
@@ -94,6 +109,9 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
     xf_parser_init(&c->parser, XF_DIR_GCU);
     c->period_ms = (uint16_t)((1000u + cfg->rate_hz / 2u) / cfg->rate_hz);
     c->next_id = 1;
+    c->health.version_sent = cfg->protocol_version;
+    c->auto_reorder_ms = xf__auto_reorder_ms(cfg, c->period_ms);
+    xf__set_bound(c);
     return (cfg->rate_hz < 30u || cfg->rate_hz > 50u) ? XF_WARN_RATE : XF_OK;
 }
 
@@ -168,7 +186,7 @@ static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
          * reply closes the guard only once one of this order has come, if none had: before
          * that, it answers a null sent before the command (the link is slower than the command
          * was long). */
-        if (c->answered < c->packets || c->cfg.reorder_ms > 0u) {
+        if (c->answered < c->packets || c->health.reorder_ms > 0u) {
             xf__guard(c, r.order, c->answered == 0u);
         }
     }
@@ -222,6 +240,10 @@ static void xf__update_link(xf_client *c)
     c->health.link = s;
     if (s == XF_LINK_DOWN) {
         xf__fail_all(c, XF_CMD_LINK_LOST); /* fail fast: never run a stale command later */
+        if (c->cfg.version_auto) {
+            c->health.version_answered = 0; /* a GCU may come back another: look again, from this version */
+            c->version_ms = c->now_ms;
+        }
     }
     if (c->cfg.on_link != NULL) {
         c->cfg.on_link(c->cfg.user, s);
@@ -364,6 +386,116 @@ static void xf__match(xf_client *c, const xf_frame *f)
     }
 }
 
+/* What a reply of @p order says about the replies still to come: the guard, the start-up rule,
+ * the version answered. */
+static void xf__reply_order(xf_client *c, uint8_t order)
+{
+    int own_null = order == XF_ORDER_NULL || (order == XF_ORDER_EXTERNAL_TRACK && c->stream_on);
+    if (c->active && order == c->queue[c->q_head].order && c->answered < UINT16_MAX) {
+        c->answered++;
+    }
+    if (order == c->guard_order) {
+        c->guard_wait = 0;
+    } else if (!c->guard_wait && own_null) {
+        /* The reply to a null (or to the stream) sent after the guarded packets: in order, none
+         * of theirs can follow. A late reply to another command closes nothing. */
+        c->guard_open = 0;
+        c->guard_multi = 0;
+    }
+    if (c->health.version_answered == 0u && own_null) {
+        c->health.version_answered = c->health.version_sent; /* what it answers: kept from now on */
+    }
+    if (!c->synced && order == XF_ORDER_NULL) {
+        /* A reply to a null: every reply to what was sent before (by an earlier client, on this
+         * link) is in, or, where the link reorders, is within reorder_ms. Commands may start. */
+        c->synced = 1;
+        c->sync_ms = c->now_ms;
+    }
+}
+
+/* The reorder bound in force: the application's, when it set one (or fixed 0); else the client's
+ * own while the link has not shown that it keeps order (a command that starts before the link
+ * could be judged is protected), 0 once it has. */
+static void xf__set_bound(xf_client *c)
+{
+    if (c->cfg.reorder_fixed || c->cfg.reorder_ms > 0u) {
+        c->health.reorder_ms = c->cfg.reorder_ms;
+    } else {
+        c->health.reorder_ms = c->health.in_order ? 0u : c->auto_reorder_ms;
+    }
+}
+
+/* @p n replies came out of turn or twice (docs/protocol.md §7.4): counted, and the link is no
+ * longer taken to keep order; for good when @p proof (a reply no link that keeps order and does
+ * not duplicate can deliver), else until it has been steady again (XF__STEADY periods). */
+static void xf__out_of_turn(xf_client *c, uint32_t n, int proof)
+{
+    c->health.out_of_turn += n;
+    c->health.in_order = 0;
+    c->steady = 0;
+    c->out_of_order = (uint8_t)(c->out_of_order | (proof != 0));
+    xf__set_bound(c);
+}
+
+/* Replies on a link that keeps order and does not duplicate answer the packets in the order they
+ * were sent, once each. A reply of the last command's order after a reply of another order that
+ * came after one of its own, or more replies of the running command than it had packets, cannot
+ * be that. */
+static void xf__judge_reply(xf_client *c, uint8_t order)
+{
+    if (c->round_replies < UINT8_MAX) {
+        c->round_replies++;
+    }
+    if (c->active && order == c->queue[c->q_head].order && c->answered > c->packets) {
+        xf__out_of_turn(c, 1, 1); /* a reply to a packet sent once came twice */
+    }
+    if (c->run_order == XF_ORDER_EXTERNAL_TRACK) {
+        return; /* the stream answers with that order between commands */
+    }
+    if (order == c->run_order) {
+        if (c->run_seen == 2u) {
+            xf__out_of_turn(c, 1, 1);
+        }
+        c->run_seen = 1;
+    } else if (c->run_seen == 1u) {
+        c->run_seen = 2;
+    }
+}
+
+/* The link has shown that it keeps order: commands run without a bound of the client's own. */
+static void xf__in_order(xf_client *c)
+{
+    if (!c->health.in_order && !c->out_of_order) {
+        c->health.in_order = 1;
+        xf__set_bound(c);
+    }
+}
+
+/* At a packet due one period after the last (not after a silence, not late): the replies that
+ * came since. The first packet's reply before the second packet shows a link that answers within
+ * a period; on a link that keeps order with a steady delay one reply comes per period, so
+ * XF__STEADY periods in a row with one reply each show it too. More than one in a period means
+ * replies held back and overtaken, or copies: the delay varies by a period or more, as it does
+ * on a link that reorders (and on a GCU, or a loaded host, that answers in bursts). Periods before
+ * the third packet are not held against the link: replies to a program that ran before on it may
+ * still come. */
+static void xf__judge_round(xf_client *c)
+{
+    uint32_t since = xf_ms_since(c->now_ms, c->last_tx_ms);
+    if (since <= c->period_ms + c->period_ms / 2u) {
+        if (c->health.packets_sent == 1u && c->round_replies == 1u) {
+            xf__in_order(c);
+        } else if (c->health.packets_sent >= 3u && c->round_replies > 1u) {
+            xf__out_of_turn(c, c->round_replies - 1u, 0);
+        }
+        c->steady = (c->health.packets_sent >= 3u && c->round_replies == 1u) ? (uint8_t)(c->steady + 1u) : 0u;
+        if (c->steady >= XF__STEADY) {
+            xf__in_order(c);
+        }
+    }
+    c->round_replies = 0;
+}
+
 /* A frame out of the parser: whole, of the GCU (the parser's direction), its CRC checked. */
 static void xf__on_frame(xf_client *c, const xf_frame *f)
 {
@@ -377,24 +509,8 @@ static void xf__on_frame(xf_client *c, const xf_frame *f)
     c->awaiting = 0;
     c->health.last_rx_ms = c->now_ms;
     c->health.transport_closed = 0; /* a GCU answers over the (reopened) transport */
-    if (c->active && f->data[XF_OFF_ORDER] == c->queue[c->q_head].order && c->answered < UINT16_MAX) {
-        c->answered++;
-    }
-    if (f->data[XF_OFF_ORDER] == c->guard_order) {
-        c->guard_wait = 0;
-    } else if (!c->guard_wait && (f->data[XF_OFF_ORDER] == XF_ORDER_NULL ||
-                                  (f->data[XF_OFF_ORDER] == XF_ORDER_EXTERNAL_TRACK && c->stream_on))) {
-        /* The reply to a null (or to the stream) sent after the guarded packets: in order, none
-         * of theirs can follow. A late reply to another command closes nothing. */
-        c->guard_open = 0;
-        c->guard_multi = 0;
-    }
-    if (!c->synced && f->data[XF_OFF_ORDER] == XF_ORDER_NULL) {
-        /* A reply to a null: every reply to what was sent before (by an earlier client, on this
-         * link) is in, or, where the link reorders, is within reorder_ms. Commands may start. */
-        c->synced = 1;
-        c->sync_ms = c->now_ms;
-    }
+    xf__reply_order(c, f->data[XF_OFF_ORDER]);
+    xf__judge_reply(c, f->data[XF_OFF_ORDER]);
     xf__update_telemetry(c, f->data);
     xf__update_link(c);
     xf__match(c, f);
@@ -422,15 +538,15 @@ static xf_err xf__receive(xf_client *c)
         if (n == 0u) {
             break;
         }
-        /* Until no frame is left: also after the input is used up, since
-         * more intact frames can be held behind one just returned. */
-        for (;;) {
+        /* A call returns at most one frame, from the call that feeds its last byte, and says
+         * how far it read: a read that holds several packets takes a call for each. */
+        while (off < n) {
             size_t used = 0;
             xf_frame f;
             xf_parse_status r = xf_parser_feed(&c->parser, buf + off, n - off, &used, &f);
             off += used;
             if (r != XF_PARSE_FRAME) {
-                break;
+                break; /* every byte taken */
             }
             xf__on_frame(c, &f);
         }
@@ -505,13 +621,20 @@ static uint8_t xf__mode_reads(uint8_t mode)
     }
 }
 
-/* Orders during which the control quantities must be invalid (§11.2):
- * neutral, track and click-to-aim say so; gaze-geo turns into gaze lock on
- * any valid non-zero quantity. */
-static int xf__order_holds_ctrl(uint8_t order)
+/* Orders that want the control quantities invalid while they run (§11.2): neutral, track and
+ * click-to-aim say so; gaze-geo turns into gaze lock on any valid non-zero quantity. */
+static int xf__order_wants_invalid(uint8_t order)
 {
     return order == XF_ORDER_NEUTRAL || order == XF_ORDER_TRACK || order == XF_ORDER_CLICK_TO_AIM ||
            order == XF_ORDER_GAZE_GEO;
+}
+
+/* Orders during which no control quantities go: those, and every order that sets the mode, which
+ * changes how the GCU reads them from the packet that carries it on. */
+static int xf__order_holds_ctrl(uint8_t order)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    return xf__order_wants_invalid(order) || (info != NULL && (info->flags & XF_ORDER_SETS_MODE) != 0u);
 }
 
 xf_ctrl_status xf_client_control_status(const xf_client *c)
@@ -572,7 +695,7 @@ static void xf__put_control(xf_client *c, uint8_t *buf)
 static int xf__may_start(xf_client *c)
 {
     uint8_t order = c->queue[c->q_head].order;
-    if (c->synced == 1u && xf_ms_since(c->now_ms, c->sync_ms) >= c->cfg.reorder_ms) {
+    if (c->synced == 1u && xf_ms_since(c->now_ms, c->sync_ms) >= c->health.reorder_ms) {
         c->synced = 2; /* what earlier clients sent has landed, even where the link reorders */
     }
     if (c->active || c->q_count == 0u || c->nulls_owed > 0u || c->synced != 2u) {
@@ -582,7 +705,7 @@ static int xf__may_start(xf_client *c)
      * command's state. Replies come in order: send nulls until one of theirs is back, then every
      * reply of this order answers this command. Where the link reorders, every command waits so
      * (a late reply could be of any earlier command's order). */
-    return !(c->guard_open && (order == c->guard_order || c->cfg.reorder_ms > 0u || c->guard_multi) &&
+    return !(c->guard_open && (order == c->guard_order || c->health.reorder_ms > 0u || c->guard_multi) &&
              !(c->guard_wait && xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms));
 }
 
@@ -595,7 +718,7 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
     uint32_t quiet = xf_ms_since(c->now_ms, c->last_tx_ms);
     *params = c->stream;
     *n = 0;
-    if (c->cfg.reorder_ms > 0u && c->health.packets_sent > 0u && quiet < c->cfg.reorder_ms &&
+    if (c->health.reorder_ms > 0u && c->health.packets_sent > 0u && quiet < c->health.reorder_ms &&
         (c->nulls_owed > 0u || xf__may_start(c))) {
         /* The null after a command must not overtake the command's last packet, nor a command the
          * packet before it: either way the GCU would run the command twice. */
@@ -607,8 +730,13 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
         c->packets = 0;
         c->answered = 0;
         c->started_ms = c->now_ms;
-        if (xf__order_holds_ctrl(cmd->order) && (c->ctrl_kind == XF__CTRL_RATES || c->ctrl_kind == XF__CTRL_ANGLES)) {
-            xf__drop_ctrl(c); /* what was set before it must not be read after it */
+        c->run_order = cmd->order;
+        c->run_seen = 0;
+        /* What was set before it must not be read after it; a setpoint that a mode change waits for
+         * (held: the reported mode reads the other kind) is kept for the new mode. */
+        if ((c->ctrl_kind == XF__CTRL_RATES || c->ctrl_kind == XF__CTRL_ANGLES) &&
+            (xf__order_wants_invalid(cmd->order) || (xf__order_holds_ctrl(cmd->order) && c->ctrl_mode != 0u))) {
+            xf__drop_ctrl(c);
         }
     }
     if (c->active) { /* checked and encoded at submit */
@@ -627,6 +755,19 @@ static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
     return XF_ORDER_EXTERNAL_TRACK;
 }
 
+/* version_auto: while no packet of the version sent has been answered for stale_ms (a link
+ * that works answers well within it), try the other version. */
+static void xf__search_version(xf_client *c)
+{
+    if (!c->cfg.version_auto || c->health.version_answered != 0u ||
+        xf_ms_since(c->now_ms, c->version_ms) < c->cfg.stale_ms ||
+        (c->health.replies != 0u && xf_ms_since(c->now_ms, c->health.last_rx_ms) < c->cfg.stale_ms)) {
+        return;
+    }
+    c->health.version_sent = (c->health.version_sent == XF_PROTOCOL_V2) ? XF_PROTOCOL_V1 : XF_PROTOCOL_V2;
+    c->version_ms = c->now_ms;
+}
+
 static xf_err xf__send(xf_client *c)
 {
     uint8_t buf[XF_PACKET_MIN_LEN + XF_PARAMS_KNOWN_MAX];
@@ -638,6 +779,7 @@ static xf_err xf__send(xf_client *c)
     buf[XF_OFF_HOST_SUB_REQUEST] = XF_SUB_HEADER; /* ask for the GCU's sub frame in every reply */
     xf__put_carrier(c, buf);
     xf__put_gnss(c, buf);
+    xf__judge_round(c); /* before a command may start in this slot: unprotected, it would be too late */
     order = xf__next_order(c, &params, &n); /* first: a command that starts here decides the control */
     if (order < 0) {
         return XF_OK;
@@ -645,7 +787,8 @@ static xf_err xf__send(xf_client *c)
     xf__put_control(c, buf);
     len = XF_PACKET_MIN_LEN + n;
     /* header, order, parameters and CRC as the codec's packer writes them */
-    xf_packet_put_header(buf, XF_DIR_HOST, len, c->cfg.protocol_version);
+    xf__search_version(c);
+    xf_packet_put_header(buf, XF_DIR_HOST, len, c->health.version_sent);
     xf_packet_put_tail(buf, len, (uint8_t)order, params, (uint8_t)n);
     err = c->hal.write(c->hal.ctx, buf, len);
     if (err != XF_OK) {
@@ -701,6 +844,7 @@ xf_err xf_client_step(xf_client *c, uint32_t now_ms)
         c->started = 1;
         c->next_send_ms = now_ms; /* (a command submitted before it waits from here: head_new) */
         c->window_start_ms = now_ms;
+        c->version_ms = now_ms;
     }
     if (c->head_new) {
         c->head_new = 0;
@@ -836,6 +980,8 @@ uint8_t xf_client_gcu_version(const xf_client *c)
     }
     return c->tele.have_main ? c->tele.version : c->cfg.protocol_version;
 }
+
+uint8_t xf_client_answered_version(const xf_client *c) { return (c == NULL) ? 0u : c->health.version_answered; }
 
 xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
 {

@@ -29,6 +29,7 @@ void xf_sim_config_init(xf_sim_config *cfg)
     cfg->zoom_max = 30.0f;
     cfg->zoom_speed = 6.0f;
     cfg->calibration_ms = 1500;
+    cfg->main_camera = 1;
     cfg->seed = 1;
 }
 
@@ -45,7 +46,7 @@ xf_err xf_sim_init_checked(xf_sim *s, const xf_sim_config *cfg, unsigned long op
         xf_sim_config_init(&def);
         cfg = &def;
     }
-    if (cfg->version != XF_PROTOCOL_V1 && cfg->version != XF_PROTOCOL_V2) {
+    if ((cfg->version != XF_PROTOCOL_V1 && cfg->version != XF_PROTOCOL_V2) || cfg->answer_only > XF_PROTOCOL_V2) {
         return XF_ERR_RANGE;
     }
     memset(s, 0, sizeof(*s));
@@ -58,6 +59,7 @@ xf_err xf_sim_init_checked(xf_sim *s, const xf_sim_config *cfg, unsigned long op
     s->mode = XF_MODE_HEAD_LOCK;
     s->zoom1 = 1.0f;
     s->zoom2 = 1.0f;
+    xf_sim_set_main_camera(s, cfg->main_camera);
     s->camera_status = XF_CAMERA_OSD_ON;
     s->thermal_status = XF_THERMAL_MEASURE_AVAILABLE;
     return XF_OK;
@@ -87,6 +89,30 @@ void xf_sim_set_failure(xf_sim *s, uint8_t order, uint8_t state)
     }
 }
 
+void xf_sim_set_main_camera(xf_sim *s, uint8_t camera)
+{
+    if (s != NULL) {
+        s->main_camera = (camera == 2u) ? 2u : 1u;
+    }
+}
+
+const char *xf_sim_question_text(xf_sim_question q)
+{
+    switch (q) {
+    case XF_SIM_Q_LENGTH:
+        return "parameter bytes not the order's length: answered failure, not read as its first bytes";
+    case XF_SIM_Q_RANGE: return "a parameter outside the range of the version the simulator speaks: answered failure";
+    case XF_SIM_Q_RECORD:
+        return "record with a parameter other than 0x01 (the vendor's start/stop toggle): answered "
+               "failure, recording unchanged";
+    case XF_SIM_Q_CAMERA:
+        return "an order only camera 2 takes, with a camera mask other than 0x02: answered failure "
+               "0x02";
+    case XF_SIM_Q_ORDER: return "an order the protocol does not define: answered failure";
+    default: return "";
+    }
+}
+
 static uint32_t xf__rand(xf_sim *s)
 {
     s->rng ^= s->rng << 13;
@@ -102,12 +128,13 @@ static float xf__clampf(float v, float lo, float hi) { return (v < lo) ? lo : ((
 
 static int xf__ins_valid(const xf_sim *s) { return s->have_host && (s->host.main.status & XF_STATUS_INS_VALID) != 0u; }
 
+/* The carrier's attitude: as the last packet with valid INS data gave it. A packet without (a
+ * camera command sent with "no carrier data", bytes 12-29 zero) does not turn the carrier. */
 static void xf__carrier(const xf_sim *s, float *roll, float *pitch, float *yaw)
 {
-    int ok = xf__ins_valid(s);
-    *roll = ok ? xf_cdeg(s->host.main.carrier_roll) : 0.0f;
-    *pitch = ok ? xf_cdeg(s->host.main.carrier_pitch) : 0.0f;
-    *yaw = ok ? xf_cdeg(s->host.main.carrier_yaw) : 0.0f;
+    *roll = s->carrier[0];
+    *pitch = s->carrier[1];
+    *yaw = s->carrier[2];
 }
 
 static int xf__ctrl_valid(const xf_sim *s)
@@ -115,11 +142,47 @@ static int xf__ctrl_valid(const xf_sim *s)
     return s->have_host && (s->host.main.status & XF_STATUS_CTRL_VALID) != 0u;
 }
 
-/* Control rates in deg/s: one raw unit is 0.1 deg/s divided by the zoom. */
+/* The zoom of the camera on the main screen, at least 1x. */
+static float xf__main_zoom(const xf_sim *s)
+{
+    float z = (s->main_camera == 2u) ? s->zoom2 : s->zoom1;
+    return (z >= 1.0f) ? z : 1.0f;
+}
+
+/* Control rates in deg/s: one raw unit is 0.1 deg/s divided by the main screen's zoom (V2.0.6). */
 static float xf__ctrl_rate(const xf_sim *s, int16_t raw)
 {
-    float r = (float)raw * 0.1f / ((s->zoom1 >= 1.0f) ? s->zoom1 : 1.0f);
+    float r = (float)raw * 0.1f / xf__main_zoom(s);
     return xf__clampf(r, -s->cfg.max_rate_dps, s->cfg.max_rate_dps);
+}
+
+/* The modes whose control quantities are desired angles. */
+static int xf__angle_mode(xf_mode m) { return m == XF_MODE_ANGLE_CONTROL || m == XF_MODE_EULER || m == XF_MODE_FPV; }
+
+/* Whether an angle mode reads the desired angle of @p axis (0 roll, 1 pitch, 2 yaw) relative to the
+ * carrier (else as an Euler angle): FPV all three; angle control the yaw, and in V0.1 (V2.0.4's
+ * "FPV") all three; Euler none. */
+static int xf__relative_axis(const xf_sim *s, int axis)
+{
+    if (s->mode == XF_MODE_FPV) {
+        return 1;
+    }
+    return s->mode == XF_MODE_ANGLE_CONTROL && (axis == 2 || s->cfg.version < XF_PROTOCOL_V2);
+}
+
+/* An angle mode begins: its desired angles are the attitude the gimbal has, in the mode's frame,
+ * until valid control quantities say otherwise. */
+static void xf__want_current(xf_sim *s)
+{
+    float att[3], car[3];
+    int i;
+    att[0] = s->roll;
+    att[1] = s->pitch;
+    att[2] = s->yaw;
+    xf__carrier(s, &car[0], &car[1], &car[2]);
+    for (i = 0; i < 3; i++) {
+        s->want[i] = xf__relative_axis(s, i) ? xf__wrap180(att[i] - car[i]) : att[i];
+    }
 }
 
 /* ---- executing orders ---------------------------------------------------------- */
@@ -212,6 +275,9 @@ static uint8_t xf__mode_order(xf_sim *s, const xf_command *c)
     default: return XF_STATE_FAILURE;
     }
     s->have_tgt = 0;
+    if (xf__angle_mode(s->mode)) {
+        xf__want_current(s);
+    }
     return XF_STATE_SUCCESS;
 }
 
@@ -292,7 +358,7 @@ static uint8_t xf__camera_order(xf_sim *s, const xf_command *c)
 
 static uint8_t xf__click_to_aim(xf_sim *s, const xf_command *c)
 {
-    float fov = XF_SIM_FOV_DEG / s->zoom1, vfov = XF_SIM_VFOV_DEG / s->zoom1;
+    float fov = XF_SIM_FOV_DEG / xf__main_zoom(s), vfov = XF_SIM_VFOV_DEG / xf__main_zoom(s);
     s->tgt[0] = s->roll;
     s->tgt[1] = xf__clampf(s->pitch - ((float)c->y0 / 10000.0f - 0.5f) * vfov, -90.0f, 90.0f);
     s->tgt[2] = s->yaw + ((float)c->x0 / 10000.0f - 0.5f) * fov;
@@ -301,19 +367,82 @@ static uint8_t xf__click_to_aim(xf_sim *s, const xf_command *c)
     return XF_STATE_SUCCESS;
 }
 
-/* Run one order; returns its execution state. */
+/* An order only camera 2 (the thermal camera) takes: V2.0.6 prints its parameter as 0x02 and its
+ * failure as 0x02 (palette and the four thermometry orders). */
+static int xf__camera2_order(const xf_order_info *info)
+{
+    return info != NULL && (info->flags & XF_ORDER_MASK_FAILURE) != 0u && info->default_cameras == XF_CAM2;
+}
+
+/* The state a failure of @p order answers (V2.0.6): 0x01; for an NN order the mask of the cameras
+ * asked (@p cameras, 0 when the parameters could not be read: the order's default); 0x02 for an
+ * order only camera 2 takes, whatever was asked. */
+static uint8_t xf__failure(uint8_t order, uint8_t cameras)
+{
+    const xf_order_info *info = xf_order_lookup(order);
+    if (info == NULL || (info->flags & XF_ORDER_MASK_FAILURE) == 0u) {
+        return XF_STATE_FAILURE;
+    }
+    if (xf__camera2_order(info)) {
+        return XF_CAM2;
+    }
+    return (cameras != 0u) ? cameras : info->default_cameras;
+}
+
+/* The open question a packet raises, given what decoding it (in the simulator's version) gave: 0
+ * when it raises none. A record parameter or a camera-2 order's mask is checked before the range,
+ * which also refuses a mask of 0. */
+static xf_sim_question xf__question(const xf_host_packet *p, xf_err decoded)
+{
+    const xf_order_info *info = xf_order_lookup(p->order);
+    if (decoded == XF_ERR_NOT_FOUND) {
+        return XF_SIM_Q_ORDER;
+    }
+    if (decoded == XF_ERR_PARAMS) {
+        return XF_SIM_Q_LENGTH;
+    }
+    if (p->order == XF_ORDER_RECORD && p->params[0] != XF_CAM1) {
+        return XF_SIM_Q_RECORD;
+    }
+    if (xf__camera2_order(info) && p->params[0] != XF_CAM2) {
+        return XF_SIM_Q_CAMERA;
+    }
+    return (decoded != XF_OK) ? XF_SIM_Q_RANGE : (xf_sim_question)0;
+}
+
+/* Answer @p p by the strict reading of question @p q: a failure, counted and told to on_note. */
+static uint8_t xf__strict(xf_sim *s, const xf_host_packet *p, xf_sim_question q)
+{
+    xf_sim_note note;
+    note.question = q;
+    note.order = p->order;
+    note.state = xf__failure(p->order, 0u);
+    note.params_len = p->params_len;
+    note.param0 = (p->params_len > 0u) ? p->params[0] : 0u;
+    note.text = xf_sim_question_text(q);
+    s->stats.strict++;
+    if (s->cfg.on_note != NULL) {
+        s->cfg.on_note(s->cfg.user, &note);
+    }
+    return note.state;
+}
+
+/* Run one order, read in the simulator's own version (the host's version byte says what the host
+ * speaks, not what the GCU understands); returns its execution state. */
 static uint8_t xf__execute(xf_sim *s, const xf_host_packet *p)
 {
     xf_command c;
+    xf_sim_question q;
     s->stats.executed[p->order]++;
-    if (xf_command_decode(p->order, p->params, p->params_len, p->version, &c, NULL) != XF_OK) {
-        return XF_STATE_FAILURE; /* unknown order, wrong length or out of range */
+    q = xf__question(p, xf_command_decode(p->order, p->params, p->params_len, s->cfg.version, &c, NULL));
+    if (q != 0) {
+        return xf__strict(s, p, q);
     }
     if (s->fail_state[p->order] != 0u) {
         return s->fail_state[p->order];
     }
     if (xf_gimbal_supports(s->cfg.gimbal_code, p->order) == XF_SUPPORT_NO) {
-        return XF_STATE_FAILURE; /* the model has no such function (V2.0.6's support list) */
+        return xf__failure(p->order, c.cameras); /* the model has no such function (V2.0.6's support list) */
     }
     switch (p->order) {
     case XF_ORDER_CALIBRATION:
@@ -360,6 +489,25 @@ static int xf__gaze_angles(const xf_sim *s, float *pitch, float *yaw)
     *yaw = (float)(atan2(east, north) / XF_DEG2RAD);
     *pitch = (float)(atan2(up, horiz) / XF_DEG2RAD);
     return 1;
+}
+
+/* An angle mode (Euler, angle control, FPV): slew to the desired angles, which valid control
+ * quantities @p a set and which hold their value while the quantities are invalid (@p a NULL;
+ * V2.0.6, status byte B2). A relative angle is kept as the carrier turns. */
+static void xf__move_angles(xf_sim *s, const float *a, float slew)
+{
+    float car[3], to[3];
+    int i;
+    xf__carrier(s, &car[0], &car[1], &car[2]);
+    for (i = 0; i < 3; i++) {
+        if (a != NULL) {
+            s->want[i] = a[i];
+        }
+        to[i] = xf__relative_axis(s, i) ? car[i] + s->want[i] : s->want[i];
+    }
+    s->roll = xf__slew(s->roll, to[0], slew, 0);
+    s->pitch = xf__slew(s->pitch, to[1], slew, 0);
+    s->yaw = xf__slew(s->yaw, to[2], slew, 1);
 }
 
 static void xf__move(xf_sim *s, float dt)
@@ -414,24 +562,9 @@ static void xf__move(xf_sim *s, float dt)
             s->yaw += r[2] * dt;
         }
         break;
-    case XF_MODE_EULER: /* desired Euler angles */
-        if (ctrl) {
-            s->roll = xf__slew(s->roll, a[0], slew, 0);
-            s->pitch = xf__slew(s->pitch, a[1], slew, 0);
-            s->yaw = xf__slew(s->yaw, a[2], slew, 1);
-        }
-        break;
+    case XF_MODE_EULER:
     case XF_MODE_ANGLE_CONTROL:
-    case XF_MODE_FPV: {
-        /* FPV, and V0.1's angle control ("FPV" then): follow the carrier,
-         * angles relative to it. V0.2's angle control: roll and pitch are
-         * Euler angles, yaw relative. */
-        int euler_rp = s->mode == XF_MODE_ANGLE_CONTROL && s->cfg.version >= XF_PROTOCOL_V2;
-        s->roll = xf__slew(s->roll, (euler_rp ? 0.0f : cr) + a[0], slew, 0);
-        s->pitch = xf__slew(s->pitch, (euler_rp ? 0.0f : cp) + a[1], slew, 0);
-        s->yaw = xf__slew(s->yaw, cy + a[2], slew, 1);
-        break;
-    }
+    case XF_MODE_FPV: xf__move_angles(s, ctrl ? a : NULL, slew); break;
     case XF_MODE_GAZE: {
         float gp, gy;
         if (r[1] != 0.0f || r[2] != 0.0f) {
@@ -449,7 +582,7 @@ static void xf__move(xf_sim *s, float dt)
     }
     case XF_MODE_TRACK: { /* the image processor centres the target */
         float k = xf__clampf(3.0f * dt, 0.0f, 1.0f);
-        float fov = XF_SIM_FOV_DEG / s->zoom1;
+        float fov = XF_SIM_FOV_DEG / xf__main_zoom(s);
         if (s->pod_status & XF_POD_TRACKING_OK) {
             s->yaw += (float)s->track_x / 1000.0f * fov * 0.5f * k;
             s->pitch -= (float)s->track_y / 1000.0f * fov * 0.5f * k;
@@ -713,9 +846,16 @@ static void xf__on_packet(xf_sim *s, const xf_host_packet *p)
     size_t len = 0;
     uint8_t state = 0;
     int runs;
+    if (s->cfg.answer_only != 0u && p->version != s->cfg.answer_only) {
+        s->stats.ignored++; /* as if it had not come: no reply, nothing read from it */
+        return;
+    }
     s->stats.packets_in++;
     if (p->main.status & XF_STATUS_INS_VALID) {
         s->stats.ins_valid_packets++;
+        s->carrier[0] = xf_cdeg(p->main.carrier_roll);
+        s->carrier[1] = xf_cdeg(p->main.carrier_pitch);
+        s->carrier[2] = xf_cdeg(p->main.carrier_yaw);
     }
     s->host = *p;
     s->have_host = 1;

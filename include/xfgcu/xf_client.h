@@ -33,8 +33,10 @@
  * none of the old command's replies gives up after command_timeout_ms,
  * leaving the client unsettled). Before it stops,
  * a program lets the client settle (xf_client_settled()). On a link that
- * reorders or duplicates, reorder_ms bounds how far (docs/protocol.md
- * §7.4 says what each rule guarantees). Calibration's "operating" keeps it
+ * reorders or duplicates, reorder_ms bounds how far; while it is 0 the
+ * client uses a bound of its own until the link has shown that it keeps
+ * order, and whenever replies come out of turn or twice (xf_health;
+ * docs/protocol.md §7.4 says what each rule guarantees). Calibration's "operating" keeps it
  * going until its final state. Results: ok, failed (with the failed-camera
  * mask), timeout, link lost; by callback and by polling the command's id.
  *
@@ -183,6 +185,21 @@ typedef struct xf_health {
     uint32_t replies_missing; /**< packets of the last full second that got no reply */
     uint32_t send_errors;     /**< HAL writes that failed */
     uint32_t watchdog_trips;  /**< times the rate watchdog started sending zero rates */
+    uint8_t version_sent;     /**< the version byte the client sends now (with version_auto: the one it tries) */
+    /** the version byte of the packets the GCU answers: the one a reply to a null came for; 0 before (and,
+     *  with version_auto, while the client looks for it again after the link went down) */
+    uint8_t version_answered;
+    /** 1: the link has shown that it keeps order (the first packet answered before the second was sent,
+     *  or 25 packet periods in a row with one reply each) and no reply came out of turn since; never again
+     *  once a reply came that no link in order delivers (docs/protocol.md §7.4) */
+    uint8_t in_order;
+    /** the reorder bound in force, ms: xf_client_config.reorder_ms when the application set one (or fixed
+     *  0); else the client's own while the link is not in_order, 0 while it is */
+    uint16_t reorder_ms;
+    /** replies that came out of turn or twice: more in one packet period than packets sent in it, a reply
+     *  of a command's order after another order's reply that followed one of its own, more replies of a
+     *  command than its packets. On a link that keeps order and does not duplicate, 0. */
+    uint32_t out_of_turn;
 } xf_health;
 
 /** Carrier state; gravity excluded from the accelerations. */
@@ -329,13 +346,23 @@ typedef struct xf_client_config {
     uint16_t down_ms;            /**< no valid reply for this long: ::XF_LINK_DOWN; > stale_ms, default 1000 */
     uint16_t rate_watchdog_ms;   /**< rates older than this become zero rates; default 500; 0 = off (not recommended) */
     uint8_t protocol_version;    /**< sent in byte 4, and the version commands are checked for; >= 1, default 1 */
+    /** 1: find the version the GCU answers (xf_client_answered_version()): send protocol_version, and the other
+     *  version (1 or 2) whenever no reply has come for stale_ms, until a null is answered; then keep the version
+     *  that was answered, looking again only once the link has gone down. 0 (default): send protocol_version. */
+    uint8_t version_auto;
     /** The longest a packet or a reply can be overtaken by a later one on the link, ms; default 0:
      *  the link keeps order (serial, TCP, UDP on loopback or a wired LAN). Over a network that can
      *  reorder or duplicate datagrams, set the bound: the client then waits this long around each
      *  command (docs/protocol.md §7.4), so that no reply is taken for the wrong command and the
      *  GCU runs each command once. At most 1000, and stale_ms must exceed a packet period plus
-     *  twice this (xf_client_config_problem()). */
+     *  twice this (xf_client_config_problem()). While it is 0, and unless reorder_fixed is set, the client
+     *  judges the link itself and uses the largest bound stale_ms and command_timeout_ms allow (114 ms with
+     *  the defaults) while the link has not shown that it keeps order (xf_health.reorder_ms, in_order,
+     *  out_of_turn; docs/protocol.md §7.4). */
     uint16_t reorder_ms;
+    /** 1: keep reorder_ms as set (0 included) whatever the link shows; 0 (default): the client may apply a
+     *  bound of its own on a link that reorders or duplicates, while reorder_ms is 0 */
+    uint8_t reorder_fixed;
 } xf_client_config;
 
 /**
@@ -442,9 +469,16 @@ typedef struct xf_client {
      *  private: replies of the running command's order so far */
     uint32_t guard_ms;
     uint16_t answered;
-    uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
-    uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
-    uint8_t head_new;    /**< private: the queue's head is new: it waits from the next step's time */
+    uint8_t guard_wait;       /**< private: a reply of guard_order must come first (none had come when it ended) */
+    uint8_t guard_multi;      /**< private: the guard holds for every order (another guard was still open) */
+    uint8_t head_new;         /**< private: the queue's head is new: it waits from the next step's time */
+    uint32_t version_ms;      /**< private: when the client began to send the version it sends now */
+    uint16_t auto_reorder_ms; /**< private: the bound the client applies when it sees replies out of turn */
+    uint8_t round_replies;    /**< private: replies since the last packet sent (saturating) */
+    uint8_t run_order;        /**< private: the order of the running command, or of the last one */
+    uint8_t run_seen;         /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
+    uint8_t steady;           /**< private: packet periods in a row with one reply each */
+    uint8_t out_of_order;     /**< private: a reply came that no link in order can deliver: never in_order again */
 } xf_client;
 
 /**
@@ -490,7 +524,7 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
 /**
  * Why xf_client_init() would refuse @p cfg with ::XF_ERR_RANGE, as one
  * short line naming the members and their limits: a rate outside 1..200; a version or
- * operating timeout of 0; reorder_ms over 1000; stale_ms not above one packet
+ * operating timeout of 0; reorder_ms over 1000; version_auto other than 0 or 1; stale_ms not above one packet
  * period plus twice reorder_ms (the link would read stale between two good
  * replies: at 1 Hz the default 250 ms is), down_ms not above stale_ms;
  * command_timeout_ms under a round trip (two packet periods plus twice
@@ -656,15 +690,18 @@ void xf_client_set_main_camera(xf_client *c, uint8_t camera);
  * | head lock 0x11, head follow 0x12, orthoview 0x13, gaze 0x16  | rates  |
  * | track 0x17, any other mode, no reply yet                     | none   |
  *
- * and never while a neutral, track, click-to-aim or gaze-geo command runs
- * (the quantities must be invalid then; after click-to-aim the gimbal is in
- * head lock, and a valid non-zero quantity turns gaze-geo into gaze lock).
- * Otherwise the packet carries zeros with ctrl_valid clear. A setpoint is
- * dropped, and must be set again, when the mode that read it changes, and
- * when one of those four commands starts: the next mode may read the same
- * bytes as something else. A setpoint held because the mode reads the other
- * kind is kept, and goes out once a mode that reads it is reported ("set
- * the angles, then switch to Euler").
+ * and never while a neutral, click-to-aim or mode command (one that sets
+ * the mode: angle control, head lock, ..., track, gaze-geo, FPV) runs: the
+ * first three need the quantities invalid (after click-to-aim the gimbal is
+ * in head lock, and a valid non-zero quantity turns gaze-geo into gaze
+ * lock), and a mode command changes how the GCU reads them from its first
+ * packet on. Otherwise the packet carries zeros with ctrl_valid clear. A
+ * setpoint is dropped, and must be set again, when the mode that read it
+ * changes, when a mode command starts while it is on the wire, and when a
+ * neutral, track, click-to-aim or gaze-geo command starts: the next mode
+ * may read the same bytes as something else. A setpoint held because the
+ * mode reads the other kind is kept, and goes out once a mode that reads it
+ * is reported ("set the angles, then switch to Euler").
  */
 typedef enum xf_ctrl_status {
     XF_CTRL_SENT = 0,       /**< on the wire, ctrl_valid set (zero rates when the watchdog has tripped) */
@@ -672,7 +709,7 @@ typedef enum xf_ctrl_status {
     XF_CTRL_NO_MODE = 2,    /**< held: no reply yet, so the mode that would read it is unknown */
     XF_CTRL_WRONG_KIND = 3, /**< held: the reported mode reads the other kind (rates, angles) */
     XF_CTRL_NOT_READ = 4,   /**< held: the reported mode reads no control quantities (track) */
-    XF_CTRL_COMMAND = 5,    /**< held: a neutral, track, click-to-aim or gaze-geo command runs */
+    XF_CTRL_COMMAND = 5,    /**< held: a neutral, click-to-aim or mode command runs (track, gaze-geo, Euler, ...) */
     XF_CTRL_DROPPED = 6     /**< dropped: the mode that read it changed, or one of those commands started */
 } xf_ctrl_status;
 
@@ -764,11 +801,25 @@ xf_err xf_client_submit(xf_client *c, const xf_command *cmd, uint32_t *id, xf_fi
  * speaks (the version byte of its replies) once it has answered, before
  * that cfg.protocol_version. Commands are checked and encoded for it
  * (ranges such as palette and picture-in-picture); the version byte the
- * client sends stays cfg.protocol_version.
+ * client sends is cfg.protocol_version, or with version_auto the one the GCU
+ * answers (xf_client_answered_version()).
  * @param c  the client
  * @return 1 or 2 (what the GCU sends), or 0 for a NULL @p c
  */
 uint8_t xf_client_gcu_version(const xf_client *c);
+
+/**
+ * The version byte of the host packets the GCU answers: the one the client
+ * was sending when the reply to one of its nulls came back. With
+ * xf_client_config.version_auto the client keeps sending it; the GCU's own
+ * version, whose meaning the client follows, is xf_client_gcu_version().
+ * Also in xf_health.version_answered.
+ * @param c  the client
+ * @return 1 or 2 (protocol_version without version_auto), or 0 before a null
+ *   has been answered (and while a version_auto client looks again after
+ *   the link went down), and for a NULL @p c
+ */
+uint8_t xf_client_answered_version(const xf_client *c);
 
 /**
  * Show or hide the on-screen display: an ::XF_ORDER_OSD command with the

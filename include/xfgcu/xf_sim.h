@@ -5,12 +5,21 @@
  *
  * Portable C over xf_hal like the client (no OS, no heap, no globals). It
  * answers only correct host packets, one reply each; keeps the once-rule
- * (an order runs once while it repeats, except external_track); gives the
- * feedback of every order, with configurable failures and an "operating"
- * phase for calibration; moves its attitude by mode (rates integrate,
- * angles slew at a finite speed, orthoview points down, FPV follows the
- * carrier); zooms, ranges, tracks; replies in protocol version 1 or 2;
- * and injects faults (drop, corrupt, delay, jitter, duplicates) on request.
+ * (an order runs once while it repeats, except external_track); reads each
+ * command in the protocol version it speaks itself, whatever the host's
+ * version byte; gives the feedback of every order, with configurable
+ * failures and an "operating" phase for calibration; moves its attitude by
+ * mode (rates integrate, angles slew at a finite speed, orthoview points
+ * down, FPV follows the carrier; with ctrl_valid clear the desired angles
+ * hold); reports relative angles from its own model of the motors, not from
+ * the carrier data of the packet; zooms, ranges, tracks; replies in
+ * protocol version 1 or 2; and injects faults (drop, corrupt, delay,
+ * jitter, duplicates) on request.
+ *
+ * Where the vendor's V2.0.6 leaves a GCU's behaviour open (a parameter of
+ * the wrong length, a record parameter other than 0x01, ...), it takes the
+ * strict reading, answers failure, and says so through xf_sim_config.on_note
+ * (docs/protocol.md, "Open questions for a real gimbal").
  *
  * Part of the xfgcu::client library (it needs libm, so not in builds
  * without a C library). No function waits: xf_sim_step() takes as long as
@@ -35,6 +44,37 @@ XF_BEGIN_DECLS
 #define XF_SIM_DELAY_QUEUE 128 /**< packets held back by the delay, jitter and duplicate faults */
 #endif
 
+/**
+ * The questions V2.0.6 leaves open that a host packet raised, and on which
+ * the simulator took the strict reading (xf_sim_note.question).
+ */
+typedef enum xf_sim_question {
+    XF_SIM_Q_LENGTH = 1, /**< parameter bytes not the order's length: failed, not read as its first bytes */
+    XF_SIM_Q_RANGE = 2,  /**< a parameter outside the range of the version the simulator speaks: failed */
+    XF_SIM_Q_RECORD = 3, /**< record with a parameter other than 0x01 (the vendor's toggle): failed */
+    XF_SIM_Q_CAMERA = 4, /**< an order only camera 2 takes, with another camera mask than 0x02: failed */
+    XF_SIM_Q_ORDER = 5   /**< an order the protocol does not define: failed */
+} xf_sim_question;
+
+/** What the simulator tells xf_sim_config.on_note: a packet it read strictly. */
+typedef struct xf_sim_note {
+    xf_sim_question question; /**< which open question */
+    uint8_t order;            /**< the order of the host packet */
+    uint8_t state;            /**< the execution state it answered */
+    uint8_t params_len;       /**< the packet's parameter bytes */
+    uint8_t param0;           /**< the first of them (0 when there is none) */
+    const char *text;         /**< xf_sim_question_text(question): one line, static */
+} xf_sim_note;
+
+/**
+ * Called when the simulator answers a packet by the strict reading of an
+ * open question, from inside xf_sim_step() or xf_sim_process(). It must not
+ * call back into the simulator.
+ * @param user  xf_sim_config.user
+ * @param note  what happened, valid during the call only
+ */
+typedef void (*xf_sim_note_fn)(void *user, const xf_sim_note *note);
+
 /** A simulator's configuration; start from xf_sim_config_init(). */
 typedef struct xf_sim_config {
     uint8_t version;     /**< version byte of replies: 1 or 2; default 1 */
@@ -49,8 +89,17 @@ typedef struct xf_sim_config {
     float zoom_speed;               /**< continuous zoom, x per second, default 6 */
     uint32_t calibration_ms;        /**< "operating" phase, default 1500 */
     uint16_t feedback_after;        /**< the state comes in the Nth reply after execution (0 = at once) */
-    uint8_t state_once;             /**< 1: only one reply carries the state (default: every repeat does) */
-    uint32_t seed;                  /**< PRNG for random faults, default 1 */
+    /** 1: only the first reply after an execution carries its state, the replies to the order's repeats are
+     *  72 bytes (one reading of V2.0.6's flowchart); 0 (default): every reply to a repeat carries it */
+    uint8_t state_once;
+    uint8_t main_camera; /**< the camera on its main screen, whose zoom scales the control rates and the field of
+                            view: 1 (default) or 2 (any other value: 1); xf_sim_set_main_camera() changes it */
+    /** answer only host packets whose version byte is this (1 or 2), and ignore the others as if they had not
+     *  come, as some GCU-side peers do; 0 (default): answer every version */
+    uint8_t answer_only;
+    uint32_t seed;          /**< PRNG for random faults, default 1 */
+    xf_sim_note_fn on_note; /**< told of each packet answered by a strict reading (xf_sim_note); NULL: none */
+    void *user;             /**< passed to on_note */
 } xf_sim_config;
 
 /** Faults to inject; set fields of xf_sim.fault at any time. */
@@ -84,6 +133,8 @@ typedef struct xf_sim_stats {
     uint32_t photos, recordings; /**< recordings started */
     uint32_t ins_valid_packets;  /**< host packets with ins_valid set */
     uint32_t write_errors;       /**< replies the link (or xf_sim_process()'s buffer) did not take */
+    uint32_t ignored;            /**< correct host packets of another version than answer_only, not answered */
+    uint32_t strict;             /**< executions answered by a strict reading (xf_sim_note) */
 } xf_sim_stats;
 
 /** A packet held back by the delay, jitter or duplicate faults (a member of xf_sim). */
@@ -150,14 +201,19 @@ typedef struct xf_sim {
     float distance_m;             /**< laser range, m */
     /** @var xf_sim::track_x
      *  target offset x, as target_offset_x */
-    int16_t track_x, track_y;                   /**< target offset y, as target_offset_y */
-    uint8_t thermal_status;                     /**< V0.2 `XF_THERMAL_*` bits */
-    uint16_t camera_status;                     /**< V0.2 `XF_CAMERA_*` bits */
-    int8_t time_zone;                           /**< V0.2 time zone, hours */
-    uint8_t lighting;                           /**< fill light intensity */
-    uint8_t ortho_follow;                       /**< orthoview entered from head follow: yaw follows the carrier */
-    float tgt[3];                               /**< click-to-aim / neutral target: roll, pitch, yaw */
-    uint8_t have_tgt;                           /**< slewing to tgt */
+    int16_t track_x, track_y; /**< target offset y, as target_offset_y */
+    uint8_t thermal_status;   /**< V0.2 `XF_THERMAL_*` bits */
+    uint16_t camera_status;   /**< V0.2 `XF_CAMERA_*` bits */
+    int8_t time_zone;         /**< V0.2 time zone, hours */
+    uint8_t lighting;         /**< fill light intensity */
+    uint8_t ortho_follow;     /**< orthoview entered from head follow: yaw follows the carrier */
+    float tgt[3];             /**< click-to-aim / neutral target: roll, pitch, yaw */
+    uint8_t have_tgt;         /**< slewing to tgt */
+    uint8_t main_camera;      /**< the camera on the main screen: 1 or 2 */
+    /** the desired angles of an angle mode (angle control, Euler, FPV), deg, in that mode's frame: set from
+     *  valid control quantities, kept while they are invalid (V2.0.6), the attitude held when the mode began */
+    float want[3];
+    float carrier[3]; /**< the carrier's roll, pitch, yaw, deg, from the last packet with valid INS data (0 before) */
     xf_sim_delayed delayed[XF_SIM_DELAY_QUEUE]; /**< packets held back, in the order they are due */
     uint16_t n_delayed;                         /**< packets in delayed */
     uint16_t n_held_in;                         /**< of which host packets on their way in */
@@ -181,7 +237,8 @@ void xf_sim_config_init(xf_sim_config *cfg);
  * @param s    the simulator to set up (caller's storage)
  * @param cfg  its configuration; NULL means defaults
  * @return ::XF_OK, ::XF_ERR_ARG (@p s NULL), ::XF_ERR_RANGE (a version other
- *   than 1 or 2), ::XF_ERR_CONFIG (built with other options).
+ *   than 1 or 2, an answer_only other than 0, 1 or 2), ::XF_ERR_CONFIG (built
+ *   with other options).
  */
 #define xf_sim_init(s, cfg) xf_sim_init_checked((s), (cfg), XF_OPTIONS_CHECK, sizeof(xf_sim))
 
@@ -243,13 +300,32 @@ xf_err xf_sim_process(xf_sim *s, const uint8_t *in, size_t len, uint32_t now_ms,
                       size_t *out_len);
 
 /**
- * Make executions of @p order answer @p state (0x01, or a failed-camera mask); 0 restores success.
+ * Make executions of @p order answer @p state (0x01, or a failed-camera mask) as given; 0 restores
+ * success. (Without it, a failure answers what V2.0.6 gives the order: 0x01, the mask of the cameras
+ * asked for an NN order, 0x02 for the orders only camera 2 takes.)
  * Does nothing for a NULL @p s.
  * @param s      the simulator
  * @param order  the order byte
  * @param state  the state byte to answer (0 = succeed and execute)
  */
 void xf_sim_set_failure(xf_sim *s, uint8_t order, uint8_t state);
+
+/**
+ * Which camera is on the simulator's main screen: its zoom divides the
+ * control rates (V2.0.6: 0.1 deg/s divided by the main screen's zoom) and
+ * sets the field of view of click-to-aim and tracking. Does nothing for a
+ * NULL @p s.
+ * @param s       the simulator
+ * @param camera  1 or 2 (any other value: 1)
+ */
+void xf_sim_set_main_camera(xf_sim *s, uint8_t camera);
+
+/**
+ * One line that says what the simulator did with an open question, for a log.
+ * @param q  the question
+ * @return a static string; "" for a value that is no question
+ */
+const char *xf_sim_question_text(xf_sim_question q);
 
 /**
  * The current gimbal state as the next reply would carry it (order and

@@ -4,9 +4,11 @@
  * slave), loopback UDP and loopback TCP, ephemeral ports, on the real clock
  * with xf_posix_poll. Each scenario is run as a table over the three.
  *
- * Every wait is bounded by a deadline; the timing checks leave room for a
- * loaded machine and sanitizers (the exact timing is tested on the fake
- * clock in test_client_logic.c).
+ * Every wait is bounded by a deadline, and waits for an event rather than
+ * for a time. On the real clock a loaded machine (or a sanitizer) can run a
+ * step late by any amount, so the timing checks here are lower bounds and
+ * orders of events only; the exact timing is tested on the fake clock in
+ * the test_client_*.c files of this folder.
  */
 #define _XOPEN_SOURCE 700 /* mkdtemp, readlink */
 #include <arpa/inet.h>
@@ -26,7 +28,6 @@
 #define T_DOWN_MS        500u
 #define T_CMD_TIMEOUT_MS 200u
 #define T_WATCHDOG_MS    150u
-#define T_SLACK_MS       150u /* scheduling slack allowed on a timing check */
 
 /* ---- driving ------------------------------------------------------------------------- */
 
@@ -80,6 +81,16 @@ static uint32_t submit(tx *t, uint8_t order, uint8_t cameras)
     return id;
 }
 
+/* Step until a reply comes later than @p rx_ms (xf_health.last_rx_ms), at most @p max_ms; 1 if one did. */
+static int wait_reply_after(tx *t, uint32_t rx_ms, uint32_t max_ms)
+{
+    uint32_t t0 = now();
+    while (xf_client_health(&t->c)->last_rx_ms == rx_ms && xf_ms_since(now(), t0) < max_ms) {
+        round_once(t);
+    }
+    return xf_client_health(&t->c)->last_rx_ms != rx_ms;
+}
+
 /* DOWN callbacks from index @p from on. */
 static size_t downs_since(const tx *t, size_t from)
 {
@@ -110,7 +121,7 @@ static int setup(void **state)
         free(t);
         return -1;
     }
-    if (!wait_link(t, XF_LINK_UP, 3000)) {
+    if (!wait_link(t, XF_LINK_UP, 5000)) {
         print_error("%s: the link did not come up\n", kind_name(t->kind));
         tx_close(t);
         free(t);
@@ -136,7 +147,7 @@ static void test_two_shutters(void **state)
     tx *t = (tx *)*state;
     uint32_t a = submit(t, XF_ORDER_SHUTTER, 0), b = submit(t, XF_ORDER_SHUTTER, 0);
     size_t i, runs = 0;
-    assert_status(wait_cmd(t, b, 3000, NULL), XF_CMD_OK);
+    assert_status(wait_cmd(t, b, 5000, NULL), XF_CMD_OK);
     assert_status(xf_client_command_status(&t->c, a, NULL), XF_CMD_OK);
     assert_int_equal(t->sim.stats.executed[XF_ORDER_SHUTTER], 2);
     assert_int_equal(t->sim.stats.photos, 2);
@@ -159,7 +170,7 @@ static void test_failing_mask(void **state)
     uint32_t id;
     xf_sim_set_failure(&t->sim, XF_ORDER_ZOOM_IN, XF_CAM2);
     id = submit(t, XF_ORDER_ZOOM_IN, XF_CAM1 | XF_CAM2);
-    assert_status(wait_cmd(t, id, 3000, &res), XF_CMD_FAILED);
+    assert_status(wait_cmd(t, id, 5000, &res), XF_CMD_FAILED);
     assert_int_equal(res.failed_cameras, XF_CAM2);
     assert_int_equal(res.state, XF_CAM2);
     assert_int_equal(res.order, XF_ORDER_ZOOM_IN);
@@ -173,15 +184,15 @@ static void test_drops_retries_timeout(void **state)
     uint32_t id;
     t->sim.fault.drop_next = 10000;
     id = submit(t, XF_ORDER_SHUTTER, 0);
-    assert_status(wait_cmd(t, id, 3000, &res), XF_CMD_TIMEOUT);
-    assert_true(res.packets >= 5u); /* 10 at 50 Hz in 200 ms */
-    assert_true(res.elapsed_ms >= T_CMD_TIMEOUT_MS && res.elapsed_ms < T_CMD_TIMEOUT_MS + T_SLACK_MS);
+    assert_status(wait_cmd(t, id, 5000, &res), XF_CMD_TIMEOUT);
+    assert_true(res.packets >= 1u); /* about 10 at 50 Hz in 200 ms, fewer on a loaded machine */
+    assert_true(res.elapsed_ms >= T_CMD_TIMEOUT_MS);
     assert_int_equal(t->sim.stats.executed[XF_ORDER_SHUTTER], 1);
-    assert_true(t->sim.stats.dropped >= 5u);
+    assert_true(t->sim.stats.dropped >= res.packets);
     t->sim.fault.drop_next = 0;
-    assert_true(wait_link(t, XF_LINK_UP, 2000));
+    assert_true(wait_link(t, XF_LINK_UP, 5000));
     id = submit(t, XF_ORDER_SHUTTER, 0);
-    assert_status(wait_cmd(t, id, 3000, NULL), XF_CMD_OK);
+    assert_status(wait_cmd(t, id, 5000, NULL), XF_CMD_OK);
     assert_int_equal(t->sim.stats.executed[XF_ORDER_SHUTTER], 2);
 }
 
@@ -191,26 +202,30 @@ static void test_dead_link(void **state)
     tx *t = (tx *)*state;
     size_t mark;
     uint32_t last_rx, t_down = 0, t_stale = 0;
-    size_t i;
+    size_t i, i_stale = 0, i_down = 0;
     pump(t, 50);
     mark = t->log.n_links;
     t->sim.fault.silent = 1;
     last_rx = t->c.health.last_rx_ms;
-    assert_true(wait_link(t, XF_LINK_DOWN, T_DOWN_MS + 1000u));
+    assert_true(wait_link(t, XF_LINK_DOWN, T_DOWN_MS + 5000u));
     for (i = mark; i < t->log.n_links; i++) {
         if (t->log.links[i] == XF_LINK_STALE && t_stale == 0u) {
             t_stale = t->log.link_ms[i];
+            i_stale = i;
         }
         if (t->log.links[i] == XF_LINK_DOWN) {
             t_down = t->log.link_ms[i];
+            i_down = i;
         }
     }
-    assert_true(t_stale != 0u && t_down != 0u);
-    assert_true(xf_ms_since(t_stale, last_rx) >= T_STALE_MS && xf_ms_since(t_stale, last_rx) < T_STALE_MS + T_SLACK_MS);
-    assert_true(xf_ms_since(t_down, last_rx) >= T_DOWN_MS && xf_ms_since(t_down, last_rx) < T_DOWN_MS + T_SLACK_MS);
+    /* down at down_ms, never sooner; stale before it, never sooner than stale_ms (a step later than
+     * down_ms - stale_ms on a loaded machine goes from up to down at once) */
+    assert_true(t_down != 0u);
+    assert_true(xf_ms_since(t_down, last_rx) >= T_DOWN_MS);
+    assert_true(t_stale == 0u || (xf_ms_since(t_stale, last_rx) >= T_STALE_MS && i_stale < i_down));
     assert_int_equal(t->c.health.last_rx_ms, last_rx);
     t->sim.fault.silent = 0;
-    assert_true(wait_link(t, XF_LINK_UP, 2000));
+    assert_true(wait_link(t, XF_LINK_UP, 5000));
 }
 
 /* The watchdog zeroes rates that are not refreshed. */
@@ -232,7 +247,6 @@ static void test_watchdog(void **state)
     assert_int_equal(m->yaw_ctrl, 0);
     assert_int_equal(m->status & XF_STATUS_CTRL_VALID, XF_STATUS_CTRL_VALID);
     assert_true(xf_ms_since(t_zero, t0) >= T_WATCHDOG_MS);
-    assert_true(xf_ms_since(t_zero, t0) < T_WATCHDOG_MS + T_SLACK_MS);
     assert_int_equal(t->c.health.watchdog_active, 1);
     assert_int_equal(t->c.health.watchdog_trips, 1);
     pump(t, 30);
@@ -245,10 +259,10 @@ static void test_telemetry_ages(void **state)
     tx *t = (tx *)*state;
     const xf_telemetry *tel = xf_client_telemetry(&t->c);
     uint32_t seen;
-    pump(t, 100);
+    seen = xf_client_health(&t->c)->last_rx_ms;
+    assert_true(wait_reply_after(t, seen, 5000)); /* replies keep coming, each stamped */
     assert_true(tel->have_main && tel->have_sub);
-    assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) < 60u);
-    assert_true(xf_ms_since(now(), tel->sub_ms) < 60u);
+    assert_int_equal(tel->sub_ms, xf_client_health(&t->c)->last_rx_ms);
     assert_string_equal(xf_gimbal_model(tel->gimbal_code), "Z-9B_V4(T)");
     assert_int_equal(tel->gimbal_mode, XF_MODE_HEAD_LOCK);
     t->sim.fault.silent = 1;
@@ -258,8 +272,8 @@ static void test_telemetry_ages(void **state)
     assert_int_equal(xf_client_health(&t->c)->last_rx_ms, seen);
     assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) >= 300u);
     t->sim.fault.silent = 0;
-    pump(t, 100);
-    assert_true(xf_ms_since(now(), xf_client_health(&t->c)->last_rx_ms) < 60u);
+    assert_true(wait_reply_after(t, seen, 5000));
+    assert_int_equal(tel->sub_ms, xf_client_health(&t->c)->last_rx_ms);
 }
 
 /*
@@ -275,13 +289,13 @@ static void test_reconnect_after_disconnect(void **state)
     size_t mark = t->log.n_links;
     uint32_t id, replies;
     xf_cmd_status st;
-    xf_simlink_disconnect(&t->sl, T_DOWN_MS + 300u);
+    xf_simlink_disconnect(&t->sl, T_DOWN_MS + 1500u); /* longer than a late step on a loaded machine */
     id = submit(t, XF_ORDER_SHUTTER, 0);
-    st = wait_cmd(t, id, 3000, NULL);
+    st = wait_cmd(t, id, 5000, NULL);
     assert_true(st == XF_CMD_TIMEOUT || st == XF_CMD_LINK_LOST);
-    assert_true(wait_link(t, XF_LINK_DOWN, T_DOWN_MS + 1000u));
+    assert_true(wait_link(t, XF_LINK_DOWN, T_DOWN_MS + 5000u));
     replies = t->c.health.replies;
-    assert_true(wait_link(t, XF_LINK_UP, 4000));
+    assert_true(wait_link(t, XF_LINK_UP, 5000));
     assert_true(t->c.health.replies > replies);
     pump(t, 100);
     if (downs_since(t, mark) != 1u) {
@@ -295,7 +309,7 @@ static void test_reconnect_after_disconnect(void **state)
     assert_int_equal(t->log.links[t->log.n_links - 1u], XF_LINK_UP);
     assert_int_equal(t->sim.stats.photos, 0); /* the lost shutter never ran */
     id = submit(t, XF_ORDER_SHUTTER, 0);
-    assert_status(wait_cmd(t, id, 3000, NULL), XF_CMD_OK);
+    assert_status(wait_cmd(t, id, 5000, NULL), XF_CMD_OK);
     assert_int_equal(t->sim.stats.photos, 1);
 }
 
@@ -306,19 +320,19 @@ static void test_reconnect_after_restart(void **state)
     size_t mark = t->log.n_links;
     uint32_t id, t0;
     id = submit(t, XF_ORDER_SHUTTER, 0);
-    assert_status(wait_cmd(t, id, 3000, NULL), XF_CMD_OK);
+    assert_status(wait_cmd(t, id, 5000, NULL), XF_CMD_OK);
     sim_link_close(t);
     t0 = now();
-    assert_true(wait_link(t, XF_LINK_DOWN, T_DOWN_MS + 1000u));
+    assert_true(wait_link(t, XF_LINK_DOWN, T_DOWN_MS + 5000u));
     while (xf_ms_since(now(), t0) < T_DOWN_MS + 100u) {
         round_once(t);
     }
     assert_int_equal(xf_client_link(&t->c), XF_LINK_DOWN);
     assert_xf(xf_sim_init(&t->sim, &t->scfg), XF_OK); /* a fresh GCU */
     sim_link_open(t);
-    assert_true(wait_link(t, XF_LINK_UP, 4000));
+    assert_true(wait_link(t, XF_LINK_UP, 5000));
     id = submit(t, XF_ORDER_SHUTTER, 0);
-    assert_status(wait_cmd(t, id, 3000, NULL), XF_CMD_OK);
+    assert_status(wait_cmd(t, id, 5000, NULL), XF_CMD_OK);
     assert_int_equal(t->sim.stats.photos, 1);
     assert_int_equal(downs_since(t, mark), 1);
 }

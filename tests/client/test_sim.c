@@ -7,76 +7,7 @@
  * faults.
  */
 #include "client_test.h"
-
-#define OUT_CAP 4096
-
-typedef struct sim_fx {
-    xf_sim s;
-    uint8_t out[OUT_CAP];
-    size_t out_len;
-    uint32_t now;
-} sim_fx;
-
-static sim_fx *fx_new(const xf_sim_config *cfg)
-{
-    sim_fx *f = (sim_fx *)calloc(1, sizeof(*f));
-    assert_non_null(f);
-    assert_xf(xf_sim_init(&f->s, cfg), XF_OK);
-    f->now = 1000;
-    return f;
-}
-
-/* A host packet of @p version carrying @p cmd (NULL: the null order). */
-static size_t host_bytes(uint8_t *buf, uint8_t version, const xf_command *cmd, uint8_t status)
-{
-    xf_host_packet p;
-    size_t len = 0;
-    xf_host_packet_init(&p, version);
-    p.main.status = status;
-    if (cmd != NULL) {
-        assert_xf(xf_host_set_command(&p, cmd, NULL), XF_OK);
-    }
-    assert_xf(xf_host_pack(&p, buf, XF_PACKET_MAX_LEN, &len), XF_OK);
-    return len;
-}
-
-/* Feed raw bytes at the fixture's clock; the replies are in f->out. */
-static void feed(sim_fx *f, const uint8_t *data, size_t len)
-{
-    f->out_len = 0;
-    assert_xf(xf_sim_process(&f->s, data, len, f->now, f->out, sizeof(f->out), &f->out_len), XF_OK);
-}
-
-/* Feed one host packet; decode the one reply into @p reply (if not NULL). */
-static void send_bytes(sim_fx *f, const uint8_t *buf, size_t len, xf_gcu_packet *reply)
-{
-    if (reply != NULL) {
-        memset(reply, 0, sizeof(*reply)); /* a failed unpack below leaves it as it was */
-    }
-    feed(f, buf, len);
-    assert_true(f->out_len >= XF_PACKET_MIN_LEN);
-    if (reply != NULL) {
-        assert_xf(xf_gcu_unpack(f->out, f->out_len, reply), XF_OK);
-    }
-}
-
-/* Send one packet of @p order (default parameters, V@p version); decode the one reply. */
-static void send_order(sim_fx *f, uint8_t version, uint8_t order, xf_gcu_packet *reply)
-{
-    uint8_t buf[XF_PACKET_MAX_LEN];
-    xf_command cmd;
-    size_t len;
-    xf_command_init(&cmd, order);
-    len = host_bytes(buf, version, order == XF_ORDER_NULL ? NULL : &cmd, 0);
-    send_bytes(f, buf, len, reply);
-}
-
-static void send_cmd(sim_fx *f, uint8_t version, const xf_command *cmd, xf_gcu_packet *reply)
-{
-    uint8_t buf[XF_PACKET_MAX_LEN];
-    size_t len = host_bytes(buf, version, cmd, 0);
-    send_bytes(f, buf, len, reply);
-}
+#include "sim_fx.h"
 
 static void test_init(void **state)
 {
@@ -556,24 +487,6 @@ static void test_orthoview_slew(void **state)
     free(f);
 }
 
-/* A host packet of V1 with @p order (0: null), carrier INS valid at @p carrier_yaw (0.01 deg), and
- * a valid yaw rate @p yaw_ctrl when non-zero; fed at the fixture's clock. */
-static void send_carrier(sim_fx *f, const xf_command *cmd, uint16_t carrier_yaw, int16_t yaw_ctrl, xf_gcu_packet *r)
-{
-    xf_host_packet p;
-    uint8_t buf[XF_PACKET_MAX_LEN];
-    size_t len = 0;
-    xf_host_packet_init(&p, 1);
-    p.main.status = XF_STATUS_INS_VALID | (yaw_ctrl != 0 ? XF_STATUS_CTRL_VALID : 0u);
-    p.main.carrier_yaw = carrier_yaw;
-    p.main.yaw_ctrl = yaw_ctrl;
-    if (cmd != NULL) {
-        assert_xf(xf_host_set_command(&p, cmd, NULL), XF_OK);
-    }
-    assert_xf(xf_host_pack(&p, buf, sizeof(buf), &len), XF_OK);
-    send_bytes(f, buf, len, r);
-}
-
 /* What V2.0.6 says a GCU does: neutral does not respond in track; zoom_to 5000 of a 30x camera is
  * 15x; zoom in/out/stop act on the cameras of the mask only; a valid non-zero quantity turns
  * gaze-geo into gaze lock; in orthoview after head follow yaw follows the carrier; versions in
@@ -665,13 +578,13 @@ static void test_model_orders(void **state)
     static const struct {
         uint8_t code, order, state;
     } cases[] = {
-        {0, XF_ORDER_PALETTE, XF_STATE_FAILURE},  /* Z-6A: no palette */
+        {0, XF_ORDER_PALETTE, XF_CAM2},           /* Z-6A: no palette; V2.0.6's failure state 0x02 */
         {41, XF_ORDER_PALETTE, XF_STATE_SUCCESS}, /* D-90AI: palette */
         {0, XF_ORDER_FOCUS, XF_STATE_SUCCESS},    /* Z-6A: focus */
         {49, XF_ORDER_FOCUS, XF_STATE_FAILURE},   /* Z-1Pro: no focus */
         {3, XF_ORDER_FOCUS, XF_STATE_SUCCESS},    /* a V2.0.4 model: the list does not know it */
         {58, XF_ORDER_SPOT_TEMP, XF_STATE_SUCCESS},
-        {59, XF_ORDER_SPOT_TEMP, XF_STATE_FAILURE}, /* Z-9B_V4(V): no thermometry */
+        {59, XF_ORDER_SPOT_TEMP, XF_CAM2}, /* Z-9B_V4(V): no thermometry, 0x02 */
     };
     size_t i;
     (void)state;

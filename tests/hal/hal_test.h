@@ -96,7 +96,7 @@ static inline int ht_write_all(int fd, const uint8_t *data, size_t len)
         if (w < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
             return -1;
         }
-        if (ht_since(t0) > 2000u) {
+        if (ht_since(t0) > 5000u) {
             return -1;
         }
         ht_sleep_ms(1);

@@ -91,7 +91,7 @@ static void check_bytes_both_ways(fixture *f)
 
     assert_xf(f->hal.write(f->hal.ctx, all, sizeof(all)), XF_OK);
     memset(got, 0, sizeof(got));
-    n = ht_read_fd_until(f->pty.master, got, sizeof(got), 1000);
+    n = ht_read_fd_until(f->pty.master, got, sizeof(got), 5000);
     assert_int_equal(n, sizeof(all));
     assert_memory_equal(got, all, sizeof(all));
     /* no echo of what the master sent */
@@ -191,7 +191,7 @@ static void test_write_full_buffer(void **state)
     }
     assert_xf(err, XF_ERR_IO);
     assert_true(took >= 90u);
-    assert_true(took < 1000u);
+    assert_true(took < 3000u); /* 100 ms, and whatever a loaded machine adds: not a wait for ever */
     assert_contains(f->s.error.text, f->link);
     assert_contains(f->s.error.text, "buffer full");
     assert_int_equal(f->s.stats.losses, 0); /* a full buffer is not a hang-up */
@@ -231,7 +231,7 @@ static void test_hangup_and_reopen(void **state)
     assert_int_equal(f->s.stats.opens, 1);
 
     ht_pty_close(&f->pty);
-    took = read_until_closed(f, 500);
+    took = read_until_closed(f, 5000);
     assert_true(took >= 0);
     assert_int_equal(f->s.stats.losses, 1);
     assert_contains(f->s.error.text, "hung up");
@@ -258,14 +258,13 @@ static void test_hangup_and_reopen(void **state)
     assert_int_equal(ht_pty_open(&f->pty), 0);
     assert_int_equal(ht_repoint(f->link, f->pty.slave), 0);
     t0 = ht_now();
-    while (f->s.stats.opens < 2 && ht_since(t0) < 2000u) {
+    while (f->s.stats.opens < 2 && ht_since(t0) < 5000u) { /* a back-off or two; more on a loaded machine */
         n = 0;
         err = f->hal.read(f->hal.ctx, buf, sizeof(buf), &n);
         assert_true(err == XF_OK || err == XF_ERR_CLOSED);
         ht_sleep_ms(5);
     }
     assert_int_equal(f->s.stats.opens, 2);
-    assert_true(ht_since(t0) < 2000u);
     print_message("reopened %u ms after the new pty appeared\n", (unsigned)ht_since(t0));
     assert_int_equal(f->s.stats.losses, 1);
     assert_string_equal(xf_serial_backend(&f->s), "termios");
@@ -280,7 +279,7 @@ static void test_hangup_and_reopen(void **state)
     assert_memory_equal(buf, pkt, len);
     len = ht_host_packet(pkt, sizeof(pkt), 99);
     assert_xf(f->hal.write(f->hal.ctx, pkt, len), XF_OK);
-    n = ht_read_fd_until(f->pty.master, buf, len, 1000);
+    n = ht_read_fd_until(f->pty.master, buf, len, 5000);
     assert_int_equal(n, len);
     assert_memory_equal(buf, pkt, len);
 }

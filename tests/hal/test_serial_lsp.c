@@ -244,7 +244,7 @@ static void test_lsp_bytes_both_ways(void **state)
     assert_int_equal(n, sizeof(all));
     assert_memory_equal(got, all, sizeof(all));
     assert_xf(f->hal.write(f->hal.ctx, all, sizeof(all)), XF_OK);
-    n = ht_read_fd_until(f->pty.master, got, sizeof(all), 1000);
+    n = ht_read_fd_until(f->pty.master, got, sizeof(all), 5000);
     assert_int_equal(n, sizeof(all));
     assert_memory_equal(got, all, sizeof(all));
 
@@ -296,7 +296,7 @@ static void test_lsp_hangup_and_reopen(void **state)
 
     ht_pty_close(&f->pty);
     t0 = ht_now();
-    while (ht_since(t0) < 500u) {
+    while (ht_since(t0) < 5000u) { /* until the hang-up shows */
         n = 0;
         err = f->hal.read(f->hal.ctx, buf, sizeof(buf), &n);
         if (err != XF_OK) {
@@ -313,7 +313,7 @@ static void test_lsp_hangup_and_reopen(void **state)
     assert_int_equal(ht_pty_open(&f->pty), 0);
     assert_int_equal(ht_repoint(g_port, f->pty.slave), 0);
     t0 = ht_now();
-    while (f->s.stats.opens < 2 && ht_since(t0) < 2000u) {
+    while (f->s.stats.opens < 2 && ht_since(t0) < 5000u) { /* a back-off or two; more on a loaded machine */
         err = f->hal.read(f->hal.ctx, buf, sizeof(buf), &n);
         assert_true(err == XF_OK || err == XF_ERR_CLOSED);
         ht_sleep_ms(5);
@@ -348,7 +348,7 @@ static void test_lsp_write_full_buffer(void **state)
     }
     assert_xf(err, XF_ERR_IO);
     assert_true(took >= 90u);
-    assert_true(took < 1000u);
+    assert_true(took < 3000u); /* 100 ms, and whatever a loaded machine adds: not a wait for ever */
     assert_contains(f->s.error.text, "buffer full");
     assert_int_equal(f->s.stats.losses, 0);
     assert_string_equal(xf_serial_backend(&f->s), "libserialport");
@@ -384,7 +384,7 @@ static void test_lsp_refused_falls_back_to_termios(void **state)
     assert_null(f->s.port);
     xf_serial_hal(&f->s, &f->hal);
     assert_xf(f->hal.write(f->hal.ctx, &b, 1), XF_OK);
-    assert_int_equal(ht_read_fd_until(f->pty.master, &got, 1, 1000), 1);
+    assert_int_equal(ht_read_fd_until(f->pty.master, &got, 1, 5000), 1);
     assert_int_equal(got, 0x5A);
     assert_int_equal(count_fds(), before + 1);
     xf_serial_close(&f->s);

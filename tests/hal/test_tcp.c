@@ -88,7 +88,7 @@ static void connect_link(fixture *f)
     xf_tcp_hal(&f->t, &f->hal);
     assert_xf(xf_tcp_wait(&f->t, 1000), XF_OK);
     assert_int_equal(f->t.state, XF_TCP_UP);
-    f->cfd = accept_within(f->lfd, 1000);
+    f->cfd = accept_within(f->lfd, 5000);
     assert_true(f->cfd >= 0);
     assert_true(xf_hal_fd(&f->hal) >= 0);
     assert_int_equal(f->t.stats.opens, 1);
@@ -150,7 +150,7 @@ static void test_byte_by_byte(void **state)
     for (i = 0; i < len; i++) {
         xf_err err = XF_OK;
         assert_int_equal(send(f->cfd, pkt + i, 1, MSG_NOSIGNAL), 1);
-        assert_int_equal(ht_hal_read_until(&f->hal, &b, 1, 1000, &err), 1);
+        assert_int_equal(ht_hal_read_until(&f->hal, &b, 1, 5000, &err), 1);
         assert_xf(err, XF_OK);
         ht_sink_feed(&sink, &b, 1);
         assert_int_equal(sink.frames, (i + 1 == len) ? 1u : 0u);
@@ -176,7 +176,7 @@ static void test_five_in_one_send(void **state)
     assert_int_equal(send(f->cfd, all, total, MSG_NOSIGNAL), (ssize_t)total);
     ht_sink_init(&sink, XF_DIR_GCU);
     t0 = ht_now();
-    while (sink.frames < 5 && ht_since(t0) < 1000u) {
+    while (sink.frames < 5 && ht_since(t0) < 5000u) {
         size_t n = 0;
         (void)ht_wait_readable(xf_hal_fd(&f->hal), 10);
         assert_xf(f->hal.read(f->hal.ctx, buf, sizeof(buf), &n), XF_OK);
@@ -280,7 +280,7 @@ static void test_server_restart(void **state)
     assert_true(f->lfd >= 0);
     assert_int_equal(again, f->port);
     t0 = ht_now();
-    while (f->cfd < 0 && ht_since(t0) < 2000u) {
+    while (f->cfd < 0 && ht_since(t0) < 5000u) {
         n = 0;
         err = f->hal.read(f->hal.ctx, buf, sizeof(buf), &n);
         assert_true(err == XF_OK || err == XF_ERR_CLOSED);
@@ -291,8 +291,8 @@ static void test_server_restart(void **state)
     }
     took = ht_since(t0);
     assert_true(f->cfd >= 0);
-    if (took >= 1000u) {
-        fail_msg("reconnected after %u ms, expected < 1000 ms", (unsigned)took);
+    if (took >= 3000u) { /* the back-off is at most retry_max_ms (500); the rest is the machine's load */
+        fail_msg("reconnected after %u ms, expected < 3000 ms", (unsigned)took);
     }
     print_message("reconnected %u ms after the server listened again\n", (unsigned)took);
     /* the link sees its connection up on its next call */
@@ -328,7 +328,7 @@ static void test_connection_refused(void **state)
     if (err != XF_ERR_CLOSED && err != XF_ERR_TIMEOUT) {
         fail_msg("xf_tcp_wait: %d (%s), expected XF_ERR_CLOSED", (int)err, xf_strerror(err));
     }
-    assert_true(ht_since(t0) < 1000u);
+    assert_true(ht_since(t0) < 3000u); /* 200 ms, and whatever a loaded machine adds */
     assert_int_equal(f->t.error.os_errno, ECONNREFUSED);
     assert_contains(f->t.error.text, "refused");
     assert_contains(f->t.error.text, "127.0.0.1");
@@ -415,7 +415,7 @@ static void test_connect_timeout_full_backlog(void **state)
     assert_int_equal(f->t.state, XF_TCP_CONNECTING);
     assert_contains(f->t.error.text, "no answer in 100 ms");
     /* driven by reads, the attempt itself times out after 250 ms */
-    while (strstr(f->t.error.text, "no answer in 250 ms") == NULL && ht_since(t0) < 1500u) {
+    while (strstr(f->t.error.text, "no answer in 250 ms") == NULL && ht_since(t0) < 5000u) {
         uint8_t b;
         size_t n = 0;
         assert_xf(f->hal.read(f->hal.ctx, &b, 1, &n), XF_ERR_CLOSED);
@@ -434,7 +434,7 @@ static void test_connect_timeout_full_backlog(void **state)
         close(fillers[i]);
     }
     assert_xf(xf_tcp_wait(&f->t, 2000), XF_OK);
-    f->cfd = accept_within(f->lfd, 1000);
+    f->cfd = accept_within(f->lfd, 5000);
     assert_true(f->cfd >= 0);
     assert_int_equal(f->t.stats.opens, 1);
 }

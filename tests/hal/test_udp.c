@@ -221,7 +221,7 @@ static void test_foreign_source_ignored(void **state)
     /* foreign, then the GCU: only the GCU's bytes come out */
     send_to(foreign, f->u.local_port, other, olen);
     send_to(f->gcu, f->u.local_port, pkt, len);
-    n = ht_hal_read_until(&f->hal, buf, len, 1000, NULL);
+    n = ht_hal_read_until(&f->hal, buf, len, 5000, NULL);
     assert_int_equal(n, len);
     assert_memory_equal(buf, pkt, len);
     assert_int_equal(f->u.stats.foreign, 2);
@@ -245,7 +245,7 @@ static void test_accept_any(void **state)
     assert_xf(xf_udp_open(&any, &cfg), XF_OK);
     xf_udp_hal(&any, &hal);
     send_to(foreign, any.local_port, other, olen);
-    n = ht_hal_read_until(&hal, buf, olen, 1000, NULL);
+    n = ht_hal_read_until(&hal, buf, olen, 5000, NULL);
     assert_int_equal(n, olen);
     assert_memory_equal(buf, other, olen);
     assert_int_equal(any.stats.foreign, 0);
@@ -295,7 +295,7 @@ static void test_broadcast_takes_gcu_port_from_any_address(void **state)
 
     send_to(foreign, bc.local_port, other, olen);    /* right address, wrong port */
     send_to(gcu_elsewhere, bc.local_port, pkt, len); /* other address, the GCU's port */
-    n = ht_hal_read_until(&hal, buf, len, 1000, NULL);
+    n = ht_hal_read_until(&hal, buf, len, 5000, NULL);
     assert_int_equal(n, len);
     assert_memory_equal(buf, pkt, len);
     assert_int_equal(bc.stats.foreign, 1);
@@ -385,7 +385,7 @@ static void test_ipv6_loopback(void **state)
     to.sin6_port = htons(u.local_port);
     to.sin6_addr = in6addr_loopback;
     assert_int_equal(sendto(g, pkt, len, 0, (const struct sockaddr *)&to, sizeof(to)), (ssize_t)len);
-    n = ht_hal_read_until(&hal, buf, len, 1000, NULL);
+    n = ht_hal_read_until(&hal, buf, len, 5000, NULL);
     assert_int_equal(n, len);
     assert_memory_equal(buf, pkt, len);
     assert_int_equal(u.stats.foreign, 0);
