@@ -141,7 +141,8 @@ static void test_send_v2(void **state)
 }
 
 /* An order the GCU's model lacks (V2.0.6's support list) is not sent without --force; with it,
- * the GCU (a simulated Z-6A, code 0: focus, no palette) answers failed. */
+ * the GCU (a simulated Z-6A, code 0: focus, no palette) answers failed, with state 0x02: palette is
+ * an order only camera 2 takes (V2.0.6). */
 static void test_send_model_support(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
@@ -151,7 +152,7 @@ static void test_send_model_support(void **state)
     assert_failure(&r, 1, "send palette: the GCU's model Z-6A (code 0) does not support it", "--force", NULL);
     tool_result_free(&r);
     r = sim_run_on(s, "send", "palette", "--mode", "1", "--force", NULL);
-    expect(&r, 1, "failed cameras 0x01\n");
+    expect(&r, 1, "failed cameras 0x02\n");
     tool_result_free(&r);
     r = sim_run_on(s, "send", "--force", "focus", NULL);
     expect(&r, 0, "ok\n");
