@@ -101,7 +101,7 @@ static void step_text(const xf_wire_field *f, uint8_t version, char *buf, size_t
 
 static void unit_column(const xf_wire_field *f, char *buf, size_t cap)
 {
-    char v1[32], v2[32];
+    char v1[64], v2[64];
     switch ((xf_wire_kind)f->kind) {
     case XF_WIRE_NUMBER:
         step_text(f, XF_PROTOCOL_V1, v1, sizeof(v1));
@@ -136,7 +136,7 @@ static void frame_table(text *t, xf_wire_group group, int sub)
     put(t, "| bytes | offset constant | name | type | unit | since | meaning |\n|---|---|---|---|---|---|---|\n");
     for (i = 0; i < n; i++) {
         const xf_wire_field *f = &rows[i];
-        char bytes[16], type[16], unit[64], name[48];
+        char bytes[16], type[16], unit[160], name[48];
         if ((f->offset >= XF_OFF_SUB) != sub) {
             continue;
         }
@@ -159,7 +159,7 @@ static void params_table(text *t)
     const xf_wire_field *rows = xf_wire_fields(XF_WIRE_PARAMS, &n);
     put(t, "| member | `xf_field` | type | unit | meaning |\n|---|---|---|---|---|\n");
     for (i = 0; i < n; i++) {
-        char type[16], unit[64];
+        char type[16], unit[160];
         type_text(&rows[i], type, sizeof(type));
         unit_column(&rows[i], unit, sizeof(unit));
         putf(t, "| `%s` | `%s` | %s | %s | %s |\n", rows[i].name, rows[i].constant, type, unit, rows[i].meaning);
