@@ -8,7 +8,6 @@
 #include "xfpy.h"
 
 #include <jansson.h>
-#include <math.h>
 #include <poll.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -377,31 +376,37 @@ int xfpy_client_settled(void *p)
     return xf_client_settled(c) || xf_client_link(c) == XF_LINK_DOWN;
 }
 
-/* Round to 1e-6 so that a float of the library prints as its decimal value. */
-static json_t *real6(double v) { return json_real(floor(v * 1e6 + 0.5) / 1e6); }
-
-static json_t *units_json(const xf_telemetry *t)
+/* The "units" object of the telemetry: a few fields under names with their unit, each value the
+ * field table's engineering value (the unit rule: xf_wire_field_value()). */
+static json_t *units_json(const xf_telemetry *t, const uint8_t *pkt)
 {
+    static const char *const keys[][2] = {{"cam_roll_deg", "cam_roll"},
+                                          {"cam_pitch_deg", "cam_pitch"},
+                                          {"cam_yaw_deg", "cam_yaw"},
+                                          {"rel_x_deg", "rel_angle_x"},
+                                          {"rel_y_deg", "rel_angle_y"},
+                                          {"rel_z_deg", "rel_angle_z"},
+                                          {"rate_x_dps", "rate_x"},
+                                          {"rate_y_dps", "rate_y"},
+                                          {"rate_z_dps", "rate_z"},
+                                          {"zoom_cam1", "zoom_cam1"},
+                                          {"zoom_cam2", "zoom_cam2"},
+                                          {"target_distance_m", "target_distance"},
+                                          {"target_latitude_deg", "target_latitude"},
+                                          {"target_longitude_deg", "target_longitude"},
+                                          {"target_altitude_m", "target_altitude"}};
     json_t *u = json_object();
-    float dist = 0.0f;
-    int valid = xf_distance_m(t->target_distance, &dist);
-    json_object_set_new(u, "cam_roll_deg", real6(t->cam_roll / 100.0));
-    json_object_set_new(u, "cam_pitch_deg", real6(t->cam_pitch / 100.0));
-    json_object_set_new(u, "cam_yaw_deg", real6(t->cam_yaw / 100.0));
-    json_object_set_new(u, "rel_x_deg", real6(t->rel_angle_x / 100.0));
-    json_object_set_new(u, "rel_y_deg", real6(t->rel_angle_y / 100.0));
-    json_object_set_new(u, "rel_z_deg", real6(t->rel_angle_z / 100.0));
-    json_object_set_new(u, "rate_x_dps", real6(xf_gcu_rate_dps(t->rate_x, t->version)));
-    json_object_set_new(u, "rate_y_dps", real6(xf_gcu_rate_dps(t->rate_y, t->version)));
-    json_object_set_new(u, "rate_z_dps", real6(xf_gcu_rate_dps(t->rate_z, t->version)));
-    json_object_set_new(u, "zoom_cam1", real6(t->zoom_cam1 / 10.0));
-    json_object_set_new(u, "zoom_cam2", real6(t->zoom_cam2 / 10.0));
-    json_object_set_new(u, "target_distance_m", valid ? real6(t->target_distance / 10.0) : json_null());
-    json_object_set_new(u, "target_latitude_deg", real6(xf_deg7(t->target_latitude)));
-    json_object_set_new(u, "target_longitude_deg", real6(xf_deg7(t->target_longitude)));
-    json_object_set_new(u, "target_altitude_m", real6(t->target_altitude / 1000.0));
-    json_object_set_new(u, "mode",
-                        json_string(xf_mode_name(t->gimbal_mode) ? xf_mode_name(t->gimbal_mode) : "unknown"));
+    size_t i;
+    for (i = 0; u != NULL && i < sizeof(keys) / sizeof(keys[0]); i++) {
+        const xf_wire_field *f = xf_wire_field_find(XF_WIRE_GCU, keys[i][1]);
+        int64_t raw = xf_wire_field_get(f, pkt);
+        int none = strcmp(keys[i][1], "target_distance") == 0 && raw <= 0; /* no valid measurement */
+        json_object_set_new(u, keys[i][0], none ? json_null() : jsonpkt_value(f, raw, t->version, TEXT_ENGINEERING));
+    }
+    if (u != NULL) {
+        json_object_set_new(u, "mode",
+                            json_string(xf_mode_name(t->gimbal_mode) ? xf_mode_name(t->gimbal_mode) : "unknown"));
+    }
     return u;
 }
 
@@ -428,7 +433,7 @@ int xfpy_client_telemetry(void *p, uint32_t seq, int raw, char *out, size_t cap)
     (void)jsonpkt_times(obj, &r->mono, &r->wall); /* first, as monitor --json has them */
     json_object_update(obj, pkt);
     json_decref(pkt);
-    json_object_set_new(obj, "units", units_json(&r->tele));
+    json_object_set_new(obj, "units", units_json(&r->tele, r->bytes));
     rc = dump_json(obj, out, cap);
     json_decref(obj);
     return rc;

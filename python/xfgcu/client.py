@@ -205,7 +205,7 @@ class Gimbal(Owned):
 
     def send(self, name: str, *, force: bool = False, timeout: Optional[float] = None, **args: Any) -> Result:
         """Run one command the protocol's way and wait for its result (blocking), as `xfgcu send
-        NAME --OPTION VALUE ...` does: ``send("zoom-to", rate=5.5)``. The client's own timeouts
+        NAME --OPTION VALUE ...` does: ``send("zoom-to", factor=5.5)``. The client's own timeouts
         end it (command_timeout_ms; operating_timeout_ms for calibration); ``timeout`` (seconds)
         bounds the wait besides, giving status "timeout". ``force``: send it even if the GCU's
         model lacks the order. Raises CommandError for bad arguments."""

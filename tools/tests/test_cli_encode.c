@@ -63,7 +63,8 @@ static const named_case cases[] = {
     {{"euler"}, 1, 0x14, 0, {0}},
     {{"gaze-lock"}, 1, 0x16, 0, {0}},
     {{"fpv", "--protocol", "2"}, 2, 0x1C, 0, {0}},
-    {{"zoom-to", "--rate", "5.5", "--cameras", "all"}, 1, 0x25, 3, {0xFF, 0xC9, 0xFF}},
+    {{"zoom-to", "--factor", "5.5", "--cameras", "all"}, 1, 0x25, 3, {0xFF, 0xC9, 0xFF}},
+    {{"zoom-to", "--rate", "5.5", "--cameras", "all"}, 1, 0x25, 3, {0xFF, 0xC9, 0xFF}}, /* its old spelling */
     {{"zoom-to", "--fraction", "10000", "--cameras", "2"}, 1, 0x25, 3, {0x02, 0x10, 0x27}},
     {{"zoom-to", "--rate=1"}, 1, 0x25, 3, {0x01, 0xF6, 0xFF}},
     {{"gaze-geo", "--lat", "22.5", "--lon", "113.25", "--alt", "100.5"},
