@@ -218,81 +218,81 @@ XF_API xf_err xf_wire_field_raw(const xf_wire_field *f, double value, uint8_t ve
 /* The fields: X(group, OFFSET, name, width, signed, kind, decimals V0.1, decimals V0.2, since, unit,
  * value names, bits, meaning). */
 #define XF__ROWS_PACKET(X) \
-    X(packet, XF_OFF_LENGTH, length, 2, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "the whole packet's length in bytes, header and CRC included") \
-    X(packet, XF_OFF_VERSION, version, 1, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "protocol version: 1 (V0.1) or 2 (V0.2)") \
-    X(packet, XF_OFF_ORDER, order, 1, 0, ENUM, 0, 0, 1, "", xf_order_name, XF__NO_BITS, "the order (command) sent, or answered by the GCU's feedback")
+    X(packet, XF_OFF_LENGTH, length, 2, 0, NUMBER, 0, 0, 1, "", NULL, none, "the whole packet's length in bytes, header and CRC included") \
+    X(packet, XF_OFF_VERSION, version, 1, 0, NUMBER, 0, 0, 1, "", NULL, none, "protocol version: 1 (V0.1) or 2 (V0.2)") \
+    X(packet, XF_OFF_ORDER, order, 1, 0, ENUM, 0, 0, 1, "", xf_order_name, none, "the order (command) sent, or answered by the GCU's feedback")
 #define XF__ROWS_HOST(X) \
-    X(host, XF_OFF_HOST_ROLL_CTRL, roll_ctrl, 2, 1, CONTEXT, 0, 0, 1, "", NULL, XF__NO_BITS, "roll control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode") \
-    X(host, XF_OFF_HOST_PITCH_CTRL, pitch_ctrl, 2, 1, CONTEXT, 0, 0, 1, "", NULL, XF__NO_BITS, "pitch control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode") \
-    X(host, XF_OFF_HOST_YAW_CTRL, yaw_ctrl, 2, 1, CONTEXT, 0, 0, 1, "", NULL, XF__NO_BITS, "yaw control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode") \
-    X(host, XF_OFF_HOST_STATUS, status, 1, 0, FLAGS, 0, 0, 1, "", NULL, XF__BITS(status), "validity flags of the carrier data and the control quantities") \
-    X(host, XF_OFF_HOST_CARRIER_ROLL, carrier_roll, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "carrier's absolute roll, [-180, 180)") \
-    X(host, XF_OFF_HOST_CARRIER_PITCH, carrier_pitch, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "carrier's absolute pitch, [-90, 90]") \
-    X(host, XF_OFF_HOST_CARRIER_YAW, carrier_yaw, 2, 0, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "carrier's absolute yaw, [0, 360)") \
-    X(host, XF_OFF_HOST_ACCEL_NORTH, accel_north, 2, 1, NUMBER, 2, 2, 1, "m/s^2", NULL, XF__NO_BITS, "carrier's acceleration, north positive, gravity excluded") \
-    X(host, XF_OFF_HOST_ACCEL_EAST, accel_east, 2, 1, NUMBER, 2, 2, 1, "m/s^2", NULL, XF__NO_BITS, "carrier's acceleration, east positive") \
-    X(host, XF_OFF_HOST_ACCEL_UP, accel_up, 2, 1, NUMBER, 2, 2, 1, "m/s^2", NULL, XF__NO_BITS, "carrier's acceleration, up positive") \
-    X(host, XF_OFF_HOST_VEL_NORTH, vel_north, 2, 1, NUMBER, 2, 2, 1, "m/s", NULL, XF__NO_BITS, "carrier's velocity, north positive") \
-    X(host, XF_OFF_HOST_VEL_EAST, vel_east, 2, 1, NUMBER, 2, 2, 1, "m/s", NULL, XF__NO_BITS, "carrier's velocity, east positive") \
-    X(host, XF_OFF_HOST_VEL_UP, vel_up, 2, 1, NUMBER, 2, 2, 1, "m/s", NULL, XF__NO_BITS, "carrier's velocity, up positive") \
-    X(host, XF_OFF_HOST_SUB_REQUEST, sub_request, 1, 0, BYTE, 0, 0, 1, "", NULL, XF__NO_BITS, "header of the sub frame the GCU is asked to send back (0x01)") \
-    X(host, XF_OFF_HOST_RESERVED_MAIN, reserved_main, 6, 0, RESERVED, 0, 0, 1, "", NULL, XF__NO_BITS, "reserved (0)") \
-    X(host, XF_OFF_HOST_SUB_HEADER, sub_header, 1, 0, BYTE, 0, 0, 1, "", NULL, XF__NO_BITS, "sub frame header: 0x01, or 0x00 when the whole frame is empty") \
-    X(host, XF_OFF_HOST_LONGITUDE, longitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, XF__NO_BITS, "carrier's longitude") \
-    X(host, XF_OFF_HOST_LATITUDE, latitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, XF__NO_BITS, "carrier's latitude") \
-    X(host, XF_OFF_HOST_ALTITUDE, altitude, 4, 1, NUMBER, 3, 3, 1, "m", NULL, XF__NO_BITS, "carrier's altitude above sea level") \
-    X(host, XF_OFF_HOST_SATELLITES, satellites, 1, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "satellites in use") \
-    X(host, XF_OFF_HOST_GNSS_MS, gnss_ms, 4, 0, NUMBER, 0, 0, 1, "ms", NULL, XF__NO_BITS, "GNSS time of week, [0, 604800000)") \
-    X(host, XF_OFF_HOST_GNSS_WEEK, gnss_week, 2, 1, NUMBER, 0, 0, 1, "week", NULL, XF__NO_BITS, "GNSS week number (weeks since 1980-01-06)") \
-    X(host, XF_OFF_HOST_RELATIVE_HEIGHT, relative_height, 4, 1, NUMBER, 3, 3, 1, "m", NULL, XF__NO_BITS, "carrier's relative height (0 when not needed)") \
-    X(host, XF_OFF_HOST_RESERVED_SUB, reserved_sub, 8, 0, RESERVED, 0, 0, 1, "", NULL, XF__NO_BITS, "reserved (0)")
+    X(host, XF_OFF_HOST_ROLL_CTRL, roll_ctrl, 2, 1, CONTEXT, 0, 0, 1, "", NULL, none, "roll control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode") \
+    X(host, XF_OFF_HOST_PITCH_CTRL, pitch_ctrl, 2, 1, CONTEXT, 0, 0, 1, "", NULL, none, "pitch control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode") \
+    X(host, XF_OFF_HOST_YAW_CTRL, yaw_ctrl, 2, 1, CONTEXT, 0, 0, 1, "", NULL, none, "yaw control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode") \
+    X(host, XF_OFF_HOST_STATUS, status, 1, 0, FLAGS, 0, 0, 1, "", NULL, status, "validity flags of the carrier data and the control quantities") \
+    X(host, XF_OFF_HOST_CARRIER_ROLL, carrier_roll, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "carrier's absolute roll, [-180, 180)") \
+    X(host, XF_OFF_HOST_CARRIER_PITCH, carrier_pitch, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "carrier's absolute pitch, [-90, 90]") \
+    X(host, XF_OFF_HOST_CARRIER_YAW, carrier_yaw, 2, 0, NUMBER, 2, 2, 1, "deg", NULL, none, "carrier's absolute yaw, [0, 360)") \
+    X(host, XF_OFF_HOST_ACCEL_NORTH, accel_north, 2, 1, NUMBER, 2, 2, 1, "m/s^2", NULL, none, "carrier's acceleration, north positive, gravity excluded") \
+    X(host, XF_OFF_HOST_ACCEL_EAST, accel_east, 2, 1, NUMBER, 2, 2, 1, "m/s^2", NULL, none, "carrier's acceleration, east positive") \
+    X(host, XF_OFF_HOST_ACCEL_UP, accel_up, 2, 1, NUMBER, 2, 2, 1, "m/s^2", NULL, none, "carrier's acceleration, up positive") \
+    X(host, XF_OFF_HOST_VEL_NORTH, vel_north, 2, 1, NUMBER, 2, 2, 1, "m/s", NULL, none, "carrier's velocity, north positive") \
+    X(host, XF_OFF_HOST_VEL_EAST, vel_east, 2, 1, NUMBER, 2, 2, 1, "m/s", NULL, none, "carrier's velocity, east positive") \
+    X(host, XF_OFF_HOST_VEL_UP, vel_up, 2, 1, NUMBER, 2, 2, 1, "m/s", NULL, none, "carrier's velocity, up positive") \
+    X(host, XF_OFF_HOST_SUB_REQUEST, sub_request, 1, 0, BYTE, 0, 0, 1, "", NULL, none, "header of the sub frame the GCU is asked to send back (0x01)") \
+    X(host, XF_OFF_HOST_RESERVED_MAIN, reserved_main, 6, 0, RESERVED, 0, 0, 1, "", NULL, none, "reserved (0)") \
+    X(host, XF_OFF_HOST_SUB_HEADER, sub_header, 1, 0, BYTE, 0, 0, 1, "", NULL, none, "sub frame header: 0x01, or 0x00 when the whole frame is empty") \
+    X(host, XF_OFF_HOST_LONGITUDE, longitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, none, "carrier's longitude") \
+    X(host, XF_OFF_HOST_LATITUDE, latitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, none, "carrier's latitude") \
+    X(host, XF_OFF_HOST_ALTITUDE, altitude, 4, 1, NUMBER, 3, 3, 1, "m", NULL, none, "carrier's altitude above sea level") \
+    X(host, XF_OFF_HOST_SATELLITES, satellites, 1, 0, NUMBER, 0, 0, 1, "", NULL, none, "satellites in use") \
+    X(host, XF_OFF_HOST_GNSS_MS, gnss_ms, 4, 0, NUMBER, 0, 0, 1, "ms", NULL, none, "GNSS time of week, [0, 604800000)") \
+    X(host, XF_OFF_HOST_GNSS_WEEK, gnss_week, 2, 1, NUMBER, 0, 0, 1, "week", NULL, none, "GNSS week number (weeks since 1980-01-06)") \
+    X(host, XF_OFF_HOST_RELATIVE_HEIGHT, relative_height, 4, 1, NUMBER, 3, 3, 1, "m", NULL, none, "carrier's relative height (0 when not needed)") \
+    X(host, XF_OFF_HOST_RESERVED_SUB, reserved_sub, 8, 0, RESERVED, 0, 0, 1, "", NULL, none, "reserved (0)")
 #define XF__ROWS_GCU(X) \
-    X(gcu, XF_OFF_GCU_GIMBAL_MODE, gimbal_mode, 1, 0, ENUM, 0, 0, 1, "", xf_mode_name, XF__NO_BITS, "the gimbal's mode") \
-    X(gcu, XF_OFF_GCU_POD_STATUS, pod_status, 2, 0, FLAGS, 0, 0, 1, "", NULL, XF__BITS(pod), "pod status flags (their byte order: docs/protocol.md 11.7)") \
-    X(gcu, XF_OFF_GCU_TARGET_OFFSET_X, target_offset_x, 2, 1, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "tracked target's offset from the image centre, [-1000, 1000], right positive") \
-    X(gcu, XF_OFF_GCU_TARGET_OFFSET_Y, target_offset_y, 2, 1, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "tracked target's offset from the image centre, [-1000, 1000], down positive") \
-    X(gcu, XF_OFF_GCU_REL_ANGLE_X, rel_angle_x, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "camera's X-axis angle relative to the carrier") \
-    X(gcu, XF_OFF_GCU_REL_ANGLE_Y, rel_angle_y, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "camera's Y-axis angle relative to the carrier") \
-    X(gcu, XF_OFF_GCU_REL_ANGLE_Z, rel_angle_z, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "camera's Z-axis angle relative to the carrier") \
-    X(gcu, XF_OFF_GCU_CAM_ROLL, cam_roll, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "camera's absolute roll") \
-    X(gcu, XF_OFF_GCU_CAM_PITCH, cam_pitch, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "camera's absolute pitch") \
-    X(gcu, XF_OFF_GCU_CAM_YAW, cam_yaw, 2, 0, NUMBER, 2, 2, 1, "deg", NULL, XF__NO_BITS, "camera's absolute yaw, [0, 360)") \
-    X(gcu, XF_OFF_GCU_RATE_X, rate_x, 2, 1, NUMBER, 2, 1, 1, "deg/s", NULL, XF__NO_BITS, "camera's absolute angular velocity about X") \
-    X(gcu, XF_OFF_GCU_RATE_Y, rate_y, 2, 1, NUMBER, 2, 1, 1, "deg/s", NULL, XF__NO_BITS, "camera's absolute angular velocity about Y") \
-    X(gcu, XF_OFF_GCU_RATE_Z, rate_z, 2, 1, NUMBER, 2, 1, 1, "deg/s", NULL, XF__NO_BITS, "camera's absolute angular velocity about Z") \
-    X(gcu, XF_OFF_GCU_RESERVED_MAIN, reserved_main, 7, 0, RESERVED, 0, 0, 1, "", NULL, XF__NO_BITS, "reserved") \
-    X(gcu, XF_OFF_GCU_SUB_HEADER, sub_header, 1, 0, BYTE, 0, 0, 1, "", NULL, XF__NO_BITS, "sub frame header: 0x01, or 0x00 when the host asked for an unknown one") \
-    X(gcu, XF_OFF_GCU_HW_VERSION, hw_version, 1, 0, NUMBER, 1, 1, 1, "", NULL, XF__NO_BITS, "hardware version, in tenths (31: 3.1)") \
-    X(gcu, XF_OFF_GCU_FW_VERSION, fw_version, 1, 0, NUMBER, 1, 1, 1, "", NULL, XF__NO_BITS, "firmware version, in tenths (50: 5.0)") \
-    X(gcu, XF_OFF_GCU_GIMBAL_CODE, gimbal_code, 1, 0, ENUM, 0, 0, 1, "", xf_gimbal_model, XF__NO_BITS, "the gimbal's model code") \
-    X(gcu, XF_OFF_GCU_ERROR_CODE, error_code, 2, 0, FLAGS, 0, 0, 1, "", NULL, XF__BITS(error), "fault flags (V0.2; reserved in V0.1)") \
-    X(gcu, XF_OFF_GCU_TARGET_DISTANCE, target_distance, 4, 1, NUMBER, 1, 1, 1, "m", NULL, XF__NO_BITS, "laser range to the target; 0 or less (-1 m, 0 m): no valid measurement") \
-    X(gcu, XF_OFF_GCU_TARGET_LONGITUDE, target_longitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, XF__NO_BITS, "target's longitude") \
-    X(gcu, XF_OFF_GCU_TARGET_LATITUDE, target_latitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, XF__NO_BITS, "target's latitude") \
-    X(gcu, XF_OFF_GCU_TARGET_ALTITUDE, target_altitude, 4, 1, NUMBER, 3, 3, 1, "m", NULL, XF__NO_BITS, "target's altitude") \
-    X(gcu, XF_OFF_GCU_ZOOM_CAM1, zoom_cam1, 2, 0, NUMBER, 1, 1, 1, "x", NULL, XF__NO_BITS, "camera 1's zoom (the visible-light zoom camera by default)") \
-    X(gcu, XF_OFF_GCU_ZOOM_CAM2, zoom_cam2, 2, 0, NUMBER, 1, 1, 1, "x", NULL, XF__NO_BITS, "camera 2's zoom (the thermal camera by default)") \
-    X(gcu, XF_OFF_GCU_THERMAL_STATUS, thermal_status, 1, 0, FLAGS, 0, 0, 2, "", NULL, XF__BITS(thermal), "thermal camera status flags") \
-    X(gcu, XF_OFF_GCU_CAMERA_STATUS, camera_status, 2, 0, FLAGS, 0, 0, 2, "", NULL, XF__BITS(camera), "camera status: picture-in-picture mode and flags") \
-    X(gcu, XF_OFF_GCU_TIME_ZONE, time_zone, 1, 1, NUMBER, 0, 0, 2, "h", NULL, XF__NO_BITS, "the GCU's time zone, hours from UTC") \
-    X(gcu, XF_OFF_GCU_RESERVED_SUB, reserved_sub, 2, 0, RESERVED, 0, 0, 1, "", NULL, XF__NO_BITS, "reserved")
+    X(gcu, XF_OFF_GCU_GIMBAL_MODE, gimbal_mode, 1, 0, ENUM, 0, 0, 1, "", xf_mode_name, none, "the gimbal's mode") \
+    X(gcu, XF_OFF_GCU_POD_STATUS, pod_status, 2, 0, FLAGS, 0, 0, 1, "", NULL, pod, "pod status flags (their byte order: docs/protocol.md 11.7)") \
+    X(gcu, XF_OFF_GCU_TARGET_OFFSET_X, target_offset_x, 2, 1, NUMBER, 0, 0, 1, "", NULL, none, "tracked target's offset from the image centre, [-1000, 1000], right positive") \
+    X(gcu, XF_OFF_GCU_TARGET_OFFSET_Y, target_offset_y, 2, 1, NUMBER, 0, 0, 1, "", NULL, none, "tracked target's offset from the image centre, [-1000, 1000], down positive") \
+    X(gcu, XF_OFF_GCU_REL_ANGLE_X, rel_angle_x, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "camera's X-axis angle relative to the carrier") \
+    X(gcu, XF_OFF_GCU_REL_ANGLE_Y, rel_angle_y, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "camera's Y-axis angle relative to the carrier") \
+    X(gcu, XF_OFF_GCU_REL_ANGLE_Z, rel_angle_z, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "camera's Z-axis angle relative to the carrier") \
+    X(gcu, XF_OFF_GCU_CAM_ROLL, cam_roll, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "camera's absolute roll") \
+    X(gcu, XF_OFF_GCU_CAM_PITCH, cam_pitch, 2, 1, NUMBER, 2, 2, 1, "deg", NULL, none, "camera's absolute pitch") \
+    X(gcu, XF_OFF_GCU_CAM_YAW, cam_yaw, 2, 0, NUMBER, 2, 2, 1, "deg", NULL, none, "camera's absolute yaw, [0, 360)") \
+    X(gcu, XF_OFF_GCU_RATE_X, rate_x, 2, 1, NUMBER, 2, 1, 1, "deg/s", NULL, none, "camera's absolute angular velocity about X") \
+    X(gcu, XF_OFF_GCU_RATE_Y, rate_y, 2, 1, NUMBER, 2, 1, 1, "deg/s", NULL, none, "camera's absolute angular velocity about Y") \
+    X(gcu, XF_OFF_GCU_RATE_Z, rate_z, 2, 1, NUMBER, 2, 1, 1, "deg/s", NULL, none, "camera's absolute angular velocity about Z") \
+    X(gcu, XF_OFF_GCU_RESERVED_MAIN, reserved_main, 7, 0, RESERVED, 0, 0, 1, "", NULL, none, "reserved") \
+    X(gcu, XF_OFF_GCU_SUB_HEADER, sub_header, 1, 0, BYTE, 0, 0, 1, "", NULL, none, "sub frame header: 0x01, or 0x00 when the host asked for an unknown one") \
+    X(gcu, XF_OFF_GCU_HW_VERSION, hw_version, 1, 0, NUMBER, 1, 1, 1, "", NULL, none, "hardware version, in tenths (31: 3.1)") \
+    X(gcu, XF_OFF_GCU_FW_VERSION, fw_version, 1, 0, NUMBER, 1, 1, 1, "", NULL, none, "firmware version, in tenths (50: 5.0)") \
+    X(gcu, XF_OFF_GCU_GIMBAL_CODE, gimbal_code, 1, 0, ENUM, 0, 0, 1, "", xf_gimbal_model, none, "the gimbal's model code") \
+    X(gcu, XF_OFF_GCU_ERROR_CODE, error_code, 2, 0, FLAGS, 0, 0, 1, "", NULL, error, "fault flags (V0.2; reserved in V0.1)") \
+    X(gcu, XF_OFF_GCU_TARGET_DISTANCE, target_distance, 4, 1, NUMBER, 1, 1, 1, "m", NULL, none, "laser range to the target; 0 or less (-1 m, 0 m): no valid measurement") \
+    X(gcu, XF_OFF_GCU_TARGET_LONGITUDE, target_longitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, none, "target's longitude") \
+    X(gcu, XF_OFF_GCU_TARGET_LATITUDE, target_latitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, none, "target's latitude") \
+    X(gcu, XF_OFF_GCU_TARGET_ALTITUDE, target_altitude, 4, 1, NUMBER, 3, 3, 1, "m", NULL, none, "target's altitude") \
+    X(gcu, XF_OFF_GCU_ZOOM_CAM1, zoom_cam1, 2, 0, NUMBER, 1, 1, 1, "x", NULL, none, "camera 1's zoom (the visible-light zoom camera by default)") \
+    X(gcu, XF_OFF_GCU_ZOOM_CAM2, zoom_cam2, 2, 0, NUMBER, 1, 1, 1, "x", NULL, none, "camera 2's zoom (the thermal camera by default)") \
+    X(gcu, XF_OFF_GCU_THERMAL_STATUS, thermal_status, 1, 0, FLAGS, 0, 0, 2, "", NULL, thermal, "thermal camera status flags") \
+    X(gcu, XF_OFF_GCU_CAMERA_STATUS, camera_status, 2, 0, FLAGS, 0, 0, 2, "", NULL, camera, "camera status: picture-in-picture mode and flags") \
+    X(gcu, XF_OFF_GCU_TIME_ZONE, time_zone, 1, 1, NUMBER, 0, 0, 2, "h", NULL, none, "the GCU's time zone, hours from UTC") \
+    X(gcu, XF_OFF_GCU_RESERVED_SUB, reserved_sub, 2, 0, RESERVED, 0, 0, 1, "", NULL, none, "reserved")
 /* In xf_field order: xf_wire_param() indexes it. */
 #define XF__ROWS_PARAMS(X) \
-    X(param, XF_F_CAMERAS, cameras, 1, 0, BYTE, 0, 0, 1, "", NULL, XF__NO_BITS, "KK: camera mask, bit n = camera n+1") \
-    X(param, XF_F_VALUE, value, 1, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "TT: an action, mode, level or on/off, by order") \
-    X(param, XF_F_HOURS, hours, 1, 1, NUMBER, 0, 0, 2, "h", NULL, XF__NO_BITS, "time zone, hours from UTC, [-12, 14]") \
-    X(param, XF_F_X0, x0, 2, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "box left edge, or the point's x, on the [0, 10000] screen grid") \
-    X(param, XF_F_Y0, y0, 2, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "box top edge, or the point's y, on the [0, 10000] screen grid") \
-    X(param, XF_F_X1, x1, 2, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "box right edge, [x0, 10000]") \
-    X(param, XF_F_Y1, y1, 2, 0, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "box bottom edge, [y0, 10000]") \
-    X(param, XF_F_DX, dx, 2, 1, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "target's offset from the screen centre, [-1024, 1024]; both >= 3071: lost") \
-    X(param, XF_F_DY, dy, 2, 1, NUMBER, 0, 0, 1, "", NULL, XF__NO_BITS, "target's offset from the screen centre, [-1024, 1024]; both >= 3071: lost") \
-    X(param, XF_F_ZOOM, zoom, 2, 1, CONTEXT, 0, 0, 1, "", NULL, XF__NO_BITS, "ZZ: -(factor x 10) when negative; a fraction of the zoom range, 1-10000, when positive") \
-    X(param, XF_F_TEMP_HIGH, temp_high, 2, 1, NUMBER, 1, 1, 2, "degC", NULL, XF__NO_BITS, "high temperature limit") \
-    X(param, XF_F_TEMP_LOW, temp_low, 2, 1, NUMBER, 1, 1, 2, "degC", NULL, XF__NO_BITS, "low temperature limit, not above temp_high when on") \
-    X(param, XF_F_LONGITUDE, longitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, XF__NO_BITS, "longitude to gaze at") \
-    X(param, XF_F_LATITUDE, latitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, XF__NO_BITS, "latitude to gaze at") \
-    X(param, XF_F_ALTITUDE, altitude, 4, 1, NUMBER, 3, 3, 1, "m", NULL, XF__NO_BITS, "altitude to gaze at")
+    X(param, XF_F_CAMERAS, cameras, 1, 0, BYTE, 0, 0, 1, "", NULL, none, "KK: camera mask, bit n = camera n+1") \
+    X(param, XF_F_VALUE, value, 1, 0, NUMBER, 0, 0, 1, "", NULL, none, "TT: an action, mode, level or on/off, by order") \
+    X(param, XF_F_HOURS, hours, 1, 1, NUMBER, 0, 0, 2, "h", NULL, none, "time zone, hours from UTC, [-12, 14]") \
+    X(param, XF_F_X0, x0, 2, 0, NUMBER, 0, 0, 1, "", NULL, none, "box left edge, or the point's x, on the [0, 10000] screen grid") \
+    X(param, XF_F_Y0, y0, 2, 0, NUMBER, 0, 0, 1, "", NULL, none, "box top edge, or the point's y, on the [0, 10000] screen grid") \
+    X(param, XF_F_X1, x1, 2, 0, NUMBER, 0, 0, 1, "", NULL, none, "box right edge, [x0, 10000]") \
+    X(param, XF_F_Y1, y1, 2, 0, NUMBER, 0, 0, 1, "", NULL, none, "box bottom edge, [y0, 10000]") \
+    X(param, XF_F_DX, dx, 2, 1, NUMBER, 0, 0, 1, "", NULL, none, "target's offset from the screen centre, [-1024, 1024]; both >= 3071: lost") \
+    X(param, XF_F_DY, dy, 2, 1, NUMBER, 0, 0, 1, "", NULL, none, "target's offset from the screen centre, [-1024, 1024]; both >= 3071: lost") \
+    X(param, XF_F_ZOOM, zoom, 2, 1, CONTEXT, 0, 0, 1, "", NULL, none, "ZZ: -(factor x 10) when negative; a fraction of the zoom range, 1-10000, when positive") \
+    X(param, XF_F_TEMP_HIGH, temp_high, 2, 1, NUMBER, 1, 1, 2, "degC", NULL, none, "high temperature limit") \
+    X(param, XF_F_TEMP_LOW, temp_low, 2, 1, NUMBER, 1, 1, 2, "degC", NULL, none, "low temperature limit, not above temp_high when on") \
+    X(param, XF_F_LONGITUDE, longitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, none, "longitude to gaze at") \
+    X(param, XF_F_LATITUDE, latitude, 4, 1, NUMBER, 7, 7, 1, "deg", NULL, none, "latitude to gaze at") \
+    X(param, XF_F_ALTITUDE, altitude, 4, 1, NUMBER, 3, 3, 1, "m", NULL, none, "altitude to gaze at")
 /* clang-format on */
 
 #define XF__BIT_TEXT(word, mask, name, meaning)                                                                        \
@@ -311,8 +311,14 @@ static const xf_wire_bit xf__bits_error[] = {XF__BITS_ERROR(XF__BIT_ROW)};
 static const xf_wire_bit xf__bits_thermal[] = {XF__BITS_THERMAL(XF__BIT_ROW)};
 static const xf_wire_bit xf__bits_camera[] = {XF__BITS_CAMERA(XF__BIT_ROW)};
 
-#define XF__BITS(word) xf__bits_##word, (uint8_t)(sizeof(xf__bits_##word) / sizeof(xf__bits_##word[0]))
-#define XF__NO_BITS    NULL, 0
+/* A row's bits by the word's name: its array and count, or none. */
+#define XF__BITS_OF(word)   xf__bits_##word, (uint8_t)(sizeof(xf__bits_##word) / sizeof(xf__bits_##word[0]))
+#define XF__BITS_OF_status  XF__BITS_OF(status)
+#define XF__BITS_OF_pod     XF__BITS_OF(pod)
+#define XF__BITS_OF_error   XF__BITS_OF(error)
+#define XF__BITS_OF_thermal XF__BITS_OF(thermal)
+#define XF__BITS_OF_camera  XF__BITS_OF(camera)
+#define XF__BITS_OF_none    NULL, 0
 #define XF__FIELD_TEXT(group, off, name, width, sign, kind, d1, d2, since, unit, names, bits, meaning)                 \
     static const char xf__wf_##group##_##name[] = #name "\0" unit "\0" meaning "\0" #off;
 #define XF__FIELD_ROW(group, off, name, width, sign, kind, d1, d2, since, unit, names, bits, meaning)                  \
@@ -321,7 +327,7 @@ static const xf_wire_bit xf__bits_camera[] = {XF__BITS_CAMERA(XF__BIT_ROW)};
      xf__wf_##group##_##name + sizeof(#name) + sizeof(unit),                                                           \
      xf__wf_##group##_##name + sizeof(#name) + sizeof(unit) + sizeof(meaning),                                         \
      names,                                                                                                            \
-     bits,                                                                                                             \
+     XF__BITS_OF_##bits,                                                                                               \
      (uint8_t)XF__GROUP_##group,                                                                                       \
      (uint8_t)XF__OFF_##group(off),                                                                                    \
      (width),                                                                                                          \

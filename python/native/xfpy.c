@@ -169,11 +169,11 @@ int xfpy_command_names(char *out, size_t cap)
         out[0] = '\0';
     }
     for (i = 0; cmdargs_at(i, &spec); i++) {
-        used += strlen(spec.name) + 1u;
-        if (used < cap) {
-            strcat(out, spec.name);
-            strcat(out, "\n");
+        size_t n = strlen(spec.name) + 1u; /* the name and its newline */
+        if (used + n < cap) {
+            (void)snprintf(out + used, cap - used, "%s\n", spec.name);
         }
+        used += n;
     }
     return (used < cap) ? 0 : (int)used + 1;
 }

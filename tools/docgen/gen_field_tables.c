@@ -322,7 +322,7 @@ int main(int argc, char **argv)
         size = ftell(in);
         old = (size >= 0) ? malloc((size_t)size + 1u) : NULL;
         rewind(in);
-        if (old == NULL || fread(old, 1, (size_t)size, in) != (size_t)size || (size_t)size != t.n ||
+        if (old == NULL || t.p == NULL || fread(old, 1, (size_t)size, in) != (size_t)size || (size_t)size != t.n ||
             memcmp(old, t.p, t.n) != 0) {
             fprintf(stderr,
                     "gen_field_tables: the field tables of %s are not what include/xfgcu/xf_fields.h gives: "

@@ -158,16 +158,16 @@ static void row(FILE *out, const char *name, const char *raw, const char *value)
 
 void table_member_text(xf_field f, int32_t v, uint8_t version, text_view view, char *buf, size_t cap)
 {
-    const xf_wire_field *row = xf_wire_param(f);
+    const xf_wire_field *member = xf_wire_param(f);
     char value[64];
     if (f == XF_F_CAMERAS) {
-        snprintf(buf, cap, "%s=0x%02X", row->name, (unsigned)v);
+        snprintf(buf, cap, "%s=0x%02X", member->name, (unsigned)v);
     } else if (f == XF_F_ZOOM && view != TEXT_RAW) {
-        snprintf(buf, cap, v < 0 ? "%s=%ld (%.1fx)" : "%s=%ld (%.2f%% of the range)", row->name, (long)v,
+        snprintf(buf, cap, v < 0 ? "%s=%ld (%.1fx)" : "%s=%ld (%.2f%% of the range)", member->name, (long)v,
                  v < 0 ? -(double)v / 10.0 : (double)v / 100.0);
     } else {
-        fieldtext_value(row, v, version, view, value, sizeof(value));
-        snprintf(buf, cap, "%s=%s", row->name, value);
+        fieldtext_value(member, v, version, view, value, sizeof(value));
+        snprintf(buf, cap, "%s=%s", member->name, value);
     }
 }
 
