@@ -587,51 +587,53 @@ static void free_corpus(corpus *c)
     free(c->stream);
 }
 
+/* decode --json [--raw] of every packet of the corpus, as arguments. */
+static tool_result decode_corpus(const corpus *c, int raw)
+{
+    const char *argv[ROUND_TRIP_PACKETS + 3];
+    int n = 0;
+    size_t i;
+    argv[n++] = "decode";
+    argv[n++] = "--json";
+    if (raw) {
+        argv[n++] = "--raw";
+    }
+    for (i = 0; i < ROUND_TRIP_PACKETS; i++) {
+        argv[n++] = c->hex[i];
+    }
+    return run_tool_argv(n, argv, NULL);
+}
+
+/* encode --json [--raw] - of @p jsonl gives every packet of the corpus back. */
+static void expect_encoded(const corpus *c, const char *jsonl, int raw)
+{
+    tool_result encoded =
+        raw ? run_tool(jsonl, "encode", "--json", "--raw", "-", NULL) : run_tool(jsonl, "encode", "--json", "-", NULL);
+    if (encoded.status != 0 || strcmp(encoded.out, c->want) != 0) {
+        print_error("round trip%s differs (status %d): %s", raw ? " (--raw)" : "", encoded.status, encoded.err);
+        fail();
+    }
+    tool_result_free(&encoded);
+}
+
 static void test_round_trip(void **state)
 {
     corpus c;
-    const char *argv[ROUND_TRIP_PACKETS + 2];
-    tool_result decoded, encoded, streamed;
+    tool_result decoded, raw, streamed;
     size_t i;
     (void)state;
     make_corpus(&c);
-    argv[0] = "decode";
-    argv[1] = "--json";
-    for (i = 0; i < ROUND_TRIP_PACKETS; i++) {
-        argv[i + 2] = c.hex[i];
-    }
-    decoded = run_tool_argv(ROUND_TRIP_PACKETS + 2, argv, NULL);
+    decoded = decode_corpus(&c, 0);
     assert_int_equal(decoded.status, 0);
     assert_int_equal(count_lines(decoded.out), ROUND_TRIP_PACKETS);
-
-    /* JSON Lines back to bytes */
-    encoded = run_tool(decoded.out, "encode", "--json", "-", NULL);
-    if (encoded.status != 0 || strcmp(encoded.out, c.want) != 0) {
-        print_error("round trip differs (status %d): %s", encoded.status, encoded.err);
-        fail();
-    }
+    expect_encoded(&c, decoded.out, 0); /* JSON Lines back to bytes */
 
     /* the same with the wire integers: decode --json --raw, encode --json --raw */
-    tool_result_free(&encoded);
-    {
-        const char *raw_argv[ROUND_TRIP_PACKETS + 3];
-        tool_result raw;
-        raw_argv[0] = "decode";
-        raw_argv[1] = "--json";
-        raw_argv[2] = "--raw";
-        for (i = 0; i < ROUND_TRIP_PACKETS; i++) {
-            raw_argv[i + 3] = c.hex[i];
-        }
-        raw = run_tool_argv(ROUND_TRIP_PACKETS + 3, raw_argv, NULL);
-        assert_int_equal(raw.status, 0);
-        assert_string_not_equal(raw.out, decoded.out); /* another view of the fields */
-        encoded = run_tool(raw.out, "encode", "--json", "--raw", "-", NULL);
-        if (encoded.status != 0 || strcmp(encoded.out, c.want) != 0) {
-            print_error("raw round trip differs (status %d): %s", encoded.status, encoded.err);
-            fail();
-        }
-        tool_result_free(&raw);
-    }
+    raw = decode_corpus(&c, 1);
+    assert_int_equal(raw.status, 0);
+    assert_string_not_equal(raw.out, decoded.out); /* another view of the fields */
+    expect_encoded(&c, raw.out, 1);
+    tool_result_free(&raw);
 
     /* the same packets found in a noisy stream, in the same order */
     streamed = run_tool(c.stream, "decode", "--json", NULL);
@@ -658,7 +660,6 @@ static void test_round_trip(void **state)
         tool_result_free(&one);
     }
     tool_result_free(&decoded);
-    tool_result_free(&encoded);
     tool_result_free(&streamed);
     free_corpus(&c);
 }
