@@ -189,6 +189,14 @@ static void test_appendix1_table(void **state)
         }
     }
     tool_result_free(&r);
+    /* --raw: the wire integers and the names of flags, no engineering value */
+    r = run_tool(NULL, "decode", "--raw", APPENDIX1_HEX, NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "-32704"));
+    assert_non_null(strstr(r.out, "ins_valid ctrl_valid"));
+    assert_null(strstr(r.out, " deg"));
+    assert_null(strstr(r.out, "327.04"));
+    tool_result_free(&r);
 }
 
 /* ---- GCU packets, versions, extras --------------------------------------------------- */

@@ -470,6 +470,7 @@ static const line_fault line_faults[] = {
     {TEXT("\n \n{\"order\":}\n"), {"encode", "--json", "-"}, 0, {"stdin line 3", "invalid JSON"}},
     {TEXT("{\"order\":32}\n\0\n"), {"encode", "--json", "-"}, 1, {"stdin line 2", "NUL byte at column 1"}},
     {TEXT("# xfgcu capture 1\n0.000 > A8\0E5\n"), {"replay", "-"}, 0, {"-:2: ", "NUL byte"}},
+    {TEXT("A8 E5\0 48\n"), {"decode"}, 0, {"stdin, line 1 column 6", "byte 0x00 is not a hex digit"}},
     {TEXT("# xfgcu capture 1\n0.000 > A8 E5\n0.001 < 8A 5E 4\n"), {"replay", "-", "--json"}, 0, {"-:3: "}},
 };
 

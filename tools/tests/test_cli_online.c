@@ -339,6 +339,12 @@ static void test_monitor_plain(void **state)
     assert_non_null(strstr(r.out, "mode head_lock"));
     assert_null(strstr(r.out, "\033[")); /* no terminal codes into a pipe */
     tool_result_free(&r);
+    r = sim_run_on(s, "monitor", "--duration", "0.5", "--raw", NULL); /* the wire integers */
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "cam_pitch "));
+    assert_non_null(strstr(r.out, "zoom_cam1 10 "));
+    assert_null(strstr(r.out, " deg"));
+    tool_result_free(&r);
 }
 
 /* ---- point and rate ------------------------------------------------------------------ */
@@ -360,6 +366,23 @@ static void test_point(void **state)
     tool_result_free(&r);
     attitude(s, &pitch, &yaw);
     assert_true(labs(pitch - 1000) <= 50 && labs(yaw - 27000) <= 50);
+    /* --json: the attitude in degrees, or with --raw in the GCU's 0.01 deg */
+    r = sim_run_on(s, "point", "--pitch", "-20", "--yaw", "30", "--json", NULL);
+    assert_int_equal(r.status, 0);
+    {
+        json_t *o = parse_line(strchr(r.out, '\n') + 1);
+        assert_true(json_is_real(json_object_get(o, "pitch")) && fabs(num_key(o, "pitch") + 20.0) <= 0.5);
+        json_decref(o);
+    }
+    tool_result_free(&r);
+    r = sim_run_on(s, "point", "--pitch", "-20", "--yaw", "30", "--json", "--raw", NULL);
+    assert_int_equal(r.status, 0);
+    {
+        json_t *o = parse_line(strchr(r.out, '\n') + 1);
+        assert_true(labs((long)int_key(o, "pitch") + 2000) <= 50 && labs((long)int_key(o, "yaw") - 3000) <= 50);
+        json_decref(o);
+    }
+    tool_result_free(&r);
 }
 
 static void test_point_unreachable(void **state)
