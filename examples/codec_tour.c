@@ -121,10 +121,11 @@ int main(void)
             if (xf_gcu_unpack(frame.data, frame.len, &gcu) == XF_OK &&
                 xf_feedback_decode(gcu.order, gcu.params, gcu.params_len, &fb) == XF_OK) {
                 float zoom = xf_zoom_x(gcu.sub.zoom_cam1);
-                printf("   %s mode, pitch %.2f deg, yaw %.2f deg, zoom %.1fx, gimbal %s; feedback to %s: %s\n",
-                       xf_mode_name(gcu.main.gimbal_mode), (double)xf_cdeg(gcu.main.cam_pitch),
-                       (double)xf_cdeg(gcu.main.cam_yaw), (double)zoom, xf_gimbal_model(gcu.sub.gimbal_code),
-                       xf_order_name(fb.order), fb.result == XF_RESULT_OK ? "ok" : "failed");
+                printf(
+                    "   %s mode, pitch %.2f deg, yaw %.2f deg, zoom %.1fx, gimbal %s (code %u); feedback to %s: %s\n",
+                    xf_mode_name(gcu.main.gimbal_mode), (double)xf_cdeg(gcu.main.cam_pitch),
+                    (double)xf_cdeg(gcu.main.cam_yaw), (double)zoom, xf_gimbal_model(gcu.sub.gimbal_code),
+                    gcu.sub.gimbal_code, xf_order_name(fb.order), fb.result == XF_RESULT_OK ? "ok" : "failed");
             }
             p += c;
             chunk -= c;

@@ -61,8 +61,11 @@ int main(int argc, char **argv)
     {
         const xf_telemetry *t = xf_client_telemetry(&client);
         const char *model = xf_gimbal_model(t->gimbal_code);
-        printf("%s (hw %u, fw %u) on %s: yaw %.2f deg, relative yaw %.2f deg\n", model ? model : "unknown model",
-               t->hw_version, t->fw_version, where, (double)xf_cdeg(t->cam_yaw), (double)xf_cdeg(t->rel_angle_z));
+        /* versions are in tenths (31: 3.1), models shown with their code, as xfgcu shows them */
+        printf("%s (code %u), hardware %u.%u, firmware %u.%u, on %s: yaw %.2f deg, relative yaw %.2f deg\n",
+               model ? model : "unknown model", t->gimbal_code, t->hw_version / 10u, t->hw_version % 10u,
+               t->fw_version / 10u, t->fw_version % 10u, where, (double)xf_cdeg(t->cam_yaw),
+               (double)xf_cdeg(t->rel_angle_z));
     }
     xf_link_close(&link);
     return xf_client_command_status(&client, id, NULL) == XF_CMD_OK ? 0 : 1;

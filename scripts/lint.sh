@@ -10,17 +10,26 @@ scripts/gen_crc_tables.py --check
 scripts/gen_manpage.py docs/cli.md --check docs/xfgcu.1
 echo "generated files: fresh"
 
+echo "--- the program's and the text layer's files are compiled in their own folders only"
+# tools/xfgcu (the program) and tools/text (xfgcu::text): other targets link, never compile them
+if git grep -nE '(xfgcu|text)/[A-Za-z0-9_]+\.c\b' -- '*CMakeLists.txt' ':!tools/xfgcu/CMakeLists.txt' \
+     ':!tools/text/CMakeLists.txt'; then
+  echo "lint.sh: a CMakeLists.txt above compiles a file of tools/xfgcu or tools/text: link xfgcu::text" >&2
+  exit 1
+fi
+echo "folders: clean"
+
 echo "--- cppcheck"
 cppcheck --enable=warning,style,performance,portability --std=c99 --error-exitcode=2 --inline-suppr --quiet \
-  --suppress=variableScope -UXF_CONFIG_HEADER -Iinclude -Itools/xfgcu src include tools/xfgcu tools/wireshark \
-  examples python/native
+  --suppress=variableScope -UXF_CONFIG_HEADER -Iinclude -Itools/xfgcu -Itools/text src include tools/xfgcu \
+  tools/text tools/docgen tools/wireshark examples python/native
 echo "cppcheck: clean"
 
 echo "--- clang-tidy (.clang-tidy)"
 cmake -S . -B build/tidy -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_C_COMPILER=clang \
       -DXFGCU_BUILD_TESTS=OFF -DXFGCU_BUILD_BENCH=OFF -DXFGCU_BUILD_PYTHON=ON >/dev/null
 cmake --build build/tidy --parallel "$(nproc)" >/dev/null # generated headers, if any, exist
-files=(src/*.c tools/xfgcu/*.c tools/wireshark/*.c examples/*.c python/native/*.c)
+files=(src/*.c tools/xfgcu/*.c tools/text/*.c tools/docgen/*.c tools/wireshark/*.c examples/*.c python/native/*.c)
 # One file per run: clang-tidy 14 reports false va_list findings when given several.
 printf '%s\n' "${files[@]}" | xargs -P "$(nproc)" -n 1 clang-tidy -p build/tidy --quiet 2>/dev/null
 echo "clang-tidy: clean (${#files[@]} files)"

@@ -26,6 +26,17 @@ cmake --preset cortex-m4 >/dev/null
 cmake --build --preset cortex-m4 >/dev/null
 elf=build/cortex-m4/examples/mcu/xfgcu_mcu_demo.elf
 arm-none-eabi-size "$elf"
+# The field table (xf_fields.h: rows, their texts and bits, and its functions) is in the codec's
+# object, and not in a firmware that never references it: --gc-sections leaves none of it.
+table='xf_wire_|xf__wire_|xf__wf_|xf__wb_|xf__bits_'
+in_codec=$(arm-none-eabi-nm "$out/xf_codec.o" | grep -cE " ($table)" || true)
+in_elf=$(arm-none-eabi-nm "$elf" | grep -cE " ($table)" || true)
+echo "the field table: $in_codec symbols in the codec's object, $in_elf in the firmware"
+if [ "$in_codec" -eq 0 ] || [ "$in_elf" -ne 0 ]; then
+  echo "mcu_size.sh: the firmware links the field table (or the check finds no table to look for)" >&2
+  arm-none-eabi-nm "$elf" | grep -E " ($table)" >&2 || true
+  exit 1
+fi
 echo "of which the codec and client (input sections kept from xf_codec.c and xf_client.c):"
 python3 - build/cortex-m4/examples/mcu/xfgcu_mcu_demo.map "$elf" <<'PY'
 import re, subprocess, sys

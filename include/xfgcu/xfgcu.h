@@ -15,6 +15,7 @@
  *   xf_command.h  typed parameters of every order; feedback
  *   xf_parser.h   streaming parser that resynchronises after noise
  *   xf_units.h    physical units, GNSS time, camera axes
+ *   xf_fields.h   every field described as data: offsets, scales, units, names
  * @endcode
  *
  * No allocation, no static state, no OS. The functions and tables are
@@ -38,5 +39,6 @@
 #include "xf_command.h"
 #include "xf_parser.h"
 #include "xf_units.h"
+#include "xf_fields.h"
 
 #endif /* XFGCU_H */

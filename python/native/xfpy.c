@@ -1,14 +1,13 @@
 /*
- * xfpy.c - the flat C API of the Python package (xfpy.h): the program's
- * JSON and command parsing, the client and the simulator behind opaque
- * handles.
+ * xfpy.c - the flat C API of the Python package (xfpy.h): the text layer's JSON and named
+ * commands (xfgcu::text, as the xfgcu program uses it), the client and the simulator behind
+ * opaque handles. No process-wide state: messages go into the caller's buffer.
  */
 #define _POSIX_C_SOURCE 200809L /* poll, nanosleep, clock_gettime */
 
 #include "xfpy.h"
 
 #include <jansson.h>
-#include <math.h>
 #include <poll.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -16,7 +15,6 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli.h"
 #include "cmdargs.h"
 #include "encode.h"
 #include "jsonpkt.h"
@@ -26,61 +24,66 @@
 #include "xfgcu/xf_client.h"
 #include "xfgcu/xf_sim.h"
 
-/* ---- messages: the program's cli_report(), into buffers instead of stderr ------------ */
+/* ---- messages: "note: ...\n" lines, then "error: ...\n", into the caller's buffer -------- */
 
-static char error_text[2048];
-static char notes_text[4096];
-
-int cli_report(int code, const char *where, const char *fmt, ...)
+/* The context's notes and failure into @p msgs (capacity @p cap; may be NULL when cap is 0). */
+static void put_messages(const text_err *e, char *msgs, size_t cap)
 {
-    char text[1536];
+    const char *p = e->notes;
+    size_t used = 0;
+    if (msgs == NULL || cap == 0u) {
+        return;
+    }
+    msgs[0] = '\0';
+    while (*p != '\0' && used < cap) {
+        size_t n = strcspn(p, "\n");
+        used += (size_t)snprintf(msgs + used, cap - used, "note: %.*s\n", (int)n, p);
+        p += n + (p[n] == '\n');
+    }
+    if (e->failed && used < cap) {
+        (void)snprintf(msgs + used, cap - used, "error: %s\n", e->message);
+    }
+}
+
+/* A failure of @p code with its message, as the API returns it. */
+static int fail(int code, char *msgs, size_t cap, const char *fmt, ...) TEXT_PRINTF(4, 5);
+
+static int fail(int code, char *msgs, size_t cap, const char *fmt, ...)
+{
+    char text[1024];
+    text_err e;
     va_list ap;
-    int n;
     va_start(ap, fmt);
-    n = vsnprintf(text, sizeof(text), fmt, ap);
+    (void)vsnprintf(text, sizeof(text), fmt, ap);
     va_end(ap);
-    if (n < 0) {
-        snprintf(text, sizeof(text), "%s", fmt);
-    }
-    if (code == XFGCU_EXIT_OK) { /* a note: kept, one per line */
-        size_t used = strlen(notes_text);
-        snprintf(notes_text + used, sizeof(notes_text) - used, "%s\n", text);
-    } else if (where != NULL) {
-        snprintf(error_text, sizeof(error_text), "%s: %s", where, text);
-    } else {
-        snprintf(error_text, sizeof(error_text), "%s", text);
-    }
+    text_err_init(&e);
+    (void)text_fail(&e, NULL, "%s", text);
+    put_messages(&e, msgs, cap);
     return code;
 }
 
-const char *xfpy_error(void) { return error_text; }
-const char *xfpy_notes(void) { return notes_text; }
 const char *xfpy_version(void) { return XF_VERSION_STRING; }
-
-void xfpy_clear(void)
-{
-    error_text[0] = '\0';
-    notes_text[0] = '\0';
-}
 
 /* A JSON value into @p out as compact text: 0, or the size needed (text and NUL). */
 static int dump_json(json_t *obj, char *out, size_t cap)
 {
-    size_t need = json_dumpb(obj, NULL, 0, JSON_COMPACT | JSON_PRESERVE_ORDER);
-    if (need == 0u) {
+    char *text = jsonpkt_dumps(obj); /* the layer's one way of writing numbers: as the program does */
+    size_t need = (text != NULL) ? strlen(text) : 0u;
+    if (text == NULL) {
         return -1; /* jansson could not write it: an error, not a size to retry with */
     }
     if (need + 1u > cap) {
+        free(text);
         return (int)need + 1;
     }
-    (void)json_dumpb(obj, out, cap, JSON_COMPACT | JSON_PRESERVE_ORDER);
-    out[need] = '\0';
+    memcpy(out, text, need + 1u);
+    free(text);
     return 0;
 }
 
 /* ---- codec ----------------------------------------------------------------------------- */
 
-int xfpy_decode(const uint8_t *buf, size_t len, int pod, char *out, size_t cap)
+int xfpy_decode(const uint8_t *buf, size_t len, int pod, int raw, char *out, size_t cap)
 {
     xf_direction dir = XF_DIR_HOST;
     xf_err err = xf_packet_direction(buf, len, &dir);
@@ -92,7 +95,7 @@ int xfpy_decode(const uint8_t *buf, size_t len, int pod, char *out, size_t cap)
     if (err != XF_OK) {
         return (int)err;
     }
-    obj = jsonpkt_from_wire(buf, len, dir, (pod_reading)pod);
+    obj = jsonpkt_from_wire(buf, len, dir, (pod_reading)pod, raw ? TEXT_RAW : TEXT_ENGINEERING);
     if (obj == NULL) {
         return (int)XF_ERR_IO;
     }
@@ -101,34 +104,55 @@ int xfpy_decode(const uint8_t *buf, size_t len, int pod, char *out, size_t cap)
     return rc;
 }
 
-int xfpy_encode(const char *json, int version, uint8_t *out, size_t cap, size_t *len)
+int xfpy_encode(const char *json, int version, int raw, uint8_t *out, size_t cap, size_t *len, char *msgs,
+                size_t msgs_cap)
 {
-    json_error_t error;
+    text_err e;
+    json_t *obj;
     int rc;
-    json_t *obj = json_loads(json, JSON_REJECT_DUPLICATES, &error);
-    if (obj == NULL) {
-        return cli_fail("encode: invalid JSON at column %d: %s", error.column, error.text);
-    }
-    rc = jsonpkt_to_wire(obj, (uint8_t)version, "encode", out, cap, len);
+    text_err_init(&e);
+    obj = jsonpkt_parse(json, strlen(json), "encode", &e);
+    rc = (obj != NULL)
+             ? jsonpkt_to_wire(obj, (uint8_t)version, raw ? TEXT_RAW : TEXT_ENGINEERING, "encode", out, cap, len, &e)
+             : TEXT_BAD;
     json_decref(obj);
-    return rc;
+    put_messages(&e, msgs, msgs_cap);
+    return (rc == TEXT_OK) ? 0 : 2;
 }
 
-/* The command @p argv names, parsed as `encode` parses it; its spec into *spec. */
-static int parse_command(int argc, char **argv, uint8_t version, const cmd_spec **spec, xf_command *cmd)
+/* The command @p name with @p n named arguments, built for @p version as encode builds it. */
+static int build_command(const char *name, int n, const char *const *names, const char *const *values, uint8_t version,
+                         const char *who, cmd_spec *spec, xf_command *cmd, text_err *e)
 {
-    if (argc < 1 || argv[0] == NULL || (*spec = cmdargs_find(argv[0])) == NULL) {
-        return cli_fail("encode: unknown command '%s' (see 'xfgcu encode --help')", argc > 0 ? argv[0] : "");
+    text_arg args[32];
+    int i;
+    if (!cmdargs_find(name, spec)) {
+        return text_fail(e, who, "unknown command '%s'", name != NULL ? name : "");
     }
-    return cmdargs_parse_command(*spec, "encode", argc, argv, &version, cmd);
+    if (n < 0 || n > 32) {
+        return text_fail(e, who, "%s: %d arguments, at most 32", spec->name, n);
+    }
+    for (i = 0; i < n; i++) {
+        args[i].name = names[i];
+        args[i].value = values[i];
+    }
+    return cmdargs_build(spec, args, (size_t)n, version, who, cmd, e);
 }
 
-int xfpy_command(int argc, char **argv, int version, uint8_t *out, size_t cap, size_t *len)
+int xfpy_command(const char *name, int n, const char *const *names, const char *const *values, int version,
+                 uint8_t *out, size_t cap, size_t *len, char *msgs, size_t msgs_cap)
 {
-    const cmd_spec *spec = NULL;
+    cmd_spec spec;
     xf_command cmd;
-    int rc = parse_command(argc, argv, (uint8_t)version, &spec, &cmd);
-    return (rc == XFGCU_EXIT_OK) ? encode_command(spec, &cmd, (uint8_t)version, out, cap, len) : rc;
+    text_err e;
+    int rc;
+    text_err_init(&e);
+    rc = build_command(name, n, names, values, (uint8_t)version, "encode", &spec, &cmd, &e);
+    if (rc == TEXT_OK) {
+        rc = encode_command(&spec, &cmd, (uint8_t)version, out, cap, len, &e);
+    }
+    put_messages(&e, msgs, msgs_cap);
+    return (rc == TEXT_OK) ? 0 : 2;
 }
 
 const char *xfpy_model_name(int code)
@@ -137,19 +161,21 @@ const char *xfpy_model_name(int code)
     return (name != NULL) ? name : "";
 }
 
-const char *xfpy_command_names(void)
+int xfpy_command_names(char *out, size_t cap)
 {
-    static char names[4096];
+    cmd_spec spec;
     size_t i, used = 0;
-    const xf_order_info *info;
-    names[0] = '\0';
-    for (i = 0; (info = xf_order_at(i)) != NULL; i++) {
-        const cmd_spec *spec = cmdargs_find(xf_order_name(info->order));
-        if (spec != NULL && used < sizeof(names)) {
-            used += (size_t)snprintf(names + used, sizeof(names) - used, "%s\n", cmdargs_name(spec));
-        }
+    if (cap > 0u) {
+        out[0] = '\0';
     }
-    return names;
+    for (i = 0; cmdargs_at(i, &spec); i++) {
+        size_t n = strlen(spec.name) + 1u; /* the name and its newline */
+        if (used + n < cap) {
+            (void)snprintf(out + used, cap - used, "%s\n", spec.name);
+        }
+        used += n;
+    }
+    return (used < cap) ? 0 : (int)used + 1;
 }
 
 /* ---- stream parser ------------------------------------------------------------------- */
@@ -308,13 +334,13 @@ int xfpy_client_config(void *p, const char *name, long v)
 
 const char *xfpy_client_config_problem(void *p) { return xf_client_config_problem(&((xfpy_client *)p)->cfg); }
 
-int xfpy_client_open(void *p, const char *spec)
+int xfpy_client_open(void *p, const char *spec, char *msgs, size_t msgs_cap)
 {
     xfpy_client *h = (xfpy_client *)p;
     xf_err err = xf_link_open(&h->link, spec);
     if (err != XF_OK) {
-        (void)cli_fail("%s", h->link.error.text[0] != '\0' ? h->link.error.text : xf_strerror(err));
-        return (int)err;
+        return fail((int)err, msgs, msgs_cap, "%s",
+                    h->link.error.text[0] != '\0' ? h->link.error.text : xf_strerror(err));
     }
     h->opened = 1;
     (void)xf_link_describe(&h->link, h->desc, sizeof(h->desc));
@@ -326,8 +352,7 @@ int xfpy_client_open(void *p, const char *spec)
         err = xf_client_init(&h->client, &h->hal, &h->cfg);
     }
     if (err != XF_OK) {
-        (void)cli_fail("%s: %s", h->desc, xf_strerror(err));
-        return (int)err;
+        return fail((int)err, msgs, msgs_cap, "%s: %s", h->desc, xf_strerror(err));
     }
     return 0;
 }
@@ -351,35 +376,41 @@ int xfpy_client_settled(void *p)
     return xf_client_settled(c) || xf_client_link(c) == XF_LINK_DOWN;
 }
 
-/* Round to 1e-6 so that a float of the library prints as its decimal value. */
-static json_t *real6(double v) { return json_real(floor(v * 1e6 + 0.5) / 1e6); }
-
-static json_t *units_json(const xf_telemetry *t)
+/* The "units" object of the telemetry: a few fields under names with their unit, each value the
+ * field table's engineering value (the unit rule: xf_wire_field_value()). */
+static json_t *units_json(const xf_telemetry *t, const uint8_t *pkt)
 {
+    static const char *const keys[][2] = {{"cam_roll_deg", "cam_roll"},
+                                          {"cam_pitch_deg", "cam_pitch"},
+                                          {"cam_yaw_deg", "cam_yaw"},
+                                          {"rel_x_deg", "rel_angle_x"},
+                                          {"rel_y_deg", "rel_angle_y"},
+                                          {"rel_z_deg", "rel_angle_z"},
+                                          {"rate_x_dps", "rate_x"},
+                                          {"rate_y_dps", "rate_y"},
+                                          {"rate_z_dps", "rate_z"},
+                                          {"zoom_cam1", "zoom_cam1"},
+                                          {"zoom_cam2", "zoom_cam2"},
+                                          {"target_distance_m", "target_distance"},
+                                          {"target_latitude_deg", "target_latitude"},
+                                          {"target_longitude_deg", "target_longitude"},
+                                          {"target_altitude_m", "target_altitude"}};
     json_t *u = json_object();
-    float dist = 0.0f;
-    int valid = xf_distance_m(t->target_distance, &dist);
-    json_object_set_new(u, "cam_roll_deg", real6(t->cam_roll / 100.0));
-    json_object_set_new(u, "cam_pitch_deg", real6(t->cam_pitch / 100.0));
-    json_object_set_new(u, "cam_yaw_deg", real6(t->cam_yaw / 100.0));
-    json_object_set_new(u, "rel_x_deg", real6(t->rel_angle_x / 100.0));
-    json_object_set_new(u, "rel_y_deg", real6(t->rel_angle_y / 100.0));
-    json_object_set_new(u, "rel_z_deg", real6(t->rel_angle_z / 100.0));
-    json_object_set_new(u, "rate_x_dps", real6(xf_gcu_rate_dps(t->rate_x, t->version)));
-    json_object_set_new(u, "rate_y_dps", real6(xf_gcu_rate_dps(t->rate_y, t->version)));
-    json_object_set_new(u, "rate_z_dps", real6(xf_gcu_rate_dps(t->rate_z, t->version)));
-    json_object_set_new(u, "zoom_cam1", real6(t->zoom_cam1 / 10.0));
-    json_object_set_new(u, "zoom_cam2", real6(t->zoom_cam2 / 10.0));
-    json_object_set_new(u, "target_distance_m", valid ? real6(t->target_distance / 10.0) : json_null());
-    json_object_set_new(u, "target_latitude_deg", real6(xf_deg7(t->target_latitude)));
-    json_object_set_new(u, "target_longitude_deg", real6(xf_deg7(t->target_longitude)));
-    json_object_set_new(u, "target_altitude_m", real6(t->target_altitude / 1000.0));
-    json_object_set_new(u, "mode",
-                        json_string(xf_mode_name(t->gimbal_mode) ? xf_mode_name(t->gimbal_mode) : "unknown"));
+    size_t i;
+    for (i = 0; u != NULL && i < sizeof(keys) / sizeof(keys[0]); i++) {
+        const xf_wire_field *f = xf_wire_field_find(XF_WIRE_GCU, keys[i][1]);
+        int64_t raw = xf_wire_field_get(f, pkt);
+        int none = strcmp(keys[i][1], "target_distance") == 0 && raw <= 0; /* no valid measurement */
+        json_object_set_new(u, keys[i][0], none ? json_null() : jsonpkt_value(f, raw, t->version, TEXT_ENGINEERING));
+    }
+    if (u != NULL) {
+        json_object_set_new(u, "mode",
+                            json_string(xf_mode_name(t->gimbal_mode) ? xf_mode_name(t->gimbal_mode) : "unknown"));
+    }
     return u;
 }
 
-int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
+int xfpy_client_telemetry(void *p, uint32_t seq, int raw, char *out, size_t cap)
 {
     xfpy_client *h = (xfpy_client *)p;
     const reply *r;
@@ -392,7 +423,7 @@ int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
         return -1;
     }
     r = &h->ring[(seq - 1u) % RING];
-    pkt = jsonpkt_from_wire(r->bytes, r->len, XF_DIR_GCU, POD_READ_AUTO);
+    pkt = jsonpkt_from_wire(r->bytes, r->len, XF_DIR_GCU, POD_READ_AUTO, raw ? TEXT_RAW : TEXT_ENGINEERING);
     obj = json_object();
     if (pkt == NULL || obj == NULL) {
         json_decref(pkt);
@@ -402,7 +433,7 @@ int xfpy_client_telemetry(void *p, uint32_t seq, char *out, size_t cap)
     (void)jsonpkt_times(obj, &r->mono, &r->wall); /* first, as monitor --json has them */
     json_object_update(obj, pkt);
     json_decref(pkt);
-    json_object_set_new(obj, "units", units_json(&r->tele));
+    json_object_set_new(obj, "units", units_json(&r->tele, r->bytes));
     rc = dump_json(obj, out, cap);
     json_decref(obj);
     return rc;
@@ -434,33 +465,40 @@ int xfpy_client_health(void *p, char *out, size_t cap)
     return rc;
 }
 
-int xfpy_client_submit(void *p, int argc, char **argv, int force, uint32_t *id)
+int xfpy_client_submit(void *p, const char *name, int n, const char *const *names, const char *const *values, int force,
+                       uint32_t *id, char *msgs, size_t msgs_cap)
 {
     xfpy_client *h = (xfpy_client *)p;
     uint8_t version = xf_client_gcu_version(&h->client);
-    const cmd_spec *spec = NULL;
     xf_field bad = XF_F_NONE;
+    cmd_spec spec;
     xf_command cmd;
+    text_err e;
     xf_err err;
-    int rc = parse_command(argc, argv, version, &spec, &cmd);
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
+    int rc = 0;
+    text_err_init(&e);
+    if (build_command(name, n, names, values, version, "send", &spec, &cmd, &e) != TEXT_OK) {
+        rc = 2;
     }
-    cmdargs_for_version(&cmd, version); /* as send does: the GCU's meaning */
-    err = xf_client_submit_opt(&h->client, &cmd, force ? XF_SUBMIT_ANY_MODEL : 0u, id, &bad);
-    if (err == XF_ERR_UNSUPPORTED) {
-        const char *model = xf_gimbal_model(xf_client_telemetry(&h->client)->gimbal_code);
-        return cli_report(XFGCU_EXIT_FAILED, NULL,
-                          "send %s: the GCU's model %s (code %u) does not support it, by V2.0.6's support list; "
-                          "send it with force=True all the same",
-                          cmdargs_name(spec), model != NULL ? model : "?",
-                          (unsigned)xf_client_telemetry(&h->client)->gimbal_code);
+    if (rc == 0) {
+        cmdargs_for_version(&cmd, version); /* as send does: the GCU's meaning */
+        err = xf_client_submit_opt(&h->client, &cmd, force ? XF_SUBMIT_ANY_MODEL : 0u, id, &bad);
+        if (err == XF_ERR_UNSUPPORTED) {
+            char model[64];
+            fieldtext_model(xf_client_telemetry(&h->client)->gimbal_code, model, sizeof(model));
+            (void)text_fail(&e, "send",
+                            "%s: the GCU's model %s does not support it, by V2.0.6's support list; "
+                            "send it with force=True all the same",
+                            spec.name, model);
+            rc = 1;
+        } else if (err != XF_OK) {
+            (void)text_fail(&e, "send", "%s: %s%s%s", spec.name, xf_strerror(err), bad != XF_F_NONE ? ": " : "",
+                            bad != XF_F_NONE ? xf_field_name(bad) : "");
+            rc = 2;
+        }
     }
-    if (err != XF_OK) {
-        return cli_fail("send %s: %s%s%s", cmdargs_name(spec), xf_strerror(err), bad != XF_F_NONE ? ": " : "",
-                        bad != XF_F_NONE ? xf_field_name(bad) : "");
-    }
-    return XFGCU_EXIT_OK;
+    put_messages(&e, msgs, msgs_cap);
+    return rc;
 }
 
 int xfpy_client_result(void *p, uint32_t id, int *failed_cameras, int *packets, long *elapsed_ms, int *state)
@@ -629,15 +667,15 @@ static xf_err open_simlink(xfpy_sim *h, const char *kind, const char *where, int
     return XF_ERR_ARG;
 }
 
-int xfpy_sim_open(void *p, const char *kind, const char *where, int port)
+int xfpy_sim_open(void *p, const char *kind, const char *where, int port, char *msgs, size_t msgs_cap)
 {
     xfpy_sim *h = (xfpy_sim *)p;
     xf_hal hal;
     int i;
     xf_err err = open_simlink(h, kind, where, port);
     if (err != XF_OK) {
-        (void)cli_fail("sim %s: %s", kind, h->link.error.text[0] != '\0' ? h->link.error.text : xf_strerror(err));
-        return (int)err;
+        return fail((int)err, msgs, msgs_cap, "sim %s: %s", kind,
+                    h->link.error.text[0] != '\0' ? h->link.error.text : xf_strerror(err));
     }
     h->opened = 1;
     err = xf_sim_init(&h->sim, &h->cfg);
@@ -652,9 +690,9 @@ int xfpy_sim_open(void *p, const char *kind, const char *where, int port)
     }
     (void)xf_link_spec_for_simlink(&h->link, h->spec, sizeof(h->spec));
     if (err != XF_OK) {
-        (void)cli_fail("sim: %s", xf_strerror(err));
+        return fail((int)err, msgs, msgs_cap, "sim: %s", xf_strerror(err));
     }
-    return (int)err;
+    return 0;
 }
 
 const char *xfpy_sim_spec(void *p) { return ((xfpy_sim *)p)->spec; }

@@ -2,18 +2,19 @@
  * xfpy.h - the flat C API of libxfgcu_py, the native library of the Python
  * package (python/xfgcu/_native.py loads it with ctypes).
  *
- * Only plain ints, doubles, byte buffers and JSON text cross it: no struct
+ * Only plain ints, doubles, byte buffers, strings and JSON text cross it: no struct
  * of the library does, so the Python side never depends on a layout. The
- * JSON is the xfgcu program's own (tools/xfgcu/jsonpkt.c), and named
- * commands are parsed by the program's own code (tools/xfgcu/cmdargs.c),
- * so the package and the program cannot disagree.
+ * JSON and the named commands are the text layer's (xfgcu::text, tools/text), the one the xfgcu
+ * program uses, so the package and the program cannot disagree. A command's arguments are named
+ * pairs (names[i], values[i]; a NULL value for a switch), as the text layer takes them.
  *
- * Threads: nothing here locks. The functions that can fail with a message
- * (xfpy_encode, xfpy_command, xfpy_client_submit) leave it in one
- * process-wide buffer (xfpy_error()), and command parsing uses getopt's
- * globals: the caller serialises them with one lock. A client or a
- * simulator handle is used by one thread at a time (the caller's lock);
- * xfpy_wait() touches no handle and needs no lock.
+ * Messages: a function that can fail writes its messages into the caller's buffer @p msgs
+ * (capacity @p msgs_cap), one per line: "note: ..." for each note (a warning), then
+ * "error: ..." for the failure, worded for any caller (no command-line hint).
+ *
+ * Threads: there is no process-wide state, so the codec functions need no lock. A client or a
+ * simulator handle is used by one thread at a time (the caller's lock); xfpy_wait() touches no
+ * handle and needs no lock.
  */
 #ifndef XFGCU_XFPY_H
 #define XFGCU_XFPY_H
@@ -21,14 +22,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* ---- messages ------------------------------------------------------------------- */
-
-/** The last failure's one line (as the program prints it, without "xfgcu: "); "" when none. */
-const char *xfpy_error(void);
-/** Notes (warnings) since xfpy_clear(), one per line; "" when none. */
-const char *xfpy_notes(void);
-/** Forget the last failure and the notes. */
-void xfpy_clear(void);
 /** The library's version string. */
 const char *xfpy_version(void);
 
@@ -36,19 +29,25 @@ const char *xfpy_version(void);
 
 /**
  * One whole packet as `xfgcu decode --json` prints it (compact JSON, keys in order), with
- * pod_status read as @p pod says (0 auto, 1 le, 2 be).
+ * pod_status read as @p pod says (0 auto, 1 le, 2 be), the fields in engineering units or, with
+ * @p raw, as wire integers (decode --raw).
  * @return 0; the codec's xf_err (< 0: XF_ERR_HEADER, _LENGTH, _CRC, _TRUNCATED); or the size
  *   needed (> 0) when @p cap is too small
  */
-int xfpy_decode(const uint8_t *buf, size_t len, int pod, char *out, size_t cap);
-/** The packet of a `xfgcu encode --json` object. @return an exit code (message: xfpy_error()). */
-int xfpy_encode(const char *json, int version, uint8_t *out, size_t cap, size_t *len);
-/** The packet of `xfgcu encode --protocol VERSION ARGV...` (argv[0] the command's name). @return an exit code. */
-int xfpy_command(int argc, char **argv, int version, uint8_t *out, size_t cap, size_t *len);
+int xfpy_decode(const uint8_t *buf, size_t len, int pod, int raw, char *out, size_t cap);
+/** The packet of a `xfgcu encode --json` object (wire integers with @p raw). @return 0, or 2 (messages). */
+int xfpy_encode(const char *json, int version, int raw, uint8_t *out, size_t cap, size_t *len, char *msgs,
+                size_t msgs_cap);
+/**
+ * The packet of `xfgcu encode --protocol VERSION NAME --NAME1 VALUE1 ...`: the command @p name with
+ * @p n named arguments. @return 0, or 2 (messages).
+ */
+int xfpy_command(const char *name, int n, const char *const *names, const char *const *values, int version,
+                 uint8_t *out, size_t cap, size_t *len, char *msgs, size_t msgs_cap);
 /** The name of gimbal model @p code ("" when unknown). */
 const char *xfpy_model_name(int code);
-/** The command names, one per line. */
-const char *xfpy_command_names(void);
+/** The command names, one per line, into @p out. @return 0, or the size needed. */
+int xfpy_command_names(char *out, size_t cap);
 
 /* ---- stream parser ------------------------------------------------------------- */
 
@@ -73,8 +72,8 @@ void *xfpy_client_new(void);
 int xfpy_client_config(void *h, const char *name, long value);
 /** Why the configuration set so far cannot work (xf_client_config_problem()), or NULL. */
 const char *xfpy_client_config_problem(void *h);
-/** Open the link @p spec and start the client. @return 0, or an xf_err (message: xfpy_error()). */
-int xfpy_client_open(void *h, const char *spec);
+/** Open the link @p spec and start the client. @return 0, or an xf_err (messages). */
+int xfpy_client_open(void *h, const char *spec, char *msgs, size_t msgs_cap);
 /** Step the client; *fd receives the descriptor to wait on. @return ms until the next deadline. */
 int xfpy_client_step(void *h, int *fd);
 /** Replies (with new telemetry) received so far. */
@@ -83,17 +82,19 @@ uint32_t xfpy_client_replies(void *h);
 int xfpy_client_settled(void *h);
 /**
  * Telemetry JSON of reply number @p seq (1-based; 0: the latest) while among the last ones
- * kept: the keys of `xfgcu monitor --json` plus "units". @return 0, -1 (gone or none), or the
- * size needed.
+ * kept: the keys of `xfgcu monitor --json` (wire integers with @p raw, as monitor --raw) plus
+ * "units". @return 0, -1 (gone or none), or the size needed.
  */
-int xfpy_client_telemetry(void *h, uint32_t seq, char *out, size_t cap);
+int xfpy_client_telemetry(void *h, uint32_t seq, int raw, char *out, size_t cap);
 /** Health JSON. @return 0 or the size needed. */
 int xfpy_client_health(void *h, char *out, size_t cap);
 /**
- * Submit a named command (argv as for xfpy_command). @p force: even if the model lacks it.
- * @return an exit code (1: the model lacks it; 2: bad arguments); *id the command's id.
+ * Submit a named command (@p name and its named arguments, as for xfpy_command), built for the
+ * version the GCU speaks. @p force: even if the model lacks it.
+ * @return 0, 1 (the model lacks it) or 2 (bad arguments), with the messages; *id the command's id.
  */
-int xfpy_client_submit(void *h, int argc, char **argv, int force, uint32_t *id);
+int xfpy_client_submit(void *h, const char *name, int n, const char *const *names, const char *const *values, int force,
+                       uint32_t *id, char *msgs, size_t msgs_cap);
 /** A command's status (xf_cmd_status) and its result's figures. */
 int xfpy_client_result(void *h, uint32_t id, int *failed_cameras, int *packets, long *elapsed_ms, int *state);
 /** Cancel every queued command. */
@@ -119,8 +120,9 @@ int xfpy_sim_config(void *h, const char *name, long value);
 int xfpy_sim_fault(void *h, const char *name, long value);
 /** Executions of @p order answer @p state. */
 void xfpy_sim_fail(void *h, int order, int state);
-/** Open the simulator's end: @p kind "tcp", "udp" or "pty"; @p where the address or the pty's link. */
-int xfpy_sim_open(void *h, const char *kind, const char *where, int port);
+/** Open the simulator's end: @p kind "tcp", "udp" or "pty"; @p where the address or the pty's link.
+ *  @return 0, or an xf_err (messages). */
+int xfpy_sim_open(void *h, const char *kind, const char *where, int port, char *msgs, size_t msgs_cap);
 /** The spec a client opens to reach it. */
 const char *xfpy_sim_spec(void *h);
 int xfpy_sim_step(void *h, int *fd);

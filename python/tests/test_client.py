@@ -124,6 +124,38 @@ def test_telemetry_callback(udp_sim: xfgcu.Simulator) -> None:
     assert all(t["direction"] == "gcu" and "units" in t for t in seen)
 
 
+@pytest.mark.parametrize("protocol", [1, 2])
+def test_one_value_everywhere(program: str, protocol: int) -> None:
+    """A GCU packet reads the same, name, unit and value, in `monitor --json`, `decode --json` of its
+    bytes, Python's decode() and Python's telemetry(), in both protocol versions; and as wire
+    integers with --raw and raw=True (issue 28)."""
+    with xfgcu.Simulator("udp:127.0.0.1:0", protocol=protocol) as sim:
+        port = sim.spec.split(":")[2].split(",")[0]
+        link = ["--link", f"udp:127.0.0.1:{port},local=0", "--protocol", str(protocol)]
+        r = run(program, *link, "point", "--pitch", "-30", "--yaw", "45")
+        assert r.returncode == 0, r.stderr
+        r = run(program, *link, "monitor", "--json", "--count", "1")
+        assert r.returncode == 0, r.stderr
+        monitor = json.loads(r.stdout.splitlines()[0])
+        with xfgcu.connect(sim.spec, protocol=protocol) as g:
+            t = g.telemetry()
+    assert t is not None
+    del monitor["time_mono"], monitor["time_utc"]
+    packet = xfgcu.encode(monitor)  # the bytes monitor printed
+    decoded = json.loads(run(program, "decode", "--json", packet.hex()).stdout)
+    assert decoded == monitor == xfgcu.decode(packet)
+    assert monitor["version"] == protocol and monitor["cam_pitch"] == -30.0 and monitor["cam_yaw"] == 45.0
+    assert monitor["hw_version"] == 3.1 and monitor["zoom_cam1"] == 1.0
+    raw = json.loads(run(program, "--raw", "decode", "--json", packet.hex()).stdout)
+    assert raw == xfgcu.decode(packet, raw=True)
+    assert raw["cam_pitch"] == -3000 and raw["hw_version"] == 31 and raw["zoom_cam1"] == 10
+    assert xfgcu.encode(raw, raw=True) == packet
+    # telemetry() of another client: the same keys and kinds of values
+    assert [k for k in t if k != "units"][2:] == list(monitor)
+    assert t["cam_pitch"] == monitor["cam_pitch"] and t["hw_version"] == 3.1
+    assert t["units"]["cam_pitch_deg"] == t["cam_pitch"]
+
+
 def test_protocol_2(program: str) -> None:
     with xfgcu.Simulator("tcp:127.0.0.1:0", protocol=2) as s, xfgcu.connect(s.spec, protocol=2) as g:
         assert g.send("osd", hide=True).status == "ok"

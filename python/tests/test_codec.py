@@ -189,11 +189,12 @@ def host_objects(draw: Any) -> Dict[str, Any]:
 
 @given(st.one_of(gcu_objects(), host_objects()))
 def test_roundtrip_object_packet_object(obj: Dict[str, Any]) -> None:
-    packet = xfgcu.encode(obj)
-    decoded = xfgcu.decode(packet)
+    packet = xfgcu.encode(obj, raw=True)  # the objects hold wire integers
+    decoded = xfgcu.decode(packet, raw=True)
     for key, value in obj.items():
         assert decoded[key] == value
-    assert xfgcu.encode(decoded) == packet
+    assert xfgcu.encode(decoded, raw=True) == packet
+    assert xfgcu.encode(xfgcu.decode(packet)) == packet  # and the engineering units
 
 
 @given(st.binary(min_size=72, max_size=90))
@@ -211,7 +212,7 @@ def test_decode_never_crashes(data: bytes) -> None:
     st.lists(st.integers(1, 200), min_size=1, max_size=30),
 )
 def test_parser_any_chunking(objs: List[Dict[str, Any]], noise: List[bytes], cuts: List[int]) -> None:
-    packets = [xfgcu.encode(o) for o in objs]
+    packets = [xfgcu.encode(o, raw=True) for o in objs]
     # noise without header bytes, so that it cannot start a false packet
     clean = [bytes(b for b in n if b not in (0xA8, 0x8A)) for n in noise]
     stream = b"".join(c + p for c, p in zip(clean, packets))

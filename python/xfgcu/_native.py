@@ -9,13 +9,13 @@ from __future__ import annotations
 import ctypes
 import ctypes.util
 import os
-import threading
 import warnings
-from typing import List, Sequence, TypeVar
+from typing import Any, Dict, List, Tuple, TypeVar
 
-__all__ = ["lib", "codec_lock", "take_error", "argv", "PACKET_MAX"]
+__all__ = ["lib", "messages", "report", "named_args", "PACKET_MAX", "MESSAGES_MAX"]
 
 PACKET_MAX = 255  # XF_PACKET_MAX_LEN: a buffer that holds any packet
+MESSAGES_MAX = 4096  # the buffer a call writes its notes and error into
 
 
 def _load() -> ctypes.CDLL:
@@ -52,15 +52,15 @@ _u8p = _c.POINTER(_c.c_uint8)
 _charpp = _c.POINTER(_c.c_char_p)
 
 _PROTOTYPES = {
-    "xfpy_error": (_c.c_char_p, []),
-    "xfpy_notes": (_c.c_char_p, []),
-    "xfpy_clear": (None, []),
     "xfpy_version": (_c.c_char_p, []),
-    "xfpy_decode": (_c.c_int, [_c.c_char_p, _sz, _c.c_int, _c.c_char_p, _sz]),
-    "xfpy_encode": (_c.c_int, [_c.c_char_p, _c.c_int, _c.c_char_p, _sz, _c.POINTER(_sz)]),
-    "xfpy_command": (_c.c_int, [_c.c_int, _charpp, _c.c_int, _c.c_char_p, _sz, _c.POINTER(_sz)]),
+    "xfpy_decode": (_c.c_int, [_c.c_char_p, _sz, _c.c_int, _c.c_int, _c.c_char_p, _sz]),
+    "xfpy_encode": (_c.c_int, [_c.c_char_p, _c.c_int, _c.c_int, _c.c_char_p, _sz, _c.POINTER(_sz), _c.c_char_p, _sz]),
+    "xfpy_command": (
+        _c.c_int,
+        [_c.c_char_p, _c.c_int, _charpp, _charpp, _c.c_int, _c.c_char_p, _sz, _c.POINTER(_sz), _c.c_char_p, _sz],
+    ),
     "xfpy_model_name": (_c.c_char_p, [_c.c_int]),
-    "xfpy_command_names": (_c.c_char_p, []),
+    "xfpy_command_names": (_c.c_int, [_c.c_char_p, _sz]),
     "xfpy_parser_new": (_vp, []),
     "xfpy_parser_free": (None, [_vp]),
     "xfpy_parser_feed": (_c.c_long, [_vp, _c.c_char_p, _sz, _c.c_char_p, _sz]),
@@ -68,13 +68,16 @@ _PROTOTYPES = {
     "xfpy_client_new": (_vp, []),
     "xfpy_client_config": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
     "xfpy_client_config_problem": (_c.c_char_p, [_vp]),
-    "xfpy_client_open": (_c.c_int, [_vp, _c.c_char_p]),
+    "xfpy_client_open": (_c.c_int, [_vp, _c.c_char_p, _c.c_char_p, _sz]),
     "xfpy_client_step": (_c.c_int, [_vp, _c.POINTER(_c.c_int)]),
     "xfpy_client_replies": (_c.c_uint32, [_vp]),
     "xfpy_client_settled": (_c.c_int, [_vp]),
-    "xfpy_client_telemetry": (_c.c_int, [_vp, _c.c_uint32, _c.c_char_p, _sz]),
+    "xfpy_client_telemetry": (_c.c_int, [_vp, _c.c_uint32, _c.c_int, _c.c_char_p, _sz]),
     "xfpy_client_health": (_c.c_int, [_vp, _c.c_char_p, _sz]),
-    "xfpy_client_submit": (_c.c_int, [_vp, _c.c_int, _charpp, _c.c_int, _c.POINTER(_c.c_uint32)]),
+    "xfpy_client_submit": (
+        _c.c_int,
+        [_vp, _c.c_char_p, _c.c_int, _charpp, _charpp, _c.c_int, _c.POINTER(_c.c_uint32), _c.c_char_p, _sz],
+    ),
     "xfpy_client_result": (
         _c.c_int,
         [_vp, _c.c_uint32, _c.POINTER(_c.c_int), _c.POINTER(_c.c_int), _c.POINTER(_c.c_long), _c.POINTER(_c.c_int)],
@@ -94,7 +97,7 @@ _PROTOTYPES = {
     "xfpy_sim_config": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
     "xfpy_sim_fault": (_c.c_int, [_vp, _c.c_char_p, _c.c_long]),
     "xfpy_sim_fail": (None, [_vp, _c.c_int, _c.c_int]),
-    "xfpy_sim_open": (_c.c_int, [_vp, _c.c_char_p, _c.c_char_p, _c.c_int]),
+    "xfpy_sim_open": (_c.c_int, [_vp, _c.c_char_p, _c.c_char_p, _c.c_int, _c.c_char_p, _sz]),
     "xfpy_sim_spec": (_c.c_char_p, [_vp]),
     "xfpy_sim_step": (_c.c_int, [_vp, _c.POINTER(_c.c_int)]),
     "xfpy_sim_stats": (_c.c_int, [_vp, _c.c_char_p, _sz]),
@@ -107,17 +110,20 @@ for _name, (_res, _args) in _PROTOTYPES.items():
     _f.restype = _res
     _f.argtypes = _args
 
-#: Serialises what uses the library's process-wide state: the message buffers and the command
-#: parser (getopt's globals). Taken for every codec call and every command submitted.
-codec_lock = threading.RLock()
+def messages() -> "ctypes.Array[ctypes.c_char]":
+    """A buffer for the messages of one call (the library keeps no messages of its own)."""
+    return ctypes.create_string_buffer(MESSAGES_MAX)
 
 
-def take_error() -> str:
-    """The last failure's message, after issuing the notes as warnings (call under codec_lock)."""
-    notes = lib.xfpy_notes().decode("utf-8", "replace")
-    for note in notes.splitlines():
-        warnings.warn(note, stacklevel=3)
-    return lib.xfpy_error().decode("utf-8", "replace")
+def report(buf: "ctypes.Array[ctypes.c_char]") -> str:
+    """The failure of a call's messages ("" when none), after issuing its notes as warnings."""
+    error = ""
+    for line in buf.value.decode("utf-8", "replace").splitlines():
+        if line.startswith("note: "):
+            warnings.warn(line[len("note: ") :], stacklevel=3)
+        elif line.startswith("error: "):
+            error = line[len("error: ") :]
+    return error
 
 
 def _option_value(value: object) -> str:
@@ -128,26 +134,25 @@ def _option_value(value: object) -> str:
     return str(value)
 
 
-def argv(name: str, args: dict) -> List[bytes]:
-    """A command's argument vector as the command line gives it: option ``rate=5.5`` is
-    ``--rate 5.5``, ``show=True`` the switch ``--show`` (False and None: left out), a list or a
-    tuple ``box=(0, 0, 10, 10)`` is ``--box 0,0,10,10``. ``cameras`` takes the program's syntax
-    as a string ("1,2", "0x03", "all"), a list of camera numbers, or an int, which is a mask
+def named_args(args: Dict[str, Any]) -> Tuple[int, "ctypes.Array[ctypes.c_char_p]", "ctypes.Array[ctypes.c_char_p]"]:
+    """A command's named arguments as the library takes them: option ``factor=5.5`` is the pair
+    ("factor", "5.5"), ``show=True`` the switch ("show", NULL) (False and None: left out), a list
+    or a tuple ``box=(0, 0, 10, 10)`` is "0,0,10,10". ``cameras`` takes the program's syntax as a
+    string ("1,2", "0x03", "all"), a list of camera numbers, or an int, which is a mask
     (``cameras=3`` is cameras 1 and 2, as "0x03")."""
-    out = [name.encode()]
+    names: List[bytes] = []
+    values: List[Any] = []
     for key, value in args.items():
         if value is None or value is False:
             continue
-        out.append(("--" + key.replace("_", "-")).encode())
+        names.append(key.replace("_", "-").encode())
         if key == "cameras" and isinstance(value, int) and not isinstance(value, bool):
-            out.append(f"0x{value:02X}".encode())
-        elif value is not True:
-            out.append(_option_value(value).encode())
-    return out
-
-
-def c_argv(items: Sequence[bytes]) -> "ctypes.Array[ctypes.c_char_p]":
-    return (ctypes.c_char_p * (len(items) + 1))(*items, None)
+            values.append(f"0x{value:02X}".encode())
+        elif value is True:
+            values.append(None)
+        else:
+            values.append(_option_value(value).encode())
+    return len(names), (ctypes.c_char_p * max(1, len(names)))(*names), (ctypes.c_char_p * max(1, len(values)))(*values)
 
 
 _T = TypeVar("_T", bound="Owned")

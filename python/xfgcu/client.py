@@ -9,7 +9,7 @@ import time
 from dataclasses import dataclass
 from typing import Any, Callable, Dict, List, Optional
 
-from ._native import Owned, argv, c_argv, codec_lock, lib, take_error
+from ._native import Owned, lib, messages, named_args, report
 from .errors import CommandError, LinkError, UnsupportedCommandError
 
 __all__ = ["connect", "Gimbal", "Result", "CONFIG_KEYS"]
@@ -84,10 +84,9 @@ class Gimbal(Owned):
         try:
             self._configure(config)
             self._settle_s = (2 * config.get("command_timeout_ms", 1000) + config.get("reorder_ms", 0)) / 1000.0
-            with codec_lock:
-                lib.xfpy_clear()
-                rc = lib.xfpy_client_open(self._handle, spec.encode())
-                message = take_error()
+            msgs = messages()
+            rc = lib.xfpy_client_open(self._handle, spec.encode(), msgs, len(msgs))
+            message = report(msgs)
             if rc != 0:
                 raise LinkError(message)
         except BaseException:
@@ -148,7 +147,7 @@ class Gimbal(Owned):
         with self._lock:
             if self._handle is None:
                 return None
-            return _json_call(lib.xfpy_client_telemetry, self._handle, seq)
+            return _json_call(lib.xfpy_client_telemetry, self._handle, seq, 0)
 
     def _wait_for(self, predicate: Callable[[], bool], timeout: Optional[float]) -> bool:
         deadline = None if timeout is None else time.monotonic() + timeout
@@ -173,13 +172,15 @@ class Gimbal(Owned):
 
     def submit(self, name: str, *, force: bool = False, **args: Any) -> int:
         """Queue a command (the names and options of `xfgcu send`) and return its id at once."""
-        items = argv(name, args)
+        count, names, values = named_args(args)
         ident = ctypes.c_uint32(0)
-        with codec_lock, self._lock:
+        msgs = messages()
+        with self._lock:
             self._check_open()
-            lib.xfpy_clear()
-            rc = lib.xfpy_client_submit(self._handle, len(items), c_argv(items), int(force), ctypes.byref(ident))
-            message = take_error()
+            rc = lib.xfpy_client_submit(
+                self._handle, name.encode(), count, names, values, int(force), ctypes.byref(ident), msgs, len(msgs)
+            )
+        message = report(msgs)
         if rc == 1:
             raise UnsupportedCommandError(message)
         if rc != 0:
@@ -204,7 +205,7 @@ class Gimbal(Owned):
 
     def send(self, name: str, *, force: bool = False, timeout: Optional[float] = None, **args: Any) -> Result:
         """Run one command the protocol's way and wait for its result (blocking), as `xfgcu send
-        NAME --OPTION VALUE ...` does: ``send("zoom-to", rate=5.5)``. The client's own timeouts
+        NAME --OPTION VALUE ...` does: ``send("zoom-to", factor=5.5)``. The client's own timeouts
         end it (command_timeout_ms; operating_timeout_ms for calibration); ``timeout`` (seconds)
         bounds the wait besides, giving status "timeout". ``force``: send it even if the GCU's
         model lacks the order. Raises CommandError for bad arguments."""

@@ -7,7 +7,7 @@ import ctypes
 import json
 from typing import Any, Dict, List, Optional
 
-from ._native import PACKET_MAX, argv, c_argv, codec_lock, lib, take_error
+from ._native import PACKET_MAX, lib, messages, named_args, report
 from .errors import (
     CRCError,
     DecodeError,
@@ -43,9 +43,10 @@ def _fault(data: bytes, code: int) -> DecodeError:
     return cls(text)
 
 
-def decode(data: bytes, pod_order: str = "auto") -> Dict[str, Any]:
+def decode(data: bytes, pod_order: str = "auto", raw: bool = False) -> Dict[str, Any]:
     """One whole packet (host or GCU, found from its header) as the object `xfgcu decode --json`
-    prints for it: the same keys, in the same order, with the same values.
+    prints for it: the same keys, in the same order, with the same values: fields in engineering
+    units, or as wire integers with ``raw`` (decode --raw).
 
     ``pod_order`` is decode's ``--pod-order``: how to read the flags of pod_status.
     Raises a DecodeError subclass (HeaderError, LengthError, CRCError, TruncatedError)."""
@@ -53,10 +54,10 @@ def decode(data: bytes, pod_order: str = "auto") -> Dict[str, Any]:
     if pod_order not in _POD:
         raise ValueError("pod_order must be 'auto', 'le' or 'be'")
     out = ctypes.create_string_buffer(16384)
-    rc = lib.xfpy_decode(data, len(data), _POD[pod_order], out, len(out))
+    rc = lib.xfpy_decode(data, len(data), _POD[pod_order], int(raw), out, len(out))
     if rc > 0:
         out = ctypes.create_string_buffer(rc)
-        rc = lib.xfpy_decode(data, len(data), _POD[pod_order], out, len(out))
+        rc = lib.xfpy_decode(data, len(data), _POD[pod_order], int(raw), out, len(out))
     if rc != 0:
         raise _fault(data, rc)
     result: Dict[str, Any] = json.loads(out.value.decode())
@@ -68,17 +69,17 @@ def _check_protocol(protocol: int) -> None:
         raise EncodeError(f"encode: protocol {protocol!r}: must be 1 or 2")
 
 
-def encode(obj: Dict[str, Any], protocol: int = 1) -> bytes:
-    """The packet an object of `xfgcu encode --json` describes (the inverse of decode()).
-    ``protocol`` is the version when the object gives none. Raises EncodeError."""
+def encode(obj: Dict[str, Any], protocol: int = 1, raw: bool = False) -> bytes:
+    """The packet an object of `xfgcu encode --json` describes (the inverse of decode()), its
+    fields in engineering units, or wire integers with ``raw``. ``protocol`` is the version when
+    the object gives none. Raises EncodeError."""
     _check_protocol(protocol)
     text = json.dumps(obj).encode()
     out = ctypes.create_string_buffer(PACKET_MAX)
     n = ctypes.c_size_t(0)
-    with codec_lock:
-        lib.xfpy_clear()
-        rc = lib.xfpy_encode(text, protocol, out, len(out), ctypes.byref(n))
-        message = take_error()
+    msgs = messages()
+    rc = lib.xfpy_encode(text, protocol, int(raw), out, len(out), ctypes.byref(n), msgs, len(msgs))
+    message = report(msgs)
     if rc != 0:
         raise EncodeError(message)
     return out.raw[: n.value]
@@ -87,17 +88,16 @@ def encode(obj: Dict[str, Any], protocol: int = 1) -> bytes:
 def encode_command(name: str, protocol: int = 1, **args: Any) -> bytes:
     """The packet `xfgcu encode --protocol PROTOCOL NAME --OPTION VALUE ...` prints: the
     program's command names ("zoom-to" or "zoom_to") and option names, ``-`` written ``_``.
-    ``encode_command("zoom-to", rate=5.5)`` is ``xfgcu encode zoom-to --rate 5.5``; a switch is
+    ``encode_command("zoom-to", factor=5.5)`` is ``xfgcu encode zoom-to --factor 5.5``; a switch is
     ``True`` (``osd`` with ``show=True``); a list is a comma list (``box=(0, 0, 100, 100)``).
-    Notes of the program (an order of another version) come as warnings. Raises EncodeError."""
+    Notes (an order of another version) come as warnings. Raises EncodeError."""
     _check_protocol(protocol)
-    items = argv(name, args)
+    count, names, values = named_args(args)
     out = ctypes.create_string_buffer(PACKET_MAX)
     n = ctypes.c_size_t(0)
-    with codec_lock:
-        lib.xfpy_clear()
-        rc = lib.xfpy_command(len(items), c_argv(items), protocol, out, len(out), ctypes.byref(n))
-        message = take_error()
+    msgs = messages()
+    rc = lib.xfpy_command(name.encode(), count, names, values, protocol, out, len(out), ctypes.byref(n), msgs, len(msgs))
+    message = report(msgs)
     if rc != 0:
         raise EncodeError(message)
     return out.raw[: n.value]
@@ -105,8 +105,12 @@ def encode_command(name: str, protocol: int = 1, **args: Any) -> bytes:
 
 def commands() -> List[str]:
     """The command names, as the program spells them."""
-    with codec_lock:
-        return lib.xfpy_command_names().decode().split()
+    out = ctypes.create_string_buffer(4096)
+    size = lib.xfpy_command_names(out, len(out))
+    if size > 0:
+        out = ctypes.create_string_buffer(size)
+        lib.xfpy_command_names(out, len(out))
+    return out.value.decode().split()
 
 
 class Parser:

@@ -8,7 +8,7 @@ import json
 import threading
 from typing import Any, Dict, Mapping, Optional, Union
 
-from ._native import Owned, codec_lock, lib, take_error
+from ._native import Owned, lib, messages, report
 from .errors import LinkError
 
 __all__ = ["Simulator", "model_code"]
@@ -107,10 +107,9 @@ class Simulator(Owned):
             where = where.strip("[]") or "127.0.0.1"
         elif kind != "pty":
             raise ValueError(f"simulator spec {spec!r}: udp:ADDR:PORT, tcp:ADDR:PORT, pty or pty:LINK")
-        with codec_lock:
-            lib.xfpy_clear()
-            rc = lib.xfpy_sim_open(self._handle, kind.encode(), where.encode(), port)
-            message = take_error()
+        msgs = messages()
+        rc = lib.xfpy_sim_open(self._handle, kind.encode(), where.encode(), port, msgs, len(msgs))
+        message = report(msgs)
         if rc != 0:
             raise LinkError(message)
 

@@ -1179,6 +1179,30 @@ static void test_units(void)
     xf_euler_to_axes(1.0f, 2.0f, 3.0f, NULL, NULL, NULL);
 }
 
+/* The field table: the vendor packet's fields read through it, written back, and the units. */
+static void test_wire_fields(void)
+{
+    size_t n = 0;
+    int64_t lo = 0, hi = 0, raw = 0;
+    uint8_t copy[72];
+    const xf_wire_field *rows = xf_wire_fields(xf_wire_frames(XF_DIR_HOST), &n);
+    const xf_wire_field *yaw = xf_wire_field_find(XF_WIRE_HOST, "carrier_yaw");
+    const xf_wire_field *rate = xf_wire_field_find(XF_WIRE_GCU, "rate_x");
+    CHECK(rows != NULL && n > 20u && yaw != NULL && rate != NULL);
+    CHECK(xf_wire_field_get(yaw, vendor_packet) == 24000);
+    CHECK(near_d(xf_wire_field_value(yaw, 24000, XF_PROTOCOL_V1), 240.0, 1e-9));
+    CHECK(xf_wire_field_raw(yaw, 240.0, XF_PROTOCOL_V1, &raw) == XF_OK && raw == 24000);
+    CHECK(xf_wire_field_raw(yaw, 240.005, XF_PROTOCOL_V1, &raw) == XF_ERR_ARG);
+    XF_MEMCPY(copy, vendor_packet, sizeof(copy));
+    xf_wire_field_put(yaw, copy, 12345);
+    CHECK(xf_wire_field_get(yaw, copy) == 12345);
+    xf_wire_field_range(yaw, &lo, &hi);
+    CHECK(lo == 0 && hi == 65535);
+    CHECK(xf_wire_field_decimals(rate, XF_PROTOCOL_V1) == 2u && xf_wire_field_decimals(rate, XF_PROTOCOL_V2) == 1u);
+    CHECK(xf_wire_field_present(xf_wire_field_find(XF_WIRE_GCU, "time_zone"), XF_PROTOCOL_V2));
+    CHECK(xf_wire_param(XF_F_ZOOM) != NULL && same_str(xf_wire_param(XF_F_ZOOM)->name, "zoom"));
+}
+
 int main(void)
 {
     CHECK(XF_VERSION_MAJOR >= 0 && XF_VERSION_STRING[0] != '\0');
@@ -1201,6 +1225,7 @@ int main(void)
     test_parser_stream();
     test_parser_edges();
     test_units();
+    test_wire_fields();
     if (failures != 0) {
         fprintf(stderr, "user_tu: %d of %d checks failed\n", failures, checks);
         return 1;

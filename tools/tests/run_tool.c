@@ -89,9 +89,9 @@ static pid_t spawn(int argc, const char *const *args, int in[2], int out[2], int
 }
 
 /* Write stdin while reading stdout and stderr, until both outputs end. */
-static void pump(int in_fd, const char *input, int out_fd, int err_fd, sink *out, sink *err)
+static void pump(int in_fd, const char *input, size_t len, int out_fd, int err_fd, sink *out, sink *err)
 {
-    size_t sent = 0, len = (input != NULL) ? strlen(input) : 0u;
+    size_t sent = 0;
     int open_out = 1, open_err = 1;
     if (len == 0u) {
         close(in_fd);
@@ -124,7 +124,7 @@ static void pump(int in_fd, const char *input, int out_fd, int err_fd, sink *out
     }
 }
 
-tool_result run_tool_argv(int argc, const char *const *args, const char *input)
+tool_result run_tool_bytes(int argc, const char *const *args, const char *input, size_t input_len)
 {
     int in[2], out[2], err[2], wstatus = 0;
     sink so = {NULL, 0, 0}, se = {NULL, 0, 0};
@@ -140,7 +140,7 @@ tool_result run_tool_argv(int argc, const char *const *args, const char *input)
     close(err[1]);
     sink_add(&so, "", 0);
     sink_add(&se, "", 0);
-    pump(in[1], input, out[0], err[0], &so, &se);
+    pump(in[1], input, input_len, out[0], err[0], &so, &se);
     close(out[0]);
     close(err[0]);
     assert_int_equal(waitpid(pid, &wstatus, 0), pid);
@@ -150,6 +150,11 @@ tool_result run_tool_argv(int argc, const char *const *args, const char *input)
     r.err = se.data;
     r.err_len = se.len;
     return r;
+}
+
+tool_result run_tool_argv(int argc, const char *const *args, const char *input)
+{
+    return run_tool_bytes(argc, args, input, input != NULL ? strlen(input) : 0u);
 }
 
 tool_result run_tool(const char *input, ...)
@@ -246,6 +251,16 @@ json_int_t int_key(const json_t *obj, const char *key)
         fail();
     }
     return json_integer_value(v);
+}
+
+double num_key(const json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!json_is_number(v)) {
+        print_error("key %s is missing or not a number\n", key);
+        fail();
+    }
+    return json_number_value(v);
 }
 
 const char *str_key(const json_t *obj, const char *key)

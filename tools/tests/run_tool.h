@@ -19,6 +19,8 @@ typedef struct tool_result {
 
 /** Run xfgcu with @p argc arguments (argv[0] not included) and @p input on stdin (NULL: empty). */
 tool_result run_tool_argv(int argc, const char *const *args, const char *input);
+/** The same with @p input_len bytes of @p input on stdin, NUL bytes included. */
+tool_result run_tool_bytes(int argc, const char *const *args, const char *input, size_t input_len);
 /** Same with the arguments listed, NULL-terminated. */
 tool_result run_tool(const char *input, ...);
 void tool_result_free(tool_result *r);
@@ -35,6 +37,8 @@ void assert_failure(const tool_result *r, int status, ...);
 json_t *parse_line(const char *text);
 /** The integer under @p key (fails the test if there is none). */
 json_int_t int_key(const json_t *obj, const char *key);
+/** The number (integer or not) under @p key (fails the test if there is none). */
+double num_key(const json_t *obj, const char *key);
 /** The string under @p key (fails the test if there is none). */
 const char *str_key(const json_t *obj, const char *key);
 

@@ -4,11 +4,13 @@
  * (checked before any link is opened).
  * Every failure is exit 2 with one "xfgcu: ..." line naming the culprit.
  */
+#define _POSIX_C_SOURCE 200809L /* setenv */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -55,8 +57,8 @@ static void test_version(void **state)
 
 static void test_help(void **state)
 {
-    static const char *const names[] = {"decode", "encode", "send",   "point",  "rate",   "monitor",
-                                        "sim",    "demo",   "record", "replay", "--baud", "--protocol"};
+    static const char *const names[] = {"decode", "encode",  "send",   "point",      "rate",   "monitor", "sim",
+                                        "demo",   "capture", "replay", "--protocol", "--baud", "--link",  "--raw"};
     tool_result r = run_tool(NULL, "--help", NULL);
     size_t i;
     (void)state;
@@ -74,10 +76,10 @@ static void test_command_help(void **state)
     tool_result_free(&r);
     r = run_tool(NULL, "encode", "--help", NULL);
     assert_ok_containing(&r, "zoom-to");
-    assert_ok_containing(&r, "--rate R");
+    assert_ok_containing(&r, "--factor X");
     tool_result_free(&r);
     r = run_tool(NULL, "encode", "zoom-to", "--help", NULL);
-    assert_ok_containing(&r, "usage: xfgcu encode [--protocol 1|2] zoom-to (--rate R | --fraction N)");
+    assert_ok_containing(&r, "usage: xfgcu encode [--protocol 1|2] zoom-to (--factor X | --fraction N)");
     tool_result_free(&r);
 }
 
@@ -92,11 +94,12 @@ static void test_option_forms(void **state)
         {{"decode", "--json=1", APPENDIX1_HEX, NULL}, "decode: --json takes no value"},
         {{"decode", "--js", APPENDIX1_HEX, NULL}, "decode: unknown option '--js'"},
         {{"encode", "zoom-to", "--rat", "5", NULL}, "encode zoom-to: unknown option '--rat'"},
-        {{"encode", "zoom-to", "--rate", NULL}, "encode zoom-to: --rate needs a value: R"},
+        {{"encode", "zoom-to", "--rate", NULL}, "encode zoom-to: --rate needs a value: X"},
+        {{"encode", "zoom-to", "--factor", NULL}, "encode zoom-to: --factor needs a value: X"},
         {{"encode", "zoom-to", "--help", "--protocol", "3", NULL}, "--protocol 3: must be 1 or 2"},
         {{"encode", "shutter", "--", "extra", NULL}, "encode shutter: unexpected argument 'extra'"},
-        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "shutter", "--help", NULL},
-         "record shutter: unknown option '--help' (see 'xfgcu send shutter --help')"},
+        {{"--tcp", "127.0.0.1:9", "capture", "f.cap", "shutter", "--help", NULL},
+         "capture shutter: unknown option '--help' (see 'xfgcu send shutter --help')"},
     };
     tool_result r = run_tool(NULL, "-h", NULL);
     (void)state;
@@ -228,7 +231,7 @@ static void test_other_link_options(void **state)
 
 static void test_online_commands_help(void **state)
 {
-    static const char *const names[] = {"send", "point", "rate", "monitor", "sim", "demo", "record", "replay"};
+    static const char *const names[] = {"send", "point", "rate", "monitor", "sim", "demo", "capture", "replay"};
     size_t i;
     (void)state;
     for (i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
@@ -241,7 +244,10 @@ static void test_online_commands_help(void **state)
     }
     {
         tool_result r = run_tool(NULL, "send", "zoom-to", "--help", NULL);
-        assert_ok_containing(&r, "usage: xfgcu send [--protocol 1|2] zoom-to (--rate R | --fraction N)");
+        assert_ok_containing(&r, "usage: xfgcu send [--protocol 1|2] zoom-to (--factor X | --fraction N)");
+        tool_result_free(&r);
+        r = run_tool(NULL, "record", "--help", NULL); /* the old name of capture */
+        assert_ok_containing(&r, "usage: xfgcu [LINK OPTIONS] capture");
         tool_result_free(&r);
         r = run_tool(NULL, "--tcp", "127.0.0.1", "point", "--pitch", "1", "--help", NULL);
         assert_ok_containing(&r, "usage: xfgcu [LINK OPTIONS] point");
@@ -251,7 +257,7 @@ static void test_online_commands_help(void **state)
 
 static void test_online_commands_need_a_link(void **state)
 {
-    static const char *const names[] = {"send", "point", "rate", "monitor", "record"};
+    static const char *const names[] = {"send", "point", "rate", "monitor", "capture"};
     static const char *const args[][7] = {{"shutter"},
                                           {"--pitch", "0", "--yaw", "0"},
                                           {"--pitch", "0", "--yaw", "0", "--duration", "1"},
@@ -270,7 +276,8 @@ static void test_online_commands_need_a_link(void **state)
             n++;
         }
         r = run_tool_argv(n, argv, NULL);
-        snprintf(want, sizeof(want), "%s needs a link: give --serial PATH, --udp HOST or --tcp HOST[:PORT]", names[i]);
+        snprintf(want, sizeof(want),
+                 "%s needs a link: give --link SPEC, --serial PATH, --udp HOST or --tcp HOST[:PORT]", names[i]);
         assert_failure(&r, 2, want, NULL);
         tool_result_free(&r);
     }
@@ -302,10 +309,11 @@ static void test_online_bad_arguments(void **state)
         {{"--tcp", "127.0.0.1:9", "monitor", "--count", "0", NULL}, "monitor: --count 0"},
         {{"--tcp", "127.0.0.1:9", "monitor", "--duration", NULL}, "monitor: --duration needs a value"},
         {{"--tcp", "127.0.0.1:9", "monitor", "extra", NULL}, "monitor: unexpected argument 'extra'"},
-        {{"--tcp", "127.0.0.1:9", "record", NULL}, "record: missing FILE"},
-        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "--count", "x", NULL}, "record: --count x"},
-        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "frobnicate", NULL}, "record: unknown command 'frobnicate'"},
-        {{"--tcp", "127.0.0.1:9", "record", "f.cap", "zoom-to", NULL}, "record zoom-to: give --rate R or --fraction N"},
+        {{"--tcp", "127.0.0.1:9", "capture", NULL}, "capture: missing FILE"},
+        {{"--tcp", "127.0.0.1:9", "capture", "f.cap", "--count", "x", NULL}, "capture: --count x"},
+        {{"--tcp", "127.0.0.1:9", "capture", "f.cap", "frobnicate", NULL}, "capture: unknown command 'frobnicate'"},
+        {{"--tcp", "127.0.0.1:9", "capture", "f.cap", "zoom-to", NULL},
+         "capture zoom-to: give --factor X or --fraction N"},
         {{"replay", NULL}, "replay: missing FILE"},
         {{"replay", "a.cap", "b.cap", NULL}, "replay: unexpected argument 'b.cap'"},
         {{"replay", "--json", "--brief", "a.cap", NULL}, "--json and --brief exclude each other"},
@@ -328,6 +336,60 @@ static void test_online_bad_arguments(void **state)
     };
     (void)state;
     expect_failures(cases, sizeof(cases) / sizeof(cases[0]));
+}
+
+/* --link SPEC, XFGCU_LINK and --udp HOST:PORT are read by the library's parser: bad specs, two
+ * links and options the spec already says are usage errors, before any link is opened. */
+static void test_link_specs(void **state)
+{
+    static const failure_case cases[] = {
+        {{"--link", "bogus:1", "send", "shutter", NULL}, "--link bogus:1: unknown link kind 'bogus'"},
+        {{"--link", "tcp:h:99999", "send", "shutter", NULL}, "--link tcp:h:99999: port 99999 is out of range"},
+        {{"--link", "serial:/dev/x,baud=9600", "send", "shutter", NULL}, "baud must be"},
+        {{"--link", "tcp:127.0.0.1:9", "--tcp", "127.0.0.1:9", "send", "shutter", NULL},
+         "give only one of --serial, --udp, --tcp, --link"},
+        {{"--link", "udp:127.0.0.1:9", "--local-port", "0", "send", "shutter", NULL},
+         "--local-port is for --udp or --tcp; with --link, the spec says it"},
+        {{"--link", "serial:/dev/ttyUSB0", "--baud", "500000", "send", "shutter", NULL},
+         "--baud is for --serial; with --link, the spec says it"},
+        {{"--link", "tcp:127.0.0.1:9", "--link", "tcp:127.0.0.1:9", "send", "shutter", NULL}, "--link given twice"},
+        {{"--udp", "127.0.0.1:9", "--gcu-port", "9", "send", "shutter", NULL}, "--gcu-port and the port of --udp"},
+        {{"--udp", "127.0.0.1:99999", "send", "shutter", NULL}, "--udp 127.0.0.1:99999: port 99999 is out of range"},
+        {{"--udp", "127.0.0.1:9,local=0", "send", "shutter", NULL}, "options have no place here: give --link"},
+        {{"send", "shutter", "--link", "tcp:127.0.0.1:9", "--serial", "/dev/x", NULL}, "give only one of"},
+    };
+    tool_result r;
+    (void)state;
+    expect_failures(cases, sizeof(cases) / sizeof(cases[0]));
+    /* XFGCU_LINK: read when a command needs a link, checked then; an option names another link */
+    assert_int_equal(setenv("XFGCU_LINK", "bogus:x", 1), 0);
+    r = run_tool(NULL, "send", "shutter", NULL);
+    assert_failure(&r, 2, "XFGCU_LINK: bogus:x: unknown link kind 'bogus'", NULL);
+    tool_result_free(&r);
+    r = run_tool(NULL, "decode", APPENDIX1_HEX, NULL); /* an offline command does not read it */
+    assert_int_equal(r.status, 0);
+    tool_result_free(&r);
+    assert_int_equal(setenv("XFGCU_LINK", "serial:/dev/ttyUSB0", 1), 0);
+    r = run_tool(NULL, "--baud", "500000", "send", "shutter", NULL);
+    assert_failure(&r, 2, "--baud is for --serial; with XFGCU_LINK, the spec says it", NULL);
+    tool_result_free(&r);
+    assert_int_equal(unsetenv("XFGCU_LINK"), 0);
+}
+
+/* The capture command's old name still runs it, with a note; the camera order keeps its name. */
+static void test_record_alias(void **state)
+{
+    tool_result r = run_tool(NULL, "--tcp", "127.0.0.1:9", "record", NULL);
+    (void)state;
+    assert_int_equal(r.status, 2);
+    assert_int_equal(count_lines(r.err), 2);
+    assert_non_null(strstr(r.err, "xfgcu: note: 'xfgcu record FILE' is the old name of 'xfgcu capture FILE'"));
+    assert_non_null(strstr(r.err, "xfgcu: capture: missing FILE"));
+    tool_result_free(&r);
+    r = run_tool(NULL, "encode", "record", NULL); /* the order */
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, " 21 01 "));
+    tool_result_free(&r);
 }
 
 /* An error that echoes the user's input stays one line: control characters are escaped. */
@@ -364,6 +426,8 @@ int main(void)
         cmocka_unit_test(test_online_commands_need_a_link),
         cmocka_unit_test(test_online_bad_arguments),
         cmocka_unit_test(test_errors_escape_control_characters),
+        cmocka_unit_test(test_link_specs),
+        cmocka_unit_test(test_record_alias),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -56,6 +56,38 @@ static size_t gcu_packet(uint8_t version, uint8_t order, const uint8_t *fb, uint
 
 /* ---- the vendor's worked example ---------------------------------------------------- */
 
+/* The appendix's packet in engineering units (the default): each value the wire integer times its
+ * step, written with the digits of the step, under the same names. */
+static void test_appendix1_engineering(void **state)
+{
+    tool_result r = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, NULL);
+    json_t *o;
+    (void)state;
+    assert_int_equal(r.status, 0);
+    assert_int_equal(r.err_len, 0);
+    o = parse_line(r.out);
+    assert_int_equal(int_key(o, "roll_ctrl"), 0); /* the mode says its unit: the wire integer */
+    assert_int_equal(int_key(o, "pitch_ctrl"), 100);
+    assert_int_equal(int_key(o, "status"), 5);
+    assert_true(num_key(o, "carrier_roll") == -11.32);
+    assert_true(num_key(o, "carrier_pitch") == 1.01);
+    assert_true(num_key(o, "carrier_yaw") == 240.0);
+    assert_true(num_key(o, "accel_east") == -1.12);
+    assert_true(num_key(o, "vel_north") == -327.04);
+    assert_true(num_key(o, "longitude") == 170.9175332);
+    assert_true(num_key(o, "latitude") == 38.0300822);
+    assert_true(num_key(o, "altitude") == 41.123);
+    assert_true(num_key(o, "relative_height") == 12.12);
+    assert_int_equal(int_key(o, "gnss_ms"), 352718000); /* its name says its unit */
+    assert_int_equal(int_key(o, "satellites"), 19);
+    /* the digits of each step, nothing more */
+    assert_non_null(strstr(r.out, "\"carrier_roll\":-11.32,"));
+    assert_non_null(strstr(r.out, "\"carrier_yaw\":240.0,"));
+    assert_non_null(strstr(r.out, "\"latitude\":38.0300822,"));
+    json_decref(o);
+    tool_result_free(&r);
+}
+
 static void test_appendix1_json(void **state)
 {
     static const char *const host_keys[] = {
@@ -63,7 +95,7 @@ static void test_appendix1_json(void **state)
         "carrier_yaw", "accel_north", "accel_east", "accel_up",       "vel_north",    "vel_east",
         "vel_up",      "sub_request", "sub_header", "longitude",      "latitude",     "altitude",
         "satellites",  "gnss_ms",     "gnss_week",  "relative_height"};
-    tool_result r = run_tool(NULL, "decode", "--json", APPENDIX1_HEX, NULL);
+    tool_result r = run_tool(NULL, "decode", "--json", "--raw", APPENDIX1_HEX, NULL);
     json_t *o;
     size_t i;
     (void)state;
@@ -157,6 +189,14 @@ static void test_appendix1_table(void **state)
         }
     }
     tool_result_free(&r);
+    /* --raw: the wire integers and the names of flags, no engineering value */
+    r = run_tool(NULL, "decode", "--raw", APPENDIX1_HEX, NULL);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "-32704"));
+    assert_non_null(strstr(r.out, "ins_valid ctrl_valid"));
+    assert_null(strstr(r.out, " deg"));
+    assert_null(strstr(r.out, "327.04"));
+    tool_result_free(&r);
 }
 
 /* ---- GCU packets, versions, extras --------------------------------------------------- */
@@ -171,7 +211,7 @@ static void test_gcu_versions(void **state)
     json_t *o, *fb;
     (void)state;
     hex_plain(pkt, len, hex);
-    r = run_tool(NULL, "decode", "--json", hex, NULL);
+    r = run_tool(NULL, "decode", "--json", "--raw", hex, NULL);
     assert_int_equal(r.status, 0);
     o = parse_line(r.out);
     assert_string_equal(str_key(o, "direction"), "gcu");
@@ -196,6 +236,21 @@ static void test_gcu_versions(void **state)
     fb = json_object_get(o, "feedback");
     assert_string_equal(str_key(fb, "result"), "failed");
     assert_int_equal(int_key(fb, "failed_cameras"), 3);
+    json_decref(o);
+    tool_result_free(&r);
+
+    /* the same in engineering units: V0.2's rates in 0.1 deg/s, versions in tenths */
+    r = run_tool(NULL, "decode", "--json", hex, NULL);
+    assert_int_equal(r.status, 0);
+    o = parse_line(r.out);
+    assert_true(num_key(o, "cam_pitch") == -45.0);
+    assert_true(num_key(o, "cam_yaw") == 359.99);
+    assert_true(num_key(o, "rate_x") == -12.3);
+    assert_true(num_key(o, "target_distance") == 1234.5);
+    assert_true(num_key(o, "zoom_cam1") == 5.5);
+    assert_int_equal(int_key(o, "pod_status"), 0x180); /* flags and codes: integers in both views */
+    assert_int_equal(int_key(o, "gimbal_code"), 30);
+    assert_int_equal(int_key(o, "time_zone"), -5);
     json_decref(o);
     tool_result_free(&r);
 
@@ -504,7 +559,7 @@ static void test_stdin_noisy(void **state)
     assert_int_equal(r.err_len, 0);
     assert_int_equal(count_lines(r.out), 2);
     o = parse_line(r.out);
-    assert_int_equal(int_key(o, "vel_east"), -2112);
+    assert_true(num_key(o, "vel_east") == -21.12);
     json_decref(o);
     line = strchr(r.out, '\n') + 1;
     o = parse_line(line);
@@ -587,12 +642,12 @@ static void test_stdin_faults(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_appendix1_json),     cmocka_unit_test(test_appendix1_layouts),
-        cmocka_unit_test(test_appendix1_table),    cmocka_unit_test(test_gcu_versions),
-        cmocka_unit_test(test_host_command_extra), cmocka_unit_test(test_argument_faults),
-        cmocka_unit_test(test_stdin_noisy),        cmocka_unit_test(test_stdin_stream_order),
-        cmocka_unit_test(test_stdin_faults),       cmocka_unit_test(test_pod_order_json),
-        cmocka_unit_test(test_pod_order_option),
+        cmocka_unit_test(test_appendix1_json),     cmocka_unit_test(test_appendix1_engineering),
+        cmocka_unit_test(test_appendix1_layouts),  cmocka_unit_test(test_appendix1_table),
+        cmocka_unit_test(test_gcu_versions),       cmocka_unit_test(test_host_command_extra),
+        cmocka_unit_test(test_argument_faults),    cmocka_unit_test(test_stdin_noisy),
+        cmocka_unit_test(test_stdin_stream_order), cmocka_unit_test(test_stdin_faults),
+        cmocka_unit_test(test_pod_order_json),     cmocka_unit_test(test_pod_order_option),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -19,9 +19,10 @@
 static void test_demo(void **state)
 {
     static const char *const needles[] = {
-        "simulated GCU  Z-9B_V4(T) on tcp 127.0.0.1:",
+        "simulated GCU  Z-9B_V4(T) (code 58) on tcp 127.0.0.1:",
         "[ 1] connect",
         "< first reply after ",
+        "Z-9B_V4(T) (code 58), hardware 3.1, firmware 5.0, mode ", /* models and versions one way */
         "head_lock: ok",
         "yaw rate +30 deg/s",
         "arrived after ",

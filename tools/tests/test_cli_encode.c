@@ -63,7 +63,8 @@ static const named_case cases[] = {
     {{"euler"}, 1, 0x14, 0, {0}},
     {{"gaze-lock"}, 1, 0x16, 0, {0}},
     {{"fpv", "--protocol", "2"}, 2, 0x1C, 0, {0}},
-    {{"zoom-to", "--rate", "5.5", "--cameras", "all"}, 1, 0x25, 3, {0xFF, 0xC9, 0xFF}},
+    {{"zoom-to", "--factor", "5.5", "--cameras", "all"}, 1, 0x25, 3, {0xFF, 0xC9, 0xFF}},
+    {{"zoom-to", "--rate", "5.5", "--cameras", "all"}, 1, 0x25, 3, {0xFF, 0xC9, 0xFF}}, /* its old spelling */
     {{"zoom-to", "--fraction", "10000", "--cameras", "2"}, 1, 0x25, 3, {0x02, 0x10, 0x27}},
     {{"zoom-to", "--rate=1"}, 1, 0x25, 3, {0x01, 0xF6, 0xFF}},
     {{"gaze-geo", "--lat", "22.5", "--lon", "113.25", "--alt", "100.5"},
@@ -229,7 +230,10 @@ static const error_case errors[] = {
     {{"zoom-to", "--fraction", "0"}, {"--fraction 0 is out of range", "1 (min)..10000 (max)"}},
     {{"zoom-to", "--fraction", "10001"}, {"--fraction 10001 is out of range"}},
     {{"zoom-to", "--rate", "2", "--fraction", "3"}, {"--rate and --fraction exclude each other"}},
-    {{"zoom-to"}, {"give --rate R or --fraction N"}},
+    {{"zoom-to", "--factor", "2", "--fraction", "3"}, {"--factor and --fraction exclude each other"}},
+    {{"zoom-to", "--factor", "2", "--rate", "3"}, {"--rate given twice"}}, /* the old spelling of --factor */
+    {{"zoom-to", "--factor", "0.5"}, {"encode zoom-to: --factor 0.5 is out of range", "1.0..3276.8"}},
+    {{"zoom-to"}, {"give --factor X or --fraction N"}},
     {{"lighting", "--level", "256"}, {"--level 256 is out of range", "0..255"}},
     {{"lighting"}, {"missing --level N"}},
     {{"time-zone", "--hours", "15", "--protocol", "2"}, {"--hours 15 is out of range", "-12..14"}},
@@ -291,9 +295,11 @@ static void test_errors(void **state)
 
 /* ---- encode --json -------------------------------------------------------------------- */
 
-static void expect_json(const char *object, const char *want_line)
+/* encode --json OBJECT [--raw] gives @p want_line. */
+static void expect_json_in(const char *object, int raw, const char *want_line)
 {
-    tool_result r = run_tool(NULL, "encode", "--json", object, NULL);
+    tool_result r = raw ? run_tool(NULL, "encode", "--raw", "--json", object, NULL)
+                        : run_tool(NULL, "encode", "--json", object, NULL);
     if (r.status != 0 || strcmp(r.out, want_line) != 0) {
         print_error("encode --json %s: status %d\n got: %s want: %s stderr: %s", object, r.status, r.out, want_line,
                     r.err);
@@ -302,12 +308,17 @@ static void expect_json(const char *object, const char *want_line)
     tool_result_free(&r);
 }
 
-static void expect_json_error(const char *object, const char *needle)
+static void expect_json(const char *object, const char *want_line) { expect_json_in(object, 0, want_line); }
+
+static void expect_json_error_in(const char *object, int raw, const char *needle)
 {
-    tool_result r = run_tool(NULL, "encode", "--json", object, NULL);
+    tool_result r = raw ? run_tool(NULL, "--raw", "encode", "--json", object, NULL)
+                        : run_tool(NULL, "encode", "--json", object, NULL);
     assert_failure(&r, 2, "encode --json", needle, NULL);
     tool_result_free(&r);
 }
+
+static void expect_json_error(const char *object, const char *needle) { expect_json_error_in(object, 0, needle); }
 
 static void test_json_input(void **state)
 {
@@ -315,15 +326,30 @@ static void test_json_input(void **state)
     uint8_t pkt[XF_PACKET_MAX_LEN];
     char want[3 * XF_PACKET_MAX_LEN + 1];
     (void)state;
-    /* the appendix-1 packet from its fields; the extras decode prints are accepted */
+    /* the appendix-1 packet from its fields, as wire integers (--raw) and in engineering units; the
+     * extras decode prints are accepted */
     hex_line(appendix1, 72, want);
-    expect_json("{\"direction\":\"host\",\"version\":1,\"length\":72,\"order\":0,\"order_name\":\"null\","
-                "\"params\":\"\","
-                "\"pitch_ctrl\":100,\"yaw_ctrl\":-100,\"status\":5,\"carrier_roll\":-1132,\"carrier_pitch\":101,"
-                "\"carrier_yaw\":24000,\"accel_north\":112,\"accel_east\":-112,\"accel_up\":112,\"vel_north\":-32704,"
-                "\"vel_east\":-2112,\"vel_up\":-32704,\"sub_request\":1,\"sub_header\":1,\"longitude\":1709175332,"
-                "\"latitude\":380300822,\"altitude\":41123,\"satellites\":19,\"gnss_ms\":352718000,"
-                "\"gnss_week\":2278,\"relative_height\":12120}",
+    expect_json_in(
+        "{\"direction\":\"host\",\"version\":1,\"length\":72,\"order\":0,\"order_name\":\"null\","
+        "\"params\":\"\","
+        "\"pitch_ctrl\":100,\"yaw_ctrl\":-100,\"status\":5,\"carrier_roll\":-1132,\"carrier_pitch\":101,"
+        "\"carrier_yaw\":24000,\"accel_north\":112,\"accel_east\":-112,\"accel_up\":112,\"vel_north\":-32704,"
+        "\"vel_east\":-2112,\"vel_up\":-32704,\"sub_request\":1,\"sub_header\":1,\"longitude\":1709175332,"
+        "\"latitude\":380300822,\"altitude\":41123,\"satellites\":19,\"gnss_ms\":352718000,"
+        "\"gnss_week\":2278,\"relative_height\":12120}",
+        1, want);
+    expect_json("{\"pitch_ctrl\":100,\"yaw_ctrl\":-100,\"status\":5,\"carrier_roll\":-11.32,\"carrier_pitch\":1.01,"
+                "\"carrier_yaw\":240,\"accel_north\":1.12,\"accel_east\":-1.12,\"accel_up\":1.12,\"vel_north\":-327.04,"
+                "\"vel_east\":-21.12,\"vel_up\":-327.04,\"sub_request\":1,\"sub_header\":1,\"longitude\":170.9175332,"
+                "\"latitude\":38.0300822,\"altitude\":41.123,\"satellites\":19,\"gnss_ms\":352718000,"
+                "\"gnss_week\":2278,\"relative_height\":12.12}",
+                want);
+    /* a value computed by a script, a double's error off its step, is that step */
+    expect_json("{\"pitch_ctrl\":100,\"yaw_ctrl\":-100,\"status\":5,\"carrier_roll\":-11.319999999999999,"
+                "\"carrier_pitch\":1.0100000000000002,\"carrier_yaw\":240,\"accel_north\":1.12,\"accel_east\":-1.12,"
+                "\"accel_up\":1.12,\"vel_north\":-327.04,\"vel_east\":-21.12,\"vel_up\":-327.04,\"sub_request\":1,"
+                "\"sub_header\":1,\"longitude\":170.9175332,\"latitude\":38.0300822,\"altitude\":41.123,"
+                "\"satellites\":19,\"gnss_ms\":352718000,\"gnss_week\":2278,\"relative_height\":12.12}",
                 want);
 
     /* missing fields are 0 (sub_request too); params in either case; order by name; command instead of params */
@@ -337,7 +363,8 @@ static void test_json_input(void **state)
     hex_line(pkt, 75, want);
     expect_json("{\"order\":37,\"params\":\"ffc9ff\"}", want);
     expect_json("{\"order\":\"zoom-to\",\"params\":\"FF C9 FF\"}", want);
-    expect_json("{\"order\":37,\"command\":{\"cameras\":255,\"zoom\":-55}}", want);
+    expect_json("{\"order\":37,\"command\":{\"cameras\":255,\"zoom\":-55}}", want); /* ZZ: an integer in both */
+    expect_json_in("{\"order\":37,\"command\":{\"cameras\":255,\"zoom\":-55}}", 1, want);
     expect_json("{\"order\":37,\"params\":\"FFC9FF\",\"command\":{\"cameras\":255,\"zoom\":-55}}", want);
 
     /* a GCU reply from its feedback */
@@ -371,10 +398,20 @@ static void test_json_errors(void **state)
     expect_json_error("{\"direction\":\"gcu\",\"version\":1,\"thermal_status\":1}",
                       "'thermal_status' needs version >= 2");
     expect_json_error("{\"direction\":\"sideways\"}", "direction must be");
-    expect_json_error("{\"vel_north\":40000}", "vel_north 40000 is out of range -32768..32767");
+    expect_json_error_in("{\"vel_north\":40000}", 1, "vel_north 40000 is out of range -32768..32767");
+    expect_json_error_in("{\"vel_north\":1.5}", 1, "vel_north must be an integer");
+    expect_json_error_in("{\"vel_north\":\"5\"}", 1, "vel_north must be an integer");
     expect_json_error("{\"gnss_ms\":-1}", "gnss_ms -1 is out of range 0..4294967295");
-    expect_json_error("{\"vel_north\":1.5}", "vel_north must be an integer");
-    expect_json_error("{\"vel_north\":\"5\"}", "vel_north must be an integer");
+    /* engineering units: out of range, between two steps (never rounded), not a number */
+    expect_json_error("{\"vel_north\":400}", "vel_north 400 is out of range -327.68..327.67 m/s");
+    expect_json_error("{\"vel_north\":1.234}", "vel_north 1.234 is not a whole number of steps of 0.01 m/s");
+    expect_json_error("{\"latitude\":22.12345678}",
+                      "latitude 22.12345678 is not a whole number of steps of 0.0000001 deg");
+    expect_json_error("{\"vel_north\":\"5\"}", "vel_north must be a number (m/s), -327.68..327.67");
+    expect_json_error("{\"satellites\":1.5}", "satellites must be an integer");
+    expect_json_error("{\"direction\":\"gcu\",\"hw_version\":3.14}",
+                      "hw_version 3.14 is not a whole number of steps of 0.1");
+    expect_json_error("{\"order\":\"gaze_geo\",\"command\":{\"altitude\":1.0001}}", "command.altitude 1.0001 is not");
     expect_json_error("{\"version\":256}", "version 256 is out of range");
     expect_json_error("{\"order\":300}", "order must be an integer 0..255 or the name");
     expect_json_error("{\"order\":\"warp\"}", "order must be");
@@ -398,8 +435,12 @@ static void test_json_errors(void **state)
         tool_result r = run_tool(NULL, "encode", "--json", "{}", "shutter", NULL);
         assert_failure(&r, 2, "--json takes one OBJECT", NULL);
         tool_result_free(&r);
-        r = run_tool(NULL, "encode", "--json", NULL);
-        assert_failure(&r, 2, "--json needs an OBJECT", NULL);
+        r = run_tool("{}\n{\"order\":32}\n", "encode", "--json", NULL); /* no OBJECT: JSON Lines on stdin */
+        assert_int_equal(r.status, 0);
+        assert_int_equal(count_lines(r.out), 2);
+        tool_result_free(&r);
+        r = run_tool(NULL, "encode", "--json", "{}", "--json", "{}", NULL);
+        assert_failure(&r, 2, "--json given twice", NULL);
         tool_result_free(&r);
         r = run_tool("{}\n{\"bogus\":1}\n", "encode", "--json", "-", NULL);
         assert_int_equal(r.status, 2);
@@ -407,6 +448,55 @@ static void test_json_errors(void **state)
         assert_non_null(strstr(r.err, "stdin line 2: unknown key 'bogus'"));
         tool_result_free(&r);
     }
+}
+
+/* JSON Lines on stdin, and a capture on stdin: a NUL byte, a truncated object or anything after
+ * it is an error (exit 2, one line) that names the line; what came before it is printed. */
+typedef struct line_fault {
+    const char *input;
+    size_t len; /* with the NUL bytes */
+    const char *args[4];
+    size_t good_lines; /* packets printed before the bad line */
+    const char *needles[3];
+} line_fault;
+
+#define TEXT(s) s, sizeof(s) - 1u
+
+static const line_fault line_faults[] = {
+    {TEXT("{\"order\":32}\0{\"garbage\n"), {"encode", "--json", "-"}, 0, {"stdin line 1", "NUL byte at column 13"}},
+    {TEXT("{\"order\":32}\n{\"order\":3"), {"encode", "--json", "-"}, 1, {"stdin line 2", "invalid JSON"}},
+    {TEXT("{\"order\":32} x\n"), {"encode", "--json", "-"}, 0, {"stdin line 1", "invalid JSON at column 14"}},
+    {TEXT("{\"order\":32}{\"order\":1}\n"), {"encode", "--json", "-"}, 0, {"stdin line 1", "invalid JSON"}},
+    {TEXT("\n \n{\"order\":}\n"), {"encode", "--json", "-"}, 0, {"stdin line 3", "invalid JSON"}},
+    {TEXT("{\"order\":32}\n\0\n"), {"encode", "--json", "-"}, 1, {"stdin line 2", "NUL byte at column 1"}},
+    {TEXT("# xfgcu capture 1\n0.000 > A8\0E5\n"), {"replay", "-"}, 0, {"-:2: ", "NUL byte"}},
+    {TEXT("A8 E5\0 48\n"), {"decode"}, 0, {"stdin, line 1 column 6", "byte 0x00 is not a hex digit"}},
+    {TEXT("# xfgcu capture 1\n0.000 > A8 E5\n0.001 < 8A 5E 4\n"), {"replay", "-", "--json"}, 0, {"-:3: "}},
+};
+
+static void test_json_line_faults(void **state)
+{
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(line_faults) / sizeof(line_faults[0]); i++) {
+        const line_fault *c = &line_faults[i];
+        int argc = 0;
+        tool_result r;
+        while (argc < 4 && c->args[argc] != NULL) {
+            argc++;
+        }
+        r = run_tool_bytes(argc, c->args, c->input, c->len);
+        if (r.status != 2 || count_lines(r.out) != c->good_lines || count_lines(r.err) != 1 ||
+            strncmp(r.err, "xfgcu: ", 7) != 0 || strstr(r.err, c->needles[0]) == NULL ||
+            (c->needles[1] != NULL && strstr(r.err, c->needles[1]) == NULL)) {
+            print_error("case %zu: status %d\nstdout: %s\nstderr: %s\n", i, r.status, r.out, r.err);
+            fail();
+        }
+        tool_result_free(&r);
+    }
+    /* the same rule for one object given as an argument */
+    expect_json_error("{\"order\":32} x", "invalid JSON at column 14");
+    expect_json_error("{\"order\":32", "invalid JSON");
 }
 
 /* ---- round trips ------------------------------------------------------------------------ */
@@ -498,29 +588,53 @@ static void free_corpus(corpus *c)
     free(c->stream);
 }
 
+/* decode --json [--raw] of every packet of the corpus, as arguments. */
+static tool_result decode_corpus(const corpus *c, int raw)
+{
+    const char *argv[ROUND_TRIP_PACKETS + 3];
+    int n = 0;
+    size_t i;
+    argv[n++] = "decode";
+    argv[n++] = "--json";
+    if (raw) {
+        argv[n++] = "--raw";
+    }
+    for (i = 0; i < ROUND_TRIP_PACKETS; i++) {
+        argv[n++] = c->hex[i];
+    }
+    return run_tool_argv(n, argv, NULL);
+}
+
+/* encode --json [--raw] - of @p jsonl gives every packet of the corpus back. */
+static void expect_encoded(const corpus *c, const char *jsonl, int raw)
+{
+    tool_result encoded =
+        raw ? run_tool(jsonl, "encode", "--json", "--raw", "-", NULL) : run_tool(jsonl, "encode", "--json", "-", NULL);
+    if (encoded.status != 0 || strcmp(encoded.out, c->want) != 0) {
+        print_error("round trip%s differs (status %d): %s", raw ? " (--raw)" : "", encoded.status, encoded.err);
+        fail();
+    }
+    tool_result_free(&encoded);
+}
+
 static void test_round_trip(void **state)
 {
     corpus c;
-    const char *argv[ROUND_TRIP_PACKETS + 2];
-    tool_result decoded, encoded, streamed;
+    tool_result decoded, raw, streamed;
     size_t i;
     (void)state;
     make_corpus(&c);
-    argv[0] = "decode";
-    argv[1] = "--json";
-    for (i = 0; i < ROUND_TRIP_PACKETS; i++) {
-        argv[i + 2] = c.hex[i];
-    }
-    decoded = run_tool_argv(ROUND_TRIP_PACKETS + 2, argv, NULL);
+    decoded = decode_corpus(&c, 0);
     assert_int_equal(decoded.status, 0);
     assert_int_equal(count_lines(decoded.out), ROUND_TRIP_PACKETS);
+    expect_encoded(&c, decoded.out, 0); /* JSON Lines back to bytes */
 
-    /* JSON Lines back to bytes */
-    encoded = run_tool(decoded.out, "encode", "--json", "-", NULL);
-    if (encoded.status != 0 || strcmp(encoded.out, c.want) != 0) {
-        print_error("round trip differs (status %d): %s", encoded.status, encoded.err);
-        fail();
-    }
+    /* the same with the wire integers: decode --json --raw, encode --json --raw */
+    raw = decode_corpus(&c, 1);
+    assert_int_equal(raw.status, 0);
+    assert_string_not_equal(raw.out, decoded.out); /* another view of the fields */
+    expect_encoded(&c, raw.out, 1);
+    tool_result_free(&raw);
 
     /* the same packets found in a noisy stream, in the same order */
     streamed = run_tool(c.stream, "decode", "--json", NULL);
@@ -547,7 +661,6 @@ static void test_round_trip(void **state)
         tool_result_free(&one);
     }
     tool_result_free(&decoded);
-    tool_result_free(&encoded);
     tool_result_free(&streamed);
     free_corpus(&c);
 }
@@ -583,6 +696,7 @@ int main(void)
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_json_input),
         cmocka_unit_test(test_json_errors),
+        cmocka_unit_test(test_json_line_faults),
         cmocka_unit_test(test_round_trip),
         cmocka_unit_test(test_named_round_trip),
     };

@@ -336,7 +336,7 @@ static void test_monitor_json_events(void **state)
             states[events++] = event_state(o);
         } else {
             assert_string_equal(str_key(o, "direction"), "gcu");
-            (void)int_key(o, "cam_yaw");
+            (void)num_key(o, "cam_yaw");
             packets[events]++;
         }
         json_decref(o);

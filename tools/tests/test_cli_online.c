@@ -3,7 +3,7 @@
  * running in the background on each link (TCP, UDP, a pseudo-terminal):
  * send (ok, failed with a camera mask, calibration's "operating"), no GCU
  * at all, monitor --json and plain, point and rate moving the simulated
- * gimbal, and record then replay.
+ * gimbal, capture then replay, and the link named every way (--link, XFGCU_LINK, --udp HOST:PORT).
  */
 #define _POSIX_C_SOURCE 200809L
 
@@ -51,7 +51,7 @@ static size_t check_gcu_lines(const char *text, uint8_t version)
         assert_string_equal(json_string_value(json_object_get(obj, "direction")), "gcu");
         assert_non_null(json_object_get(obj, "params"));
         for (k = 0; k < sizeof(keys) / sizeof(keys[0]); k++) {
-            (void)int_key(obj, keys[k]);
+            (void)num_key(obj, keys[k]); /* engineering units: numbers, not all integers */
         }
         assert_int_equal(int_key(obj, "version"), version);
         if (version >= 2u) {
@@ -66,10 +66,10 @@ static size_t check_gcu_lines(const char *text, uint8_t version)
     return n;
 }
 
-/* The attitude the simulator reports now (raw 0.01 deg), through monitor --json --count 1. */
+/* The attitude the simulator reports now (raw 0.01 deg), through monitor --json --raw --count 1. */
 static void attitude(const sim_proc *s, long *pitch, long *yaw)
 {
-    tool_result r = sim_run_on(s, "monitor", "--json", "--count", "1", NULL);
+    tool_result r = sim_run_on(s, "monitor", "--json", "--raw", "--count", "1", NULL);
     json_t *obj;
     assert_int_equal(r.status, 0);
     assert_int_equal(count_lines(r.out), 1);
@@ -250,6 +250,74 @@ static void test_sim_port_taken(void **state)
     tool_result_free(&r);
 }
 
+/* ---- the link, however it is named --------------------------------------------------------- */
+
+/* send shutter on @p s with the link named by @p a and @p b (NULL: none), XFGCU_LINK=@p env (NULL: unset). */
+static void expect_send_ok(const sim_proc *s, const char *a, const char *b, const char *env)
+{
+    const char *args[6];
+    int n = 0;
+    tool_result r;
+    (void)s;
+    if (env != NULL) {
+        assert_int_equal(setenv("XFGCU_LINK", env, 1), 0);
+    }
+    if (a != NULL) {
+        args[n++] = a;
+        args[n++] = b;
+    }
+    args[n++] = "send";
+    args[n++] = "shutter";
+    r = run_tool_argv(n, args, NULL);
+    if (r.status != 0 || strcmp(r.out, "ok\n") != 0) {
+        print_error("%s %s (XFGCU_LINK %s): status %d\nstdout: %s\nstderr: %s\n", a ? a : "", b ? b : "",
+                    env ? env : "unset", r.status, r.out, r.err);
+        fail();
+    }
+    tool_result_free(&r);
+    assert_int_equal(unsetenv("XFGCU_LINK"), 0);
+}
+
+/* The library's link strings, as --link SPEC and XFGCU_LINK, and --udp HOST:PORT like --tcp
+ * HOST:PORT: each reaches the simulator on its link. */
+static void test_link_forms(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    char spec[192], host_port[64];
+    sim_start(s, SIM_TCP, NULL);
+    snprintf(spec, sizeof(spec), "tcp:127.0.0.1:%s", s->port);
+    snprintf(host_port, sizeof(host_port), "127.0.0.1:%s", s->port);
+    expect_send_ok(s, "--link", spec, NULL);
+    expect_send_ok(s, NULL, NULL, spec);
+    expect_send_ok(s, "--tcp", host_port,
+                   "tcp:127.0.0.1:9"); /* an option names the link: the environment's is not used */
+    (void)sim_stop(s);
+
+    sim_start(s, SIM_UDP, NULL);
+    snprintf(spec, sizeof(spec), "udp:127.0.0.1:%s,local=0", s->port);
+    snprintf(host_port, sizeof(host_port), "127.0.0.1:%s", s->port);
+    expect_send_ok(s, "--link", spec, NULL);
+    expect_send_ok(s, NULL, NULL, spec);
+    {
+        tool_result r = run_tool(NULL, "--udp", host_port, "--local-port", "0", "send", "shutter", NULL);
+        expect(&r, 0, "ok\n");
+        tool_result_free(&r);
+    }
+    (void)sim_stop(s);
+
+    sim_start(s, SIM_PTY, NULL);
+    snprintf(spec, sizeof(spec), "serial:%s", s->path);
+    expect_send_ok(s, "--link", spec, NULL);
+    snprintf(spec, sizeof(spec), "serial:%s,baud=115200", s->path);
+    expect_send_ok(s, NULL, NULL, spec);
+    {
+        tool_result r = run_tool(NULL, "--link", spec, "monitor", "--json", "--count", "2", NULL);
+        assert_int_equal(r.status, 0);
+        assert_int_equal(check_gcu_lines(r.out, 1), 2);
+        tool_result_free(&r);
+    }
+}
+
 /* ---- monitor ------------------------------------------------------------------------- */
 
 static void test_monitor_json(void **state)
@@ -272,6 +340,12 @@ static void test_monitor_plain(void **state)
     assert_non_null(strstr(r.out, "mode head_lock"));
     assert_null(strstr(r.out, "\033[")); /* no terminal codes into a pipe */
     tool_result_free(&r);
+    r = sim_run_on(s, "monitor", "--duration", "0.5", "--raw", NULL); /* the wire integers */
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.out, "cam_pitch "));
+    assert_non_null(strstr(r.out, "zoom_cam1 10 "));
+    assert_null(strstr(r.out, " deg"));
+    tool_result_free(&r);
 }
 
 /* ---- point and rate ------------------------------------------------------------------ */
@@ -293,6 +367,23 @@ static void test_point(void **state)
     tool_result_free(&r);
     attitude(s, &pitch, &yaw);
     assert_true(labs(pitch - 1000) <= 50 && labs(yaw - 27000) <= 50);
+    /* --json: the attitude in degrees, or with --raw in the GCU's 0.01 deg */
+    r = sim_run_on(s, "point", "--pitch", "-20", "--yaw", "30", "--json", NULL);
+    assert_int_equal(r.status, 0);
+    {
+        json_t *o = parse_line(strchr(r.out, '\n') + 1);
+        assert_true(json_is_real(json_object_get(o, "pitch")) && fabs(num_key(o, "pitch") + 20.0) <= 0.5);
+        json_decref(o);
+    }
+    tool_result_free(&r);
+    r = sim_run_on(s, "point", "--pitch", "-20", "--yaw", "30", "--json", "--raw", NULL);
+    assert_int_equal(r.status, 0);
+    {
+        json_t *o = parse_line(strchr(r.out, '\n') + 1);
+        assert_true(labs((long)int_key(o, "pitch") + 2000) <= 50 && labs((long)int_key(o, "yaw") - 3000) <= 50);
+        json_decref(o);
+    }
+    tool_result_free(&r);
 }
 
 static void test_point_unreachable(void **state)
@@ -322,7 +413,7 @@ static void test_rate(void **state)
     assert_true(labs(yaw0 - yaw1) <= 20);
 }
 
-/* ---- record and replay ----------------------------------------------------------------- */
+/* ---- capture and replay ---------------------------------------------------------------- */
 
 static void temp_name(char *buf, size_t cap, const char *what)
 {
@@ -352,7 +443,7 @@ static void count_directions(const char *jsonl, size_t *host, size_t *gcu, int *
     }
 }
 
-static void test_record_replay(void **state)
+static void test_capture_replay(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
     char file[128];
@@ -360,9 +451,9 @@ static void test_record_replay(void **state)
     int shutter;
     tool_result r;
     temp_name(file, sizeof(file), "duration");
-    r = sim_run_on(s, "record", file, "--duration", "1", NULL);
+    r = sim_run_on(s, "capture", file, "--duration", "1", NULL);
     assert_int_equal(r.status, 0);
-    assert_non_null(strstr(r.out, "recorded 1."));
+    assert_non_null(strstr(r.out, "captured 1."));
     assert_non_null(strstr(r.out, " chunks, "));
     tool_result_free(&r);
     r = run_tool(NULL, "replay", file, "--json", NULL);
@@ -383,7 +474,7 @@ static void test_record_replay(void **state)
     unlink(file);
 }
 
-static void test_record_command(void **state)
+static void test_capture_command(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
     char file[128];
@@ -391,9 +482,9 @@ static void test_record_command(void **state)
     int shutter;
     tool_result r;
     temp_name(file, sizeof(file), "shutter");
-    r = sim_run_on(s, "record", file, "shutter", NULL);
+    r = sim_run_on(s, "capture", file, "shutter", NULL);
     assert_int_equal(r.status, 0);
-    assert_true(strncmp(r.out, "ok\nrecorded ", 12) == 0);
+    assert_true(strncmp(r.out, "ok\ncaptured ", 12) == 0);
     tool_result_free(&r);
     r = run_tool(NULL, "replay", file, "--json", NULL);
     assert_int_equal(r.status, 0);
@@ -513,9 +604,9 @@ static int no_part_files(const char *file)
     return rc == GLOB_NOMATCH;
 }
 
-/* record: an existing FILE is refused without --force, kept when the link fails even with
+/* capture: an existing FILE is refused without --force, kept when the link fails even with
  * --force, and replaced only by a complete capture; a new FILE is not left behind empty. */
-static void test_record_keeps_files(void **state)
+static void test_capture_keeps_files(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
     char file[128], port[8], dead[32];
@@ -524,17 +615,17 @@ static void test_record_keeps_files(void **state)
     snprintf(dead, sizeof(dead), "127.0.0.1:%s", port);
     temp_name(file, sizeof(file), "keep");
     write_text(file, "precious\n");
-    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "record", file, NULL);
+    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "capture", file, NULL);
     assert_failure(&r, 2, "exists; not replaced", "--force", NULL);
     tool_result_free(&r);
     assert_true(has_text(file, "precious\n"));
-    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "record", file, "--force", NULL);
+    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "capture", file, "--force", NULL);
     assert_int_equal(r.status, 3);
     tool_result_free(&r);
     assert_true(has_text(file, "precious\n")); /* not truncated, not deleted */
     assert_true(no_part_files(file));
     unlink(file);
-    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "record", file, NULL);
+    r = run_tool(NULL, "--tcp", dead, "--timeout", "200", "capture", file, NULL);
     assert_int_equal(r.status, 3);
     tool_result_free(&r);
     assert_int_equal(access(file, F_OK), -1); /* nothing left: no byte moved */
@@ -543,7 +634,7 @@ static void test_record_keeps_files(void **state)
     /* a complete capture replaces FILE with --force */
     write_text(file, "precious\n");
     sim_start(s, SIM_TCP, NULL);
-    r = sim_run_on(s, "record", file, "--count", "3", "--force", NULL);
+    r = sim_run_on(s, "capture", file, "--count", "3", "--force", NULL);
     assert_int_equal(r.status, 0);
     tool_result_free(&r);
     assert_false(has_text(file, "precious\n"));
@@ -594,6 +685,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_send_model_support, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_send_osd_follows_gcu, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_sim_reply_to, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_link_forms, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_no_gcu),
         cmocka_unit_test_setup_teardown(test_sim_port_taken, sim_setup_tcp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_monitor_json, sim_setup_tcp, sim_teardown),
@@ -604,9 +696,9 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_point, sim_setup_pty, sim_teardown),
         cmocka_unit_test_setup_teardown(test_point_unreachable, sim_setup_udp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_rate, sim_setup_udp, sim_teardown),
-        cmocka_unit_test_setup_teardown(test_record_replay, sim_setup_tcp, sim_teardown),
-        cmocka_unit_test_setup_teardown(test_record_command, sim_setup_pty, sim_teardown),
-        cmocka_unit_test_setup_teardown(test_record_keeps_files, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_capture_replay, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_capture_command, sim_setup_pty, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_capture_keeps_files, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_sim_link_keeps_paths, sim_setup_none, sim_teardown),
         cmocka_unit_test(test_replay_malformed),
         cmocka_unit_test(test_replay_split_chunks),

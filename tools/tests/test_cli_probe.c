@@ -109,8 +109,8 @@ static json_t *key(const json_t *obj, const char *name)
 static void check_keys(const json_t *p)
 {
     static const char *const top_int[] = {"probe", "first_reply_ms", NULL};
-    static const char *const gimbal_int[] = {"gimbal_code", "hw_version", "fw_version", "protocol", "pod_status",
-                                             "gimbal_mode", "zoom_cam1",  "zoom_cam2",  NULL};
+    static const char *const gimbal_int[] = {"gimbal_code", "protocol", "pod_status", "gimbal_mode", NULL};
+    static const char *const gimbal_real[] = {"hw_version", "fw_version", "zoom_cam1", "zoom_cam2", NULL}; /* units */
     const json_t *g = key(p, "gimbal"), *w = key(p, "reply_rate"), *rt = key(p, "round_trip_ms"), *l = key(p, "link");
     size_t i;
     for (i = 0; top_int[i] != NULL; i++) {
@@ -118,6 +118,9 @@ static void check_keys(const json_t *p)
     }
     for (i = 0; gimbal_int[i] != NULL; i++) {
         assert_true(json_is_integer(key(g, gimbal_int[i])));
+    }
+    for (i = 0; gimbal_real[i] != NULL; i++) {
+        assert_true(json_is_real(key(g, gimbal_real[i])));
     }
     assert_true(json_is_string(key(p, "time_utc")) && strlen(str_key(p, "time_utc")) == 24u);
     assert_true(str_key(p, "time_utc")[10] == 'T' && str_key(p, "time_utc")[23] == 'Z');
@@ -202,8 +205,8 @@ static void check_gimbal(const json_t *p, int code, const char *model, int proto
     const json_t *g = key(p, "gimbal");
     assert_int_equal(int_key(g, "gimbal_code"), code);
     assert_string_equal(str_key(g, "gimbal_model"), model);
-    assert_int_equal(int_key(g, "hw_version"), 31); /* the simulator's 3.1 and 5.0 */
-    assert_int_equal(int_key(g, "fw_version"), 50);
+    assert_true(num_key(g, "hw_version") == 3.1); /* the simulator's 31 and 50: versions in tenths */
+    assert_true(num_key(g, "fw_version") == 5.0);
     assert_int_equal(int_key(g, "protocol"), protocol);
     assert_int_equal(int_key(key(p, "link"), "protocol_sent"), protocol);
     assert_string_equal(str_key(g, "mode_name"), "head_lock");
@@ -268,7 +271,7 @@ static void snapshot(const sim_proc *s, char *buf, size_t cap)
 {
     static const char *const keys[] = {"gimbal_mode", "pod_status",     "cam_pitch",     "cam_yaw",   "zoom_cam1",
                                        "zoom_cam2",   "thermal_status", "camera_status", "time_zone", NULL};
-    tool_result r = sim_run_on(s, "--protocol", "2", "monitor", "--json", "--count", "1", NULL);
+    tool_result r = sim_run_on(s, "--protocol", "2", "monitor", "--json", "--raw", "--count", "1", NULL);
     json_t *obj;
     size_t i, n = 0;
     assert_int_equal(r.status, 0);
@@ -411,7 +414,7 @@ static void test_probe_disagreement_rtt(void **state)
 
 static void attitude(const sim_proc *s, long *pitch, long *yaw, long *mode)
 {
-    tool_result r = sim_run_on(s, "monitor", "--json", "--count", "1", NULL);
+    tool_result r = sim_run_on(s, "monitor", "--json", "--raw", "--count", "1", NULL);
     json_t *obj;
     assert_int_equal(r.status, 0);
     obj = parse_line(r.out);

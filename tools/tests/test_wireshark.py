@@ -3,10 +3,11 @@
 Run by ctest with Debian's interpreter:
     /usr/bin/python3 test_wireshark.py XFGCU_EXE tools/wireshark/xfgcu.lua
 
-- the simulator on UDP, TCP and a pty; `xfgcu record --pcap` of each (a command included, the
+- the simulator on UDP, TCP and a pty; `xfgcu capture --pcap` of each (a command included, the
   TCP one in protocol V0.2); tshark with the dissector over each pcap; every field of every
-  packet compared with `xfgcu decode --json` of the same pcap, both ways (no field missing on
-  either side); `xfgcu replay` of the pcap gives the same packets;
+  packet compared with `xfgcu decode --json --raw` of the same pcap (the dissector shows wire
+  integers), both ways (no field missing on either side); `xfgcu replay` of the pcap gives the
+  same packets;
 - a made-up TCP capture on port 2332: a packet split over two segments, two packets in one;
 - expert info on a bad CRC, a bad length and a packet cut short (UDP port 2337);
 - replay's rejections of malformed captures (one line `xfgcu: FILE:LINE: reason`, exit 2), the
@@ -166,15 +167,15 @@ class RecordedPcaps(unittest.TestCase):
     def check_link(self, link, extra_sim=(), extra_cli=()):
         pcap = os.path.join(TMP, link + ".pcap")
         with Sim(link, *extra_sim) as sim:
-            run(*sim.args, *extra_cli, "record", "--pcap", pcap, "--count", "6", "zoom-to", "--rate", "5.5")
-        packets = [json.loads(line) for line in run("decode", "--file", pcap, "--json").stdout.splitlines()]
+            run(*sim.args, *extra_cli, "capture", "--pcap", pcap, "--count", "6", "zoom-to", "--factor", "5.5")
+        packets = [json.loads(line) for line in run("decode", "--file", pcap, "--json", "--raw").stdout.splitlines()]
         trees = xfgcu_trees(tshark_json(pcap))
         self.assertGreaterEqual(len(packets), 12)
         self.assertEqual(len(trees), len(packets), "tshark and decode count different packets")
         for pkt, tree in zip(packets, trees):
             compare(self, pkt, tree)
         self.assertTrue(any("command" in p for p in packets) and any("feedback" in p for p in packets))
-        replayed = [json.loads(line) for line in run("replay", pcap, "--json").stdout.splitlines()]
+        replayed = [json.loads(line) for line in run("replay", pcap, "--json", "--raw").stdout.splitlines()]
         self.assertEqual(replayed, packets)
         return packets
 
@@ -189,11 +190,11 @@ class RecordedPcaps(unittest.TestCase):
     def test_pty(self):
         self.check_link("pty")
 
-    def test_record_refuses_existing_file(self):
+    def test_capture_refuses_existing_file(self):
         pcap = os.path.join(TMP, "exists.pcap")
         with open(pcap, "w") as f:
             f.write("keep")
-        r = run("--tcp", "127.0.0.1:1", "--timeout", "200", "record", "--pcap", pcap, check=False)
+        r = run("--tcp", "127.0.0.1:1", "--timeout", "200", "capture", "--pcap", pcap, check=False)
         self.assertEqual(r.returncode, 2)
         with open(pcap) as f:
             self.assertEqual(f.read(), "keep")
@@ -201,7 +202,7 @@ class RecordedPcaps(unittest.TestCase):
 
 class MadeUpPcaps(unittest.TestCase):
     def test_tcp_reassembly(self):
-        a, b, c = encode("zoom-to", "--rate", "5.5"), encode("null"), encode("shutter")
+        a, b, c = encode("zoom-to", "--factor", "5.5"), encode("null"), encode("shutter")
         host, gcu = [10, 0, 0, 1], [10, 0, 0, 2]
         pcap = os.path.join(TMP, "reassembly.pcap")
         segs = [a[:30], a[30:] + b + c]  # one packet split over two segments, then two in one
@@ -214,7 +215,7 @@ class MadeUpPcaps(unittest.TestCase):
         trees = xfgcu_trees(frames)
         self.assertEqual(len(trees), 3)
         hexes = [x.hex() for x in (a, b, c)]
-        packets = [json.loads(run("decode", "--json", h).stdout) for h in hexes]
+        packets = [json.loads(run("decode", "--json", "--raw", h).stdout) for h in hexes]
         for pkt, tree in zip(packets, trees):
             compare(self, pkt, tree)
         # the three packets end in the second frame
@@ -243,7 +244,7 @@ class MadeUpPcaps(unittest.TestCase):
         # TCP and a serial capture
         pkt = encode("shutter")
         data = bytes([0xA8, 0xE5, 0x48, 0x00]) + pkt
-        want = json.loads(run("decode", "--json", pkt.hex()).stdout)
+        want = json.loads(run("decode", "--json", "--raw", pkt.hex()).stdout)
         host, gcu = [10, 0, 0, 1], [10, 0, 0, 2]
         cases = [
             ("false_udp.pcap", 101, [ip_packet(17, host, gcu, 2338, 2337, data)]),
@@ -260,7 +261,7 @@ class MadeUpPcaps(unittest.TestCase):
     def every_field(self, direction, version):
         """A packet whose every field and reserved byte holds its own value, as large as it takes."""
         blank = run("encode", "--json", "-", stdin=json.dumps({"direction": direction, "version": version})).stdout
-        base = json.loads(run("decode", "--json", blank.strip()).stdout)
+        base = json.loads(run("decode", "--json", "--raw", blank.strip()).stdout)
         obj = {"direction": direction, "version": version}
         names = [k for k in base if k not in EXTRAS] + ["reserved_main", "reserved_sub"]
         for i, name in enumerate(names):
@@ -272,12 +273,12 @@ class MadeUpPcaps(unittest.TestCase):
                 tries = [-big, -mid, -(i + 2), 0x80000000 + i, 0x8000 + i, 0x80 + i]
             for value in tries:
                 probe = dict(obj, **{name: value})
-                if run("encode", "--json", "-", stdin=json.dumps(probe), check=False).returncode == 0:
+                if run("encode", "--json", "--raw", "-", stdin=json.dumps(probe), check=False).returncode == 0:
                     obj = probe
                     break
             else:
                 self.fail("no value of %s encodes" % name)
-        return bytes.fromhex(run("encode", "--json", "-", stdin=json.dumps(obj)).stdout.strip().replace(" ", ""))
+        return bytes.fromhex(run("encode", "--json", "--raw", "-", stdin=json.dumps(obj)).stdout.strip().replace(" ", ""))
 
     def test_every_field(self):
         packets = [self.every_field(d, v) for d in ("host", "gcu") for v in (1, 2)]
@@ -287,7 +288,7 @@ class MadeUpPcaps(unittest.TestCase):
         trees = xfgcu_trees(tshark_json(pcap))
         self.assertEqual(len(trees), len(packets))
         for raw, tree in zip(packets, trees):
-            pkt = json.loads(run("decode", "--json", raw.hex()).stdout)
+            pkt = json.loads(run("decode", "--json", "--raw", raw.hex()).stdout)
             self.assertGreater(sum(1 for k, v in pkt.items() if k not in EXTRAS and v not in (0, "")), 20)
             compare(self, pkt, tree)
 
@@ -300,9 +301,9 @@ class MadeUpPcaps(unittest.TestCase):
         ng = os.path.join(TMP, "eth.pcapng")
         subprocess.run(["editcap", "-F", "pcapng", pcap, ng], check=True, capture_output=True)
         for f in (pcap, ng):
-            out = [json.loads(x) for x in run("replay", f, "--json").stdout.splitlines()]
+            out = [json.loads(x) for x in run("replay", f, "--json", "--raw").stdout.splitlines()]
             self.assertEqual([o["order_name"] for o in out], ["shutter", "null"])
-            self.assertEqual(run("decode", "--json", "--file", f).stdout, run("replay", f, "--json").stdout)
+            self.assertEqual(run("decode", "--json", "--raw", "--file", f).stdout, run("replay", f, "--json", "--raw").stdout)
             self.assertEqual(len(xfgcu_trees(tshark_json(f))), 2)
 
     def test_serial_user0(self):
@@ -311,8 +312,8 @@ class MadeUpPcaps(unittest.TestCase):
         write_pcap(pcap, 147, [b">" + pkt[:5], b">" + pkt[5:] + pkt[:1], b">" + pkt[1:]])
         trees = xfgcu_trees(tshark_json(pcap))
         self.assertEqual(len(trees), 2)
-        compare(self, json.loads(run("decode", "--json", pkt.hex()).stdout), trees[0])
-        out = run("replay", pcap, "--json").stdout.splitlines()
+        compare(self, json.loads(run("decode", "--json", "--raw", pkt.hex()).stdout), trees[0])
+        out = run("replay", pcap, "--json", "--raw").stdout.splitlines()
         self.assertEqual(len(out), 2)
 
 
@@ -354,25 +355,25 @@ class CaptureFiles(unittest.TestCase):
     def test_start_time(self):
         pkt = run("encode", "null").stdout.strip()
         path = self.write("start.cap", "# xfgcu capture 1\n# start 2026-11-26T10:00:00.123Z\n1.500 > %s\n" % pkt)
-        obj = json.loads(run("replay", path, "--json").stdout)
+        obj = json.loads(run("replay", path, "--json", "--raw").stdout)
         self.assertEqual(obj["t"], 1.5)
         self.assertEqual(obj["time"], "2026-11-26T10:00:01.623Z")
         old = self.write("old.cap", "# xfgcu capture 1\n0.000 > %s\n" % pkt)  # without a start: still read
-        self.assertNotIn("time", json.loads(run("replay", old, "--json").stdout))
+        self.assertNotIn("time", json.loads(run("replay", old, "--json", "--raw").stdout))
 
     def test_decode_logs(self):
         p, q = run("encode", "shutter").stdout.strip(), run("encode", "null").stdout.strip()
         half = (len(p) // 6) * 3  # on a byte boundary: "A8 E5 "
         log = ("12.345 %s\n[2026-11-26 10:00:00.123] %s\n2026-11-26T10:00:01.5Z %s\n[7.25] %s\n%s\n" %
                (p, q, p[:half], p[half:], q))
-        out = [json.loads(x) for x in run("decode", "--json", stdin=log).stdout.splitlines()]
+        out = [json.loads(x) for x in run("decode", "--json", "--raw", stdin=log).stdout.splitlines()]
         self.assertEqual([o.get("t", o.get("time")) for o in out],
                          [12.345, "2026-11-26T10:00:00.123", 7.25, 7.25])
         self.assertEqual([o["order_name"] for o in out], ["shutter", "null", "shutter", "null"])
         path = self.write("log.txt", log)
-        self.assertEqual(run("decode", "--json", "--file", path).stdout.count("\n"), 4)
+        self.assertEqual(run("decode", "--json", "--raw", "--file", path).stdout.count("\n"), 4)
         cap = self.write("t.cap", "# xfgcu capture 1\n0.250 > %s\n" % p)
-        self.assertEqual(json.loads(run("decode", "--json", stdin=open(cap).read()).stdout)["t"], 0.25)
+        self.assertEqual(json.loads(run("decode", "--json", "--raw", stdin=open(cap).read()).stdout)["t"], 0.25)
         r = run("decode", stdin="12.345 %s zz\n" % p, check=False)
         self.assertEqual(r.returncode, 2)
         self.assertIn("line 1 column", r.stderr)

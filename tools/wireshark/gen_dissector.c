@@ -6,7 +6,7 @@
  *
  * The template holds the dissector's logic; the line "-- @TABLES@" in it is
  * replaced by Lua tables built here from what the program itself uses: the
- * field rows of tools/xfgcu/fields.c (names, offsets, sizes, signedness, the
+ * codec's field table (include/xfgcu/xf_fields.h: names, offsets, sizes, signedness, the
  * version that brought them), the codec's order table (names, versions,
  * flags, parameter layouts), mode and model names, the header bytes, ports
  * and length limits. So the dissector cannot name, place or size a field
@@ -18,7 +18,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fields.h"
 #include "xfgcu/posix/xf_posix.h" /* the ports (macros only: nothing of the links is linked) */
 #include "xfgcu/xfgcu.h"
 
@@ -27,24 +26,15 @@
 static void emit_fields(FILE *out, const char *var, xf_direction dir)
 {
     size_t i, n;
-    const field_desc *rows = fields_of(dir, &n);
+    const xf_wire_field *rows = xf_wire_fields(xf_wire_frames(dir), &n);
     fprintf(out, "local %s = {\n", var);
     for (i = 0; i < n; i++) {
-        const field_desc *f = &rows[i];
+        const xf_wire_field *f = &rows[i];
         fprintf(out, "    {name = \"%s\", offset = %u, size = %u, signed = %s, since = %u, reserved = %s, hex = %s},\n",
-                f->name, (unsigned)f->offset, (unsigned)f->size, f->is_signed ? "true" : "false", (unsigned)f->since,
-                f->unit == FU_RESERVED ? "true" : "false", f->unit == FU_BYTE_HEX ? "true" : "false");
+                f->name, (unsigned)f->offset, (unsigned)f->width, f->is_signed ? "true" : "false", (unsigned)f->since,
+                f->kind == XF_WIRE_RESERVED ? "true" : "false", f->kind == XF_WIRE_BYTE ? "true" : "false");
     }
     fputs("}\n\n", out);
-}
-
-/* Signed or not, as the codec stores the member: a -1 set survives only in a signed member. */
-static int member_signed(xf_field f)
-{
-    xf_command c;
-    memset(&c, 0, sizeof(c));
-    xf_command_set(&c, f, -1);
-    return xf_command_get(&c, f) < 0;
 }
 
 static void emit_orders(FILE *out)
@@ -59,8 +49,8 @@ static void emit_orders(FILE *out)
                 xf_order_name(o->order), (unsigned)o->since, (unsigned)o->flags);
         for (k = 0; k < o->nfields; k++) {
             xf_field f = (xf_field)o->fields[k];
-            fprintf(out, "%s{name = \"%s\", size = %u, signed = %s}", k > 0u ? ", " : "", xf_field_name(f),
-                    (unsigned)xf_field_size(f), member_signed(f) ? "true" : "false");
+            fprintf(out, "%s{name = \"%s\", size = %u, signed = %s}", k > 0u ? ", " : "", xf_wire_param(f)->name,
+                    (unsigned)xf_wire_param(f)->width, xf_wire_param(f)->is_signed ? "true" : "false");
         }
         fputs("}},\n", out);
     }

@@ -4,7 +4,7 @@
 --
 --   UDP ports 2337 and 2338, TCP port 2332 (packets split over segments and several packets in one
 --   segment are reassembled), a heuristic dissector for UDP and TCP on other ports, and serial
---   captures written by `xfgcu record --pcap` (LINKTYPE_USER0: a direction byte '>' or '<', then
+--   captures written by `xfgcu capture --pcap` (LINKTYPE_USER0: a direction byte '>' or '<', then
 --   the bytes as the link moved them; reassembled per direction).
 --
 -- Fields: xfgcu.<name> for every field of the frames, under the names of `xfgcu decode --json`,

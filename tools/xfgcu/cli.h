@@ -1,7 +1,9 @@
 /*
- * cli.h - what the modules of the xfgcu program share: exit codes, the
- * one-line error reporter, number parsing, option parsing (getopt_long),
- * the options that come before COMMAND, and the entry point of each command.
+ * cli.h - what the modules of the xfgcu program share: exit codes, the one-line error reporter
+ * (report.c), option parsing (getopt_long, args.c), the general and link options (linkopts.c),
+ * and the entry point of each command. The protocol as text and JSON is the xfgcu::text
+ * library's (tools/text): the program parses its command line and hands the layer named
+ * arguments, and prints the layer's messages with its own hints.
  *
  * Contract: docs/cli.md. Every failure prints exactly one line
  * "xfgcu: ..." to stderr and maps to one of the exit codes below.
@@ -13,6 +15,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "fieldtext.h"
+#include "text_err.h"
 #include "xfgcu/xfgcu.h"
 
 #define XFGCU_EXIT_OK     0 /**< success */
@@ -40,14 +44,13 @@ int cli_report(int code, const char *where, const char *fmt, ...) CLI_PRINTF(3, 
 /** "xfgcu: note: <message>" (a warning, not a failure). */
 #define cli_note(...) ((void)cli_report(XFGCU_EXIT_OK, "note", __VA_ARGS__))
 
+/** The notes of the text layer's context, each as a note line. */
+void cli_text_notes(const text_err *e);
 /**
- * Parse a whole string as an integer: decimal, or hex with a 0x prefix,
- * optional sign. Leading zeros are decimal (never octal).
- * @return 0, or -1 if @p s is not an integer or overflows.
+ * The text layer's failure: its notes, then its message as the one line, with
+ * " (see 'xfgcu HINT --help')" when @p hint is not NULL. @return XFGCU_EXIT_USAGE
  */
-int cli_parse_int(const char *s, long long *out);
-/** Parse a whole string as a finite decimal number. @return 0 or -1. */
-int cli_parse_real(const char *s, double *out);
+int cli_text_fail(const text_err *e, const char *hint);
 
 /* ---- options ----------------------------------------------------------------
  * Every option loop is getopt_long() over a `struct option` table whose `val`
@@ -114,12 +117,16 @@ int cli_value_long(const cli_args *a, long lo, long hi, const char *what, long *
 int cli_value_text(const cli_args *a, const char *what, const char **out);
 /** --protocol: 1 or 2. */
 int cli_value_protocol(const cli_args *a, uint8_t *version);
+/** --baud: 115200, 250000, 500000 or 1000000 (xf_serial_baud_ok()). */
+int cli_value_baud(const cli_args *a, long *baud, int *given);
 
-/** The options before COMMAND (cli.md "Link options"), already validated. */
+/** The options before COMMAND (cli.md "Link options" and "General options"), already validated. */
 typedef struct cli_link {
     const char *serial;                         /**< --serial PATH, or NULL */
-    const char *udp;                            /**< --udp HOST, or NULL */
+    const char *udp;                            /**< --udp HOST[:PORT], or NULL */
     const char *tcp;                            /**< --tcp HOST[:PORT], or NULL */
+    const char *spec;                           /**< --link SPEC, or NULL */
+    const char *env_spec;                       /**< XFGCU_LINK, or NULL: the link when no option names one */
     long baud;                                  /**< --baud, default 115200 */
     long gcu_port;                              /**< --gcu-port, 0 = the link's default */
     long local_port;                            /**< --local-port, default 2338; 0 = any free port */
@@ -128,12 +135,10 @@ typedef struct cli_link {
     long timeout_ms;                            /**< --timeout, default 1000 */
     long reorder_ms;                            /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
     int trace;                                  /**< --trace: every packet on stderr, one line each */
+    text_view view;                             /**< --raw: TEXT_RAW; TEXT_ENGINEERING by default */
     int has_baud, has_gcu_port, has_local_port; /**< given: for options that only one kind of link takes */
     unsigned given;                             /**< a bit per link option given: twice is a usage error */
 } cli_link;
-
-/** Options that contradict each other (two links, --baud with a network link...): the usage error, or OK. */
-int cli_check_link_options(const cli_link *l);
 
 /** A command's entry point: argv[0] is the command's name. Returns an exit code. */
 typedef int (*cli_run_fn)(const cli_link *link, int argc, char **argv);
@@ -146,7 +151,7 @@ int cmd_rate(const cli_link *link, int argc, char **argv);
 int cmd_monitor(const cli_link *link, int argc, char **argv);
 int cmd_sim(const cli_link *link, int argc, char **argv);
 int cmd_demo(const cli_link *link, int argc, char **argv);
-int cmd_record(const cli_link *link, int argc, char **argv);
+int cmd_capture(const cli_link *link, int argc, char **argv);
 int cmd_replay(const cli_link *link, int argc, char **argv);
 int cmd_probe(const cli_link *link, int argc, char **argv);
 void help_decode(FILE *out);
@@ -157,10 +162,10 @@ void help_rate(FILE *out);
 void help_monitor(FILE *out);
 void help_sim(FILE *out);
 void help_demo(FILE *out);
-void help_record(FILE *out);
+void help_capture(FILE *out);
 void help_replay(FILE *out);
 void help_probe(FILE *out);
-/** The link options, as `xfgcu --help` lists them (for the online commands' help). */
+/** The link options, as `xfgcu --help` lists them (for the online commands' help); linkopts.c. */
 void help_link_options(FILE *out);
 
 #endif /* XFGCU_CLI_H */

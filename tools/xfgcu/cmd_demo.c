@@ -38,9 +38,11 @@ void help_demo(FILE *out)
 
 static void print_intro(const demo *d)
 {
+    char model[64];
+    fieldtext_model(d->sim.cfg.gimbal_code, model, sizeof(model));
     printf("xfgcu demo: a simulated gimbal and the xfgcu client talk over a real TCP link on this machine.\n\n");
-    printf("  simulated GCU  %s on tcp 127.0.0.1:%u (xfgcu's simulator, protocol V0.1)\n",
-           xf_gimbal_model(d->sim.cfg.gimbal_code), (unsigned)d->gcu_link.port);
+    printf("  simulated GCU  %s on tcp 127.0.0.1:%u (xfgcu's simulator, protocol V0.1)\n", model,
+           (unsigned)d->gcu_link.port);
     printf("  client         %u packets per second, protocol version %u, command timeout %u ms\n",
            (unsigned)d->client.cfg.rate_hz, (unsigned)d->client.cfg.protocol_version,
            (unsigned)d->client.cfg.command_timeout_ms);
@@ -62,12 +64,6 @@ static double distance_m(const xf_telemetry *t)
     float m = 0.0f;
     (void)xf_distance_m(t->target_distance, &m);
     return (double)m;
-}
-
-static const char *model_name(const xf_telemetry *t)
-{
-    const char *m = xf_gimbal_model(t->gimbal_code);
-    return (m != NULL) ? m : "unknown model";
 }
 
 /* ---- conditions ------------------------------------------------------------------------ */
@@ -96,14 +92,17 @@ static int has_distance(const demo *d)
 static void step_connect(demo *d)
 {
     const xf_telemetry *t = demo_tele(d);
+    char model[64], hw[8], fw[8];
     long ms;
     demo_step(d, "connect");
     demo_sent("null packets (order 0x00, no command) until the GCU answers");
     ms = demo_pump_until(d, 2000, link_up);
     if (demo_check(d, ms >= 0, "no answer from the simulated GCU within 2 s")) {
-        demo_got("first reply after %ld ms: %s, hardware %u, firmware %u, mode %s, pitch %.2f yaw %.2f deg", ms,
-                 model_name(t), t->hw_version, t->fw_version, xf_mode_name(t->gimbal_mode), deg(t->cam_pitch),
-                 deg(t->cam_yaw));
+        fieldtext_model(t->gimbal_code, model, sizeof(model)); /* the one way models and versions are shown */
+        fieldtext_version(t->hw_version, hw, sizeof(hw));
+        fieldtext_version(t->fw_version, fw, sizeof(fw));
+        demo_got("first reply after %ld ms: %s, hardware %s, firmware %s, mode %s, pitch %.2f yaw %.2f deg", ms, model,
+                 hw, fw, xf_mode_name(t->gimbal_mode), deg(t->cam_pitch), deg(t->cam_yaw));
     }
 }
 

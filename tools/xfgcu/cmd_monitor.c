@@ -1,5 +1,5 @@
 /*
- * cmd_monitor.c - `xfgcu [LINK] monitor [--json] [--count N] [--duration S] [--wait S]`.
+ * cmd_monitor.c - `xfgcu [LINK] monitor [--json] [--raw] [--count N] [--duration S] [--wait S]`.
  *
  * --json: one object per GCU packet received (the keys of decode --json,
  * after time_mono and time_utc), and one per change of the link's state once
@@ -32,7 +32,7 @@
 
 void help_monitor(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] monitor [--json] [--count N] [--duration S] [--wait S]\n\n"
+    fputs("usage: xfgcu [LINK OPTIONS] monitor [--json] [--raw] [--count N] [--duration S] [--wait S]\n\n"
           "Live telemetry while the link is kept up with null packets.\n"
           "On a terminal: a screen redrawn in place (mode, attitude, relative angles, rates, zoom,\n"
           "distance, target position, status flags, link state, reply rate, missing replies,\n"
@@ -41,6 +41,7 @@ void help_monitor(FILE *out)
           "  --json        one JSON object per line: each GCU packet received, with time_mono and\n"
           "                time_utc then the keys of `xfgcu decode --json`, and each change of the\n"
           "                link once it was up, {\"event\": \"link\", \"state\": \"stale\"|\"down\"|\"up\", ...}\n"
+          "  --raw         the fields as wire integers, not engineering units (JSON and screen)\n"
           "  --count N     stop after N packets from the GCU (1..1000000000)\n"
           "  --duration S  stop after S seconds (0.1..31536000)\n"
           "  --wait S      wait up to S seconds (0..1000000) for the GCU to come up: the link to\n"
@@ -56,6 +57,7 @@ void help_monitor(FILE *out)
 typedef struct monitor {
     online *o;
     int json, help, tty;
+    text_view view; /* --raw: wire integers */
     long count;
     double duration, wait_s;
     int has_count, has_duration, has_wait;
@@ -96,9 +98,9 @@ static int take_arg(monitor *m, const cli_args *a, int id)
 /* ---- callbacks ------------------------------------------------------------------------ */
 
 /* --json: the packet's object of decode --json, after the two times. */
-static void json_packet(const uint8_t *data, size_t len)
+static void json_packet(const uint8_t *data, size_t len, text_view view)
 {
-    json_t *pkt = jsonpkt_from_wire(data, len, XF_DIR_GCU, POD_READ_AUTO);
+    json_t *pkt = jsonpkt_from_wire(data, len, XF_DIR_GCU, POD_READ_AUTO, view);
     json_t *obj = cli_json_times(json_object());
     if (pkt == NULL || obj == NULL || json_object_update(obj, pkt) != 0) {
         json_decref(obj);
@@ -117,7 +119,7 @@ static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t l
     }
     m->received++;
     if (m->json) {
-        json_packet(data, len);
+        json_packet(data, len, m->view);
     }
 }
 
@@ -189,9 +191,13 @@ static uint16_t pod_flags(const xf_telemetry *t)
     return xf_pod_flags(t->pod_status, xf_pod_status_order(t->pod_status));
 }
 
-static void distance_text(const xf_telemetry *t, const xf_telemetry_units *u, char *buf, size_t cap)
+static void distance_text(const xf_telemetry *t, const xf_telemetry_units *u, text_view view, char *buf, size_t cap)
 {
-    if (u->distance_valid && (pod_flags(t) & XF_POD_TARGET_VALID) != 0u) {
+    if (view == TEXT_RAW) {
+        snprintf(buf, cap, "target_distance %ld, target_latitude %ld target_longitude %ld target_altitude %ld",
+                 (long)t->target_distance, (long)t->target_latitude, (long)t->target_longitude,
+                 (long)t->target_altitude);
+    } else if (u->distance_valid && (pod_flags(t) & XF_POD_TARGET_VALID) != 0u) {
         snprintf(buf, cap, "%.1f m, target lat %.7f lon %.7f alt %.1f m", (double)u->target_distance_m,
                  xf_deg7(t->target_latitude), xf_deg7(t->target_longitude), (double)t->target_altitude / 1000.0);
     } else {
@@ -225,9 +231,11 @@ static void row(const char *label, const char *age, const char *fmt, ...)
 
 static void draw_gimbal(const xf_telemetry *t, const ages *a)
 {
-    const char *model = xf_gimbal_model(t->gimbal_code);
-    row("gimbal", a->sub, "%s (code %u), hardware %u, firmware %u, protocol %u", model ? model : "unknown model",
-        t->gimbal_code, t->hw_version, t->fw_version, t->version);
+    char model[64], hw[8], fw[8];
+    fieldtext_model(t->gimbal_code, model, sizeof(model));
+    fieldtext_version(t->hw_version, hw, sizeof(hw));
+    fieldtext_version(t->fw_version, fw, sizeof(fw));
+    row("gimbal", a->sub, "%s, hardware %s, firmware %s, protocol %u", model, hw, fw, t->version);
     row("error code", a->sub, "0x%04X", t->error_code);
     if (t->version >= XF_PROTOCOL_V2) {
         row("thermal", a->sub, "status 0x%02X", t->thermal_status);
@@ -238,16 +246,28 @@ static void draw_gimbal(const xf_telemetry *t, const ages *a)
     }
 }
 
-static void draw_main(const xf_telemetry *t, const xf_telemetry_units *u, const ages *a)
+/* The angles and rates as wire integers (--raw). */
+static void draw_main_raw(const xf_telemetry *t, const ages *a)
+{
+    row("attitude", a->main, "cam_roll %6d cam_pitch %6d cam_yaw %6u", t->cam_roll, t->cam_pitch, (unsigned)t->cam_yaw);
+    row("relative", a->main, "rel_angle_x %6d y %6d z %6d", t->rel_angle_x, t->rel_angle_y, t->rel_angle_z);
+    row("rates", a->main, "rate_x %6d rate_y %6d rate_z %6d", t->rate_x, t->rate_y, t->rate_z);
+}
+
+static void draw_main(const xf_telemetry *t, const xf_telemetry_units *u, const ages *a, text_view view)
 {
     const char *mode = xf_mode_name(t->gimbal_mode);
     row("mode", a->main, "%s (0x%02X)", mode ? mode : "unknown", t->gimbal_mode);
-    row("attitude", a->main, "roll %8.2f   pitch %8.2f   yaw %8.2f deg", (double)u->cam_roll_deg,
-        (double)u->cam_pitch_deg, (double)u->cam_yaw_deg);
-    row("relative", a->main, "x    %8.2f   y     %8.2f   z   %8.2f deg", (double)u->rel_x_deg, /* to the carrier */
-        (double)u->rel_y_deg, (double)u->rel_z_deg);
-    row("rates", a->main, "x    %8.2f   y     %8.2f   z   %8.2f deg/s", (double)u->rate_x_dps, (double)u->rate_y_dps,
-        (double)u->rate_z_dps);
+    if (view == TEXT_RAW) {
+        draw_main_raw(t, a);
+    } else {
+        row("attitude", a->main, "roll %8.2f   pitch %8.2f   yaw %8.2f deg", (double)u->cam_roll_deg,
+            (double)u->cam_pitch_deg, (double)u->cam_yaw_deg);
+        row("relative", a->main, "x    %8.2f   y     %8.2f   z   %8.2f deg", (double)u->rel_x_deg, /* to the carrier */
+            (double)u->rel_y_deg, (double)u->rel_z_deg);
+        row("rates", a->main, "x    %8.2f   y     %8.2f   z   %8.2f deg/s", (double)u->rate_x_dps,
+            (double)u->rate_y_dps, (double)u->rate_z_dps);
+    }
     row("tracking", a->main, "%s, target offset x %d y %d", yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "on", "off"),
         t->target_offset_x, t->target_offset_y);
     row("flags", a->main, "ranging %s, night vision %s, lighting %s",
@@ -265,7 +285,7 @@ static void draw_screen(const monitor *m)
     char dist[160], rate[64];
     ages a;
     (void)xf_telemetry_convert(t, &u);
-    distance_text(t, &u, dist, sizeof(dist));
+    distance_text(t, &u, m->view, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     get_ages(m, &a);
     printf("\033[H\033[2J"); /* cursor home, clear */
@@ -275,8 +295,12 @@ static void draw_screen(const monitor *m)
                                              "as old as their age says");
     printf("%-70s %s\n", "", "age");
     draw_gimbal(t, &a);
-    draw_main(t, &u, &a);
-    row("zoom", a.sub, "camera 1 %.1fx   camera 2 %.1fx", (double)u.zoom_cam1, (double)u.zoom_cam2);
+    draw_main(t, &u, &a, m->view);
+    if (m->view == TEXT_RAW) {
+        row("zoom", a.sub, "zoom_cam1 %u   zoom_cam2 %u", (unsigned)t->zoom_cam1, (unsigned)t->zoom_cam2);
+    } else {
+        row("zoom", a.sub, "camera 1 %.1fx   camera 2 %.1fx", (double)u.zoom_cam1, (double)u.zoom_cam2);
+    }
     row("distance", a.sub, "%s", dist);
     row("link", a.main, "%s, %s, %u sent, %u received", xf_link_state_name(h->link), rate, (unsigned)h->packets_sent,
         (unsigned)h->replies);
@@ -294,9 +318,18 @@ static void print_line(const monitor *m, uint32_t elapsed)
     char dist[160], rate[64];
     ages a;
     (void)xf_telemetry_convert(t, &u);
-    distance_text(t, &u, dist, sizeof(dist));
+    distance_text(t, &u, m->view, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     get_ages(m, &a);
+    if (m->view == TEXT_RAW) {
+        printf("%7.1f s  link %s, %s  mode %s  cam_roll %d cam_pitch %d cam_yaw %u%s (age %s)  zoom_cam1 %u "
+               "zoom_cam2 %u  %s (age %s)\n",
+               cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", t->cam_roll,
+               t->cam_pitch, (unsigned)t->cam_yaw, yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "  tracking", ""), a.main,
+               (unsigned)t->zoom_cam1, (unsigned)t->zoom_cam2, dist, a.sub);
+        fflush(stdout);
+        return;
+    }
     printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg%s (age %s)  zoom %.1fx/%.1fx  %s "
            "(age %s)\n",
            cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", (double)u.cam_roll_deg,
@@ -365,6 +398,7 @@ int cmd_monitor(const cli_link *link, int argc, char **argv)
         }
         return rc;
     }
+    m.view = link->view; /* --raw: taken anywhere on the line */
     m.tty = isatty(fileno(stdout));
     memset(&hooks, 0, sizeof(hooks));
     hooks.on_bytes = on_bytes;

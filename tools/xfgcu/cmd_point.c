@@ -113,9 +113,9 @@ static void motion_json(const online *o, const point_args *a, const char *status
     json_object_set_new(obj, "target_pitch", json_real(a->pitch));
     json_object_set_new(obj, "target_yaw", json_real(a->yaw));
     json_object_set_new(obj, "tolerance_deg", json_real(TOLERANCE_DEG));
-    json_object_set_new(obj, "roll", cli_json_cdeg(t->cam_roll));
-    json_object_set_new(obj, "pitch", cli_json_cdeg(t->cam_pitch));
-    json_object_set_new(obj, "yaw", cli_json_cdeg(t->cam_yaw));
+    json_object_set_new(obj, "roll", online_field_json(o, "cam_roll", t->cam_roll));
+    json_object_set_new(obj, "pitch", online_field_json(o, "cam_pitch", t->cam_pitch));
+    json_object_set_new(obj, "yaw", online_field_json(o, "cam_yaw", t->cam_yaw));
     json_object_set_new(
         obj, "attitude_age_ms",
         json_integer((json_int_t)xf_ms_since(xf_posix_now_ms(), xf_client_health(&o->client)->last_rx_ms)));

@@ -30,6 +30,7 @@
 #include "cmdargs.h"
 #include "hexin.h"
 #include "jsonpkt.h"
+#include "table.h"
 #include "online.h"
 
 #define PROBE_MAX     40     /* orders in the report: planned, sent or not */
@@ -86,6 +87,7 @@ typedef struct probe_leg {
 typedef struct probe {
     online *o;
     int json, move, help, has_window;
+    text_view view; /* --raw: fields as wire integers */
     double window_s;
     struct timespec wall0, mono0; /* when the probe started */
     uint32_t start_ms;
@@ -580,22 +582,20 @@ static const char *pod_order_text(xf_pod_order order)
     return order == XF_POD_ORDER_LE ? "le" : order == XF_POD_ORDER_BE ? "be" : "undecided";
 }
 
-/* The parameters as sent: "cameras=0x03 zoom=-10" (osd with the value of the GCU's version). */
+/* The parameters as sent, as decode's table shows them: "cameras=0x01 zoom=-10 (1.0x)" (osd with
+ * the value of the GCU's version). */
 static void params_text(const probe *p, const probe_item *it, char *buf, size_t cap)
 {
     const xf_order_info *info = xf_order_lookup(it->cmd.order);
     xf_command sent = it->cmd;
     size_t i, n = 0;
+    char item[64];
     buf[0] = '\0';
     cmdargs_for_version(&sent, p->t0.version);
     for (i = 0; info != NULL && i < info->nfields && n < cap; i++) {
         xf_field f = (xf_field)info->fields[i];
-        long v = (long)xf_command_get(&sent, f);
-        if (f == XF_F_CAMERAS) {
-            n += (size_t)snprintf(buf + n, cap - n, "%scameras=0x%02lX", n ? " " : "", (unsigned long)v);
-        } else {
-            n += (size_t)snprintf(buf + n, cap - n, "%s%s=%ld", n ? " " : "", xf_field_name(f), v);
-        }
+        table_member_text(f, xf_command_get(&sent, f), p->t0.version, p->view, item, sizeof(item));
+        n += (size_t)snprintf(buf + n, cap - n, "%s%s", n ? " " : "", item);
     }
 }
 
@@ -625,11 +625,14 @@ static void wall_text(const struct timespec *ts, char *buf, size_t cap) { jsonpk
 static void print_gimbal(const probe *p)
 {
     const xf_telemetry *t = xf_client_telemetry(&p->o->client);
-    const char *model = xf_gimbal_model(t->gimbal_code), *mode = xf_mode_name(p->t0.gimbal_mode);
+    const char *mode = xf_mode_name(p->t0.gimbal_mode);
     xf_pod_order order = xf_client_pod_order(&p->o->client);
+    char model[64], hw[8], fw[8];
+    fieldtext_model(t->gimbal_code, model, sizeof(model));
+    fieldtext_version(t->hw_version, hw, sizeof(hw));
+    fieldtext_version(t->fw_version, fw, sizeof(fw));
     if (t->have_sub) {
-        printf("gimbal       %s (code %u), hardware %.1f, firmware %.1f\n", model ? model : "unknown model",
-               t->gimbal_code, t->hw_version / 10.0, t->fw_version / 10.0);
+        printf("gimbal       %s, hardware %s, firmware %s\n", model, hw, fw);
     } else {
         printf("gimbal       no sub frame within %ld ms: model and versions unknown\n", p->o->opt->timeout_ms);
     }
@@ -737,6 +740,13 @@ static jobj jchild(jobj parent, const char *key)
     return c;
 }
 
+/* A GCU field of the telemetry under its name, in the probe's view (the unit rule). */
+static json_t *field_json(const probe *p, const char *name, int64_t raw)
+{
+    return jsonpkt_value(xf_wire_field_find(XF_WIRE_GCU, name), raw, xf_client_telemetry(&p->o->client)->version,
+                         p->view);
+}
+
 static void json_gimbal(const probe *p, jobj g)
 {
     const xf_telemetry *t = xf_client_telemetry(&p->o->client);
@@ -744,15 +754,15 @@ static void json_gimbal(const probe *p, jobj g)
     jset(g, "have_sub", json_boolean(t->have_sub));
     jset(g, "gimbal_code", t->have_sub ? json_integer(t->gimbal_code) : json_null());
     jset(g, "gimbal_model", t->have_sub && model ? json_string(model) : json_null());
-    jset(g, "hw_version", t->have_sub ? json_integer(t->hw_version) : json_null());
-    jset(g, "fw_version", t->have_sub ? json_integer(t->fw_version) : json_null());
+    jset(g, "hw_version", t->have_sub ? field_json(p, "hw_version", t->hw_version) : json_null());
+    jset(g, "fw_version", t->have_sub ? field_json(p, "fw_version", t->fw_version) : json_null());
     jset(g, "protocol", json_integer(t->version));
     jset(g, "pod_status", json_integer(t->pod_status));
     jset(g, "pod_status_order", json_string(pod_order_text(xf_client_pod_order(&p->o->client))));
     jset(g, "gimbal_mode", json_integer(p->t0.gimbal_mode));
     jset(g, "mode_name", mode ? json_string(mode) : json_null());
-    jset(g, "zoom_cam1", json_integer(t->zoom_cam1));
-    jset(g, "zoom_cam2", json_integer(t->zoom_cam2));
+    jset(g, "zoom_cam1", field_json(p, "zoom_cam1", t->zoom_cam1));
+    jset(g, "zoom_cam2", field_json(p, "zoom_cam2", t->zoom_cam2));
     if (t->version >= XF_PROTOCOL_V2) {
         jset(g, "error_code", json_integer(t->error_code));
         jset(g, "thermal_status", json_integer(t->thermal_status));
@@ -846,8 +856,8 @@ static void json_legs(const probe *p, jobj top)
         jset(o, "yaw", isnan(l->yaw) ? json_null() : json_real(hundredths(l->yaw)));
         jset(o, "reached", json_boolean(l->reached));
         jset(o, "s", json_real(cli_seconds(l->ms)));
-        jset(o, "end_pitch", json_real(hundredths(l->end_pitch)));
-        jset(o, "end_yaw", json_real(hundredths(l->end_yaw)));
+        jset(o, "end_pitch", field_json(p, "cam_pitch", (int64_t)floor(l->end_pitch * 100.0 + 0.5)));
+        jset(o, "end_yaw", field_json(p, "cam_yaw", (int64_t)floor(l->end_yaw * 100.0 + 0.5)));
         if (json_array_append_new(legs, o.obj) != 0) {
             *top.failed = 1;
         }
@@ -893,7 +903,7 @@ static int print_json(const probe *p)
 {
     int failed = 0;
     json_t *obj = json_report(p, &failed);
-    char *text = failed ? NULL : json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12));
+    char *text = failed ? NULL : jsonpkt_dumps(obj);
     json_decref(obj);
     if (text == NULL) {
         return cli_fail("probe: out of memory");
@@ -986,6 +996,7 @@ int cmd_probe(const cli_link *link, int argc, char **argv)
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         rc = take_arg(p, &a, id);
     }
+    p->view = link->view; /* --raw: taken anywhere on the line */
     if (rc == XFGCU_EXIT_OK && p->help) {
         help_probe(stdout);
     } else if (rc == XFGCU_EXIT_OK) {

@@ -113,9 +113,7 @@ static void motion_json(const online *o, const rate_args *a, const int32_t start
     const char *status = xf_client_link(&o->client) == XF_LINK_DOWN ? "link_lost"
                          : cli_stop_requested()                     ? "interrupted"
                                                                     : "done";
-    xf_telemetry_units u;
     json_t *obj = cli_json_times(json_object());
-    (void)xf_telemetry_convert(t, &u);
     if (obj != NULL) {
         json_object_set_new(obj, "step", json_string("rate"));
         json_object_set_new(obj, "status", json_string(status));
@@ -123,15 +121,15 @@ static void motion_json(const online *o, const rate_args *a, const int32_t start
         json_object_set_new(obj, "yaw_dps", json_real(a->yaw));
         json_object_set_new(obj, "duration_s", json_real(a->duration));
         json_object_set_new(obj, "elapsed_ms", json_integer((json_int_t)elapsed_ms));
-        json_object_set_new(obj, "start_roll", cli_json_cdeg(start[0]));
-        json_object_set_new(obj, "start_pitch", cli_json_cdeg(start[1]));
-        json_object_set_new(obj, "start_yaw", cli_json_cdeg(start[2]));
-        json_object_set_new(obj, "roll", cli_json_cdeg(t->cam_roll));
-        json_object_set_new(obj, "pitch", cli_json_cdeg(t->cam_pitch));
-        json_object_set_new(obj, "yaw", cli_json_cdeg(t->cam_yaw));
-        json_object_set_new(obj, "rate_x", json_real(cli_round2((double)u.rate_x_dps)));
-        json_object_set_new(obj, "rate_y", json_real(cli_round2((double)u.rate_y_dps)));
-        json_object_set_new(obj, "rate_z", json_real(cli_round2((double)u.rate_z_dps)));
+        json_object_set_new(obj, "start_roll", online_field_json(o, "cam_roll", start[0]));
+        json_object_set_new(obj, "start_pitch", online_field_json(o, "cam_pitch", start[1]));
+        json_object_set_new(obj, "start_yaw", online_field_json(o, "cam_yaw", start[2]));
+        json_object_set_new(obj, "roll", online_field_json(o, "cam_roll", t->cam_roll));
+        json_object_set_new(obj, "pitch", online_field_json(o, "cam_pitch", t->cam_pitch));
+        json_object_set_new(obj, "yaw", online_field_json(o, "cam_yaw", t->cam_yaw));
+        json_object_set_new(obj, "rate_x", online_field_json(o, "rate_x", t->rate_x));
+        json_object_set_new(obj, "rate_y", online_field_json(o, "rate_y", t->rate_y));
+        json_object_set_new(obj, "rate_z", online_field_json(o, "rate_z", t->rate_z));
         json_object_set_new(
             obj, "attitude_age_ms",
             json_integer((json_int_t)xf_ms_since(xf_posix_now_ms(), xf_client_health(&o->client)->last_rx_ms)));

@@ -1,5 +1,5 @@
 /*
- * cmd_replay.c - `xfgcu replay FILE [--json] [--brief]`.
+ * cmd_replay.c - `xfgcu replay FILE [--json] [--brief] [--raw]`.
  *
  * Reads a capture (docs/capture-format.md: the text format or pcap) and runs each direction's
  * bytes through its own streaming parser, as a live link would, flushing
@@ -20,15 +20,16 @@
 
 void help_replay(FILE *out)
 {
-    fputs("usage: xfgcu replay FILE [--json | --brief]\n\n"
-          "Decode a capture written by `xfgcu record` (FILE - reads stdin). Each direction's bytes\n"
+    fputs("usage: xfgcu replay FILE [--json | --brief] [--raw]\n\n"
+          "Decode a capture written by `xfgcu capture` (FILE - reads stdin). Each direction's bytes\n"
           "go through their own streaming parser, as on a live link; every valid packet is\n"
           "printed with the time of the chunk that completed it and its direction.\n\n"
           "  (default)  decode's table for each packet\n"
           "  --brief    one line per packet: time, direction, order, feedback, attitude, zoom\n"
           "  --json     JSON Lines: decode --json's object with \"t\" (seconds) in front, and\n"
-          "             \"time\" (UTC) when the capture says when it started\n\n"
-          "FILE is the text format of `record` or pcap / pcapng (`record --pcap`, tcpdump, Wireshark).\n"
+          "             \"time\" (UTC) when the capture says when it started\n"
+          "  --raw      the fields as wire integers, not engineering units\n\n"
+          "FILE is the text format of `capture` or pcap / pcapng (`capture --pcap`, tcpdump, Wireshark).\n"
           "A malformed capture is an error (exit 2): \"xfgcu: FILE:LINE: reason\" (pcap: the record).\n",
           out);
 }
@@ -39,6 +40,7 @@ typedef struct replay {
     const char *file;
     int style, help;
     pod_reading pod;     /* how pod_status's flags are read (decode --pod-order) */
+    text_view view;      /* --raw: wire integers */
     int has_start;       /* the capture says when it started: */
     int64_t start_ms;    /* wall clock of its first chunk, ms since 1970 */
     xf_parser parser[2]; /* by xf_direction */
@@ -51,7 +53,7 @@ typedef struct replay {
 
 static int print_json(const replay *r, const uint8_t *buf, size_t len, xf_direction dir, uint32_t t_ms)
 {
-    json_t *pkt = jsonpkt_from_wire(buf, len, dir, r->pod);
+    json_t *pkt = jsonpkt_from_wire(buf, len, dir, r->pod, r->view);
     json_t *obj = json_object();
     char *text = NULL, wall[40];
     int ok = (pkt != NULL && obj != NULL && json_object_set_new(obj, "t", json_real(cli_seconds(t_ms))) == 0);
@@ -60,7 +62,7 @@ static int print_json(const replay *r, const uint8_t *buf, size_t len, xf_direct
         ok = json_object_set_new(obj, "time", json_string(wall)) == 0;
     }
     if (ok && json_object_update(obj, pkt) == 0) {
-        text = json_dumps(obj, JSON_COMPACT | JSON_REAL_PRECISION(10));
+        text = jsonpkt_dumps(obj);
     }
     json_decref(pkt);
     json_decref(obj);
@@ -72,7 +74,7 @@ static int print_json(const replay *r, const uint8_t *buf, size_t len, xf_direct
     return XFGCU_EXIT_OK;
 }
 
-static void print_brief_gcu(const uint8_t *buf, size_t len)
+static void print_brief_gcu(const uint8_t *buf, size_t len, text_view view)
 {
     xf_gcu_packet p;
     xf_feedback fb;
@@ -83,6 +85,11 @@ static void print_brief_gcu(const uint8_t *buf, size_t len)
     mode = xf_mode_name(p.main.gimbal_mode);
     if (p.params_len > 0u && xf_feedback_decode(p.order, p.params, p.params_len, &fb) == XF_OK && fb.has_state) {
         printf(" state 0x%02X", fb.state);
+    }
+    if (view == TEXT_RAW) {
+        printf("  mode %s cam_roll %d cam_pitch %d cam_yaw %u zoom_cam1 %u\n", mode ? mode : "unknown", p.main.cam_roll,
+               p.main.cam_pitch, (unsigned)p.main.cam_yaw, (unsigned)p.sub.zoom_cam1);
+        return;
     }
     printf("  mode %s roll %.2f pitch %.2f yaw %.2f deg zoom %.1fx\n", mode ? mode : "unknown",
            (double)xf_cdeg(p.main.cam_roll), (double)xf_cdeg(p.main.cam_pitch), (double)xf_cdeg(p.main.cam_yaw),
@@ -98,7 +105,7 @@ static void print_brief_host(const uint8_t *buf, size_t len)
     printf("  status 0x%02X ctrl %d %d %d\n", p.main.status, p.main.roll_ctrl, p.main.pitch_ctrl, p.main.yaw_ctrl);
 }
 
-static void print_brief(const uint8_t *buf, size_t len, xf_direction dir, uint32_t t_ms)
+static void print_brief(const uint8_t *buf, size_t len, xf_direction dir, uint32_t t_ms, text_view view)
 {
     const char *name = xf_order_name(buf[XF_OFF_ORDER]);
     printf("%9.3f %s %-4s v%u %zu bytes, order 0x%02X %s", cli_seconds(t_ms), dir == XF_DIR_HOST ? ">" : "<",
@@ -107,7 +114,7 @@ static void print_brief(const uint8_t *buf, size_t len, xf_direction dir, uint32
     if (dir == XF_DIR_HOST) {
         print_brief_host(buf, len);
     } else {
-        print_brief_gcu(buf, len);
+        print_brief_gcu(buf, len, view);
     }
 }
 
@@ -120,7 +127,7 @@ static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
     }
     switch ((replay_style)r->style) {
     case STYLE_JSON: r->rc = print_json(r, f->data, f->len, dir, t); break;
-    case STYLE_BRIEF: print_brief(f->data, f->len, dir, t); break;
+    case STYLE_BRIEF: print_brief(f->data, f->len, dir, t, r->view); break;
     default:
         if (r->packets[0] + r->packets[1] > 0u) {
             putchar('\n');
@@ -132,7 +139,7 @@ static void print_packet(replay *r, const xf_frame *f, xf_direction dir)
         }
         snprintf(where, sizeof(where), "t %.3f s%s, %s", cli_seconds(t), wall,
                  dir == XF_DIR_HOST ? "host to GCU" : "GCU to host");
-        table_print(f->data, f->len, dir, where, r->pod, stdout);
+        table_print(f->data, f->len, dir, where, r->pod, r->view, stdout);
         break;
     }
     r->packets[dir]++;
@@ -231,7 +238,7 @@ static int take_arg(replay *r, const cli_args *a, int id)
     }
 }
 
-int replay_capture(FILE *in, const char *name, int json, int pod, int summary)
+int replay_capture(FILE *in, const char *name, int json, int pod, int view, int summary)
 {
     replay *r = calloc(1, sizeof(*r));
     int rc;
@@ -242,6 +249,7 @@ int replay_capture(FILE *in, const char *name, int json, int pod, int summary)
     r->file = name;
     r->style = json ? STYLE_JSON : STYLE_TABLE;
     r->pod = (pod_reading)pod;
+    r->view = (text_view)view;
     (void)xf_parser_init(&r->parser[XF_DIR_HOST], XF_DIR_HOST);
     (void)xf_parser_init(&r->parser[XF_DIR_GCU], XF_DIR_GCU);
     rc = read_capture(r, in);
@@ -273,7 +281,6 @@ int cmd_replay(const cli_link *link, int argc, char **argv)
     replay *r = calloc(1, sizeof(*r));
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
-    (void)link; /* offline */
     if (r == NULL) {
         return cli_fail("replay: out of memory");
     }
@@ -282,10 +289,11 @@ int cmd_replay(const cli_link *link, int argc, char **argv)
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         rc = take_arg(r, &a, id);
     }
+    r->view = link->view; /* --raw: taken anywhere on the line */
     if (rc == XFGCU_EXIT_OK && r->help) {
         help_replay(stdout);
     } else if (rc == XFGCU_EXIT_OK && r->file == NULL) {
-        rc = cli_fail("replay: missing FILE (a capture written by xfgcu record)");
+        rc = cli_fail("replay: missing FILE (a capture written by xfgcu capture)");
     } else if (rc == XFGCU_EXIT_OK) {
         rc = replay_file(r);
     }

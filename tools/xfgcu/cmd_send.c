@@ -18,7 +18,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "cmdargs.h"
+#include "cmdline.h"
 #include "online.h"
 
 void help_send(FILE *out)
@@ -46,7 +46,7 @@ void help_send(FILE *out)
           "                  decimal number is a camera: 3 is camera 3 (0x04).\n\n",
           out);
     help_link_options(out);
-    fputs("\nexample: xfgcu --tcp 192.168.144.108 send zoom-to --rate 5.5\n", out);
+    fputs("\nexample: xfgcu --tcp 192.168.144.108 send zoom-to --factor 5.5\n", out);
 }
 
 static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_ms)
@@ -72,10 +72,10 @@ static int run_send(const cli_link *link, const xf_command *cmd, const char *nam
     online *o = online_new();
     xf_cmd_result r;
     char text[64], what[64];
-    int json = (flags & CMDARGS_JSON) != 0;
+    int json = (flags & CMDLINE_JSON) != 0;
     int rc = (o != NULL) ? online_open(o, link, "send", NULL) : XFGCU_EXIT_USAGE;
     if (rc == XFGCU_EXIT_OK) {
-        o->submit_flags = (flags & CMDARGS_FORCE) ? XF_SUBMIT_ANY_MODEL : 0u;
+        o->submit_flags = (flags & CMDLINE_FORCE) ? XF_SUBMIT_ANY_MODEL : 0u;
         rc = online_run(o, cmd, &r, on_operating, &json);
     }
     if (rc == XFGCU_EXIT_OK) {
@@ -107,10 +107,10 @@ int cmd_send(const cli_link *link, int argc, char **argv)
         return rc;
     }
     with_version = *link; /* after the line: link options may follow COMMAND */
-    if (l.spec == NULL) {
+    if (!l.has_spec) {
         return cli_fail("send: which command? (see 'xfgcu send --help')");
     }
     with_version.protocol = l.version;
     cli_signals_init();
-    return run_send(&with_version, &l.cmd, cmdargs_name(l.spec), l.force);
+    return run_send(&with_version, &l.cmd, l.spec.name, l.force);
 }

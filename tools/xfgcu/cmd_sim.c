@@ -162,10 +162,10 @@ static int take_fail(sim_args *a, const char *text)
     name[eq - text] = '\0';
     if (xf_order_from_name(name, &o8) == XF_OK) {
         order = o8;
-    } else if (cli_parse_int(name, &order) != 0 || order < 0 || order > 255) {
+    } else if (text_parse_int(name, &order) != 0 || order < 0 || order > 255) {
         return cli_fail("sim: --fail %s: '%s' is not an order (a name like zoom-in, or a number 0..255)", text, name);
     }
-    if (cli_parse_int(eq + 1, &state) != 0 || state < 0 || state > 255) {
+    if (text_parse_int(eq + 1, &state) != 0 || state < 0 || state > 255) {
         return cli_fail("sim: --fail %s: STATE must be 0..255 (1 failure, or a mask of failed cameras)", text);
     }
     a->fail[order] = (uint8_t)state;
@@ -237,7 +237,7 @@ static int reply_to(sim_run *s, const char *text, char *what, size_t cap)
     size_t n = (colon != NULL) ? (size_t)(colon - text) : strlen(text);
     xf_err err;
     if (n == 0u || n >= sizeof(host) ||
-        (colon != NULL && (cli_parse_int(colon + 1, &port) != 0 || port < 1 || port > 65535))) {
+        (colon != NULL && (text_parse_int(colon + 1, &port) != 0 || port < 1 || port > 65535))) {
         return cli_fail("sim: --reply-to %s: expected ADDR[:PORT], PORT 1..65535", text);
     }
     memcpy(host, text, n);

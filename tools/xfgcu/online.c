@@ -7,6 +7,7 @@
 #include "online.h"
 #include "cmdargs.h"
 #include "jsonpkt.h"
+#include "linkopts.h"
 
 #include <poll.h>
 #include <math.h>
@@ -42,50 +43,11 @@ int cli_stop_requested(void) { return stop_flag != 0; }
 
 /* ---- helpers ------------------------------------------------------------------ */
 
-int cli_value_baud(const cli_args *a, long *baud, int *given)
-{
-    static const char what[] = "115200, 250000, 500000 or 1000000";
-    int rc = cli_value_long(a, 1, 100000000L, what, baud, given);
-    if (rc == XFGCU_EXIT_OK && !xf_serial_baud_ok((uint32_t)*baud)) {
-        rc = cli_fail_in(a->context, "--baud %s: must be %s", a->value, what);
-    }
-    return rc;
-}
-
-/* The library's reason without the text it quotes first ("QUOTED: reason"), when it quoted it whole. */
-static const char *spec_reason(const xf_link_spec *spec, const char *quoted)
-{
-    size_t n = strlen(quoted);
-    const char *t = spec->error.text;
-    return (strncmp(t, quoted, n) == 0 && strncmp(t + n, ": ", 2) == 0) ? t + n + 2 : t;
-}
-
-xf_err cli_tcp_spec(const char *text, xf_link_spec *spec, const char **reason)
-{
-    char buf[XF_LINK_SPEC_MAX + 2u]; /* a longer text is cut here, and refused as too long */
-    xf_err err;
-    snprintf(buf, sizeof(buf), "tcp:%s", text);
-    err = xf_link_spec_parse(buf, spec);
-    if (reason != NULL) {
-        *reason = spec_reason(spec, buf);
-    }
-    return err;
-}
-
 double cli_seconds(uint32_t ms) { return (double)ms / 1000.0; }
 
 double cli_wrap180(double deg) { return xf_units_wrap360(deg, -180.0); }
 
 /* ---- opening ------------------------------------------------------------------ */
-
-int online_check_link(const cli_link *opt, const char *context)
-{
-    if (opt->serial == NULL && opt->udp == NULL && opt->tcp == NULL) {
-        return cli_fail("%s needs a link: give --serial PATH, --udp HOST or --tcp HOST[:PORT] before '%s'", context,
-                        context);
-    }
-    return XFGCU_EXIT_OK;
-}
 
 online *online_new(void)
 {
@@ -126,31 +88,6 @@ void online_free(online *o)
     free(o);
 }
 
-/* The spec the link options name: --serial PATH with --baud, --udp HOST with --gcu-port and
- * --local-port, or --tcp HOST[:PORT] with --gcu-port when HOST has no PORT; a bad one is bad input. */
-static int options_spec(online *o, xf_link_spec *spec)
-{
-    const cli_link *opt = o->opt;
-    const char *reason = NULL;
-    xf_err err;
-    if (opt->serial != NULL) {
-        err = xf_link_spec_init(spec, XF_LINK_KIND_SERIAL, opt->serial);
-        spec->baud = (uint32_t)opt->baud;
-        reason = spec_reason(spec, opt->serial);
-    } else if (opt->udp != NULL) {
-        err = xf_link_spec_init(spec, XF_LINK_KIND_UDP, opt->udp);
-        spec->local_port = (uint16_t)opt->local_port;
-        reason = spec_reason(spec, opt->udp);
-    } else {
-        err = cli_tcp_spec(opt->tcp, spec, &reason);
-        spec->connect_timeout_ms = (uint32_t)opt->timeout_ms;
-    }
-    if (opt->gcu_port != 0 && !spec->port_given) {
-        spec->port = (uint16_t)opt->gcu_port;
-    }
-    return (err == XF_OK) ? XFGCU_EXIT_OK : cli_fail("%s: %s", o->option, reason);
-}
-
 /* ---- waiting for the GCU (monitor --wait) ---------------------------------------------- */
 
 /* online_open() began waiting at @p start and the GCU is not up: is there time left for it, by
@@ -187,21 +124,10 @@ static int waited_in_vain(const online *o, uint32_t start, const char *why)
 
 static int open_link(online *o, uint32_t start)
 {
-    const cli_link *opt = o->opt;
-    const char *name = "tcp", *value = opt->tcp;
-    uint32_t slice = (o->wait_ms > 0u) ? 100u : (uint32_t)opt->timeout_ms; /* waiting: look at signals often */
+    uint32_t slice = (o->wait_ms > 0u) ? 100u : (uint32_t)o->opt->timeout_ms; /* waiting: look at signals often */
     xf_err err;
     xf_link_spec spec;
-    int rc;
-    if (opt->serial != NULL) {
-        name = "serial";
-        value = opt->serial;
-    } else if (opt->udp != NULL) {
-        name = "udp";
-        value = opt->udp;
-    }
-    snprintf(o->option, sizeof(o->option), "--%s %s", name, value);
-    rc = options_spec(o, &spec);
+    int rc = linkopts_spec(o->opt, &spec, o->option, sizeof(o->option));
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }
@@ -276,52 +202,6 @@ static void online_on_link(void *user, xf_link_state state)
     }
 }
 
-/* The lowest rate at which a link configured as @p cc (its reorder_ms and stale_ms) goes no
- * longer than stale_ms without a reply, by the library's arithmetic (0 if none). */
-static long lowest_rate(xf_client_config cc)
-{
-    xf_client_timing t;
-    for (cc.rate_hz = 1; cc.rate_hz <= 200u; cc.rate_hz++) {
-        if (xf_client_config_timing(&cc, &t) == XF_OK && t.gap_ms < cc.stale_ms) {
-            return (long)cc.rate_hz;
-        }
-    }
-    return 0;
-}
-
-/* --rate, --timeout and --reorder that cannot work together are usage errors, said in their terms;
- * the limits are the library's (xf_client_config_timing(), as xf_client_config_problem() checks). */
-int cli_check_timing(const cli_link *l)
-{
-    xf_client_config cc;
-    xf_client_timing t;
-    xf_client_config_init(&cc); /* stale_ms: the program keeps the library's default */
-    cc.rate_hz = (uint16_t)l->rate_hz;
-    cc.reorder_ms = (uint16_t)l->reorder_ms;
-    if (xf_client_config_timing(&cc, &t) != XF_OK) {
-        return cli_fail("--rate %ld: give 1 to 200", l->rate_hz);
-    }
-    if (t.gap_ms >= cc.stale_ms) {
-        long low = lowest_rate(cc);
-        if (low == 0) {
-            return cli_fail("--reorder %ld: too long; silence of twice that around each command would read as a "
-                            "stale link (%u ms)",
-                            l->reorder_ms, (unsigned)cc.stale_ms);
-        }
-        return cli_fail("--rate %ld: a packet every %lu ms%s, but the link reads stale after %u ms without a reply: "
-                        "give --rate %ld or more",
-                        l->rate_hz, (unsigned long)t.period_ms, l->reorder_ms > 0 ? " and twice --reorder" : "",
-                        (unsigned)cc.stale_ms, low);
-    }
-    if (l->timeout_ms < (long)t.round_trip_ms) {
-        return cli_fail("--timeout %ld: shorter than a round trip at --rate %ld (two packets, %lu ms%s): give "
-                        "--timeout %lu or more",
-                        l->timeout_ms, l->rate_hz, 2ul * t.period_ms, l->reorder_ms > 0 ? ", plus twice --reorder" : "",
-                        (unsigned long)t.round_trip_ms);
-    }
-    return XFGCU_EXIT_OK;
-}
-
 static int start_client(online *o, const online_hooks *hooks)
 {
     xf_client_config cc;
@@ -389,14 +269,14 @@ static int wait_first_reply(online *o, uint32_t wait_start)
 
 int online_open(online *o, const cli_link *opt, const char *context, const online_hooks *hooks)
 {
-    int rc = online_check_link(opt, context);
+    int rc = linkopts_require(opt, context);
     o->opt = opt;
     o->context = context;
     if (rc == XFGCU_EXIT_OK) {
-        rc = cli_check_link_options(opt);
+        rc = linkopts_check(opt);
     }
     if (rc == XFGCU_EXIT_OK) {
-        rc = cli_check_timing(opt); /* before anything is opened: a usage error, not a link error */
+        rc = linkopts_check_timing(opt); /* before anything is opened: a usage error, not a link error */
     }
     if (rc == XFGCU_EXIT_OK) {
         o->t0_ms = xf_posix_now_ms();
@@ -481,14 +361,15 @@ json_t *cli_json_times(json_t *obj)
     return jsonpkt_times(obj, &mono, &wall);
 }
 
-double cli_round2(double v) { return floor(v * 100.0 + 0.5) / 100.0; }
-
-json_t *cli_json_cdeg(int32_t cdeg) { return json_real((double)cdeg / 100.0); }
+json_t *online_field_json(const online *o, const char *name, int64_t raw)
+{
+    return jsonpkt_value(xf_wire_field_find(XF_WIRE_GCU, name), raw, xf_client_telemetry(&o->client)->version,
+                         o->opt->view);
+}
 
 int cli_json_line(json_t *obj)
 {
-    /* 15 significant digits: a double's decimal value without its binary tail (0.673, not 0.67300000000000004) */
-    char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(15)) : NULL;
+    char *text = jsonpkt_dumps(obj); /* the text layer's numbers: each value with the digits of its step */
     json_decref(obj);
     if (text == NULL) {
         return -1;

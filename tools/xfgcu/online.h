@@ -1,6 +1,6 @@
 /*
  * online.h - what the commands that talk to a GCU share: opening the link
- * the link options name (--serial, --udp or --tcp), a client on it, the
+ * the link options name (linkopts.h: --link, --serial, --udp, --tcp or XFGCU_LINK), a client on it, the
  * wait for the first reply, running one command the protocol's way, and
  * the SIGINT/SIGTERM flag.
  *
@@ -33,14 +33,6 @@ int cli_stop_requested(void);
 
 /* ---- small shared helpers ------------------------------------------------------ */
 
-/** --baud: 115200, 250000, 500000 or 1000000 (xf_serial_baud_ok()); see cli_value_long(). */
-int cli_value_baud(const cli_args *a, long *baud, int *given);
-/**
- * --tcp HOST[:PORT] read as the library reads the spec "tcp:HOST[:PORT]" (xf_link_spec_parse()).
- * @return XF_OK, or the parser's code with *reason (may be NULL) saying what is wrong, without
- *   the spec the library's text quotes first.
- */
-xf_err cli_tcp_spec(const char *text, xf_link_spec *spec, const char **reason);
 /** Milliseconds to seconds for humans: "1.25 s". */
 double cli_seconds(uint32_t ms);
 /** Wrap degrees into [-180, 180). */
@@ -60,7 +52,7 @@ typedef struct online {
     const cli_link *opt;
     const char *context; /* the command's name, for messages */
     char desc[320];      /* "tcp 127.0.0.1:2332": where, for messages and captures (xf_link_describe()) */
-    char option[300];    /* "--tcp 127.0.0.1:2332": the option that named the link */
+    char option[600];    /* "--tcp 127.0.0.1:2332": the option that named the link (linkopts_spec()) */
     xf_link link;        /* the link the options name, opened from their spec */
     xf_hal raw;          /* the link's own hal */
     xf_tap tap;
@@ -78,16 +70,6 @@ typedef struct online {
 
 /** online.wait_ms: wait for the GCU until SIGINT or SIGTERM. */
 #define ONLINE_WAIT_FOREVER UINT32_MAX
-
-/**
- * --rate, --timeout and --reorder that cannot work together (the link reads stale between two
- * replies, or a timeout is shorter than a round trip): the usage error naming the option to
- * change, or OK.
- */
-int cli_check_timing(const cli_link *l);
-
-/** The link options name a link? Prints the usage error if not. @return an exit code. */
-int online_check_link(const cli_link *opt, const char *context);
 
 /**
  * Open the link, start a client on it (with --protocol, --rate, --timeout)
@@ -133,10 +115,9 @@ void online_linger(online *o, uint32_t packets);
  * with milliseconds ("2026-11-26T10:00:00.123Z"). @return @p obj
  */
 json_t *cli_json_times(json_t *obj);
-/** @p v rounded to 0.01, the resolution of the GCU's angles (a float's tail is not a figure). */
-double cli_round2(double v);
-/** An angle in the GCU's hundredths of a degree as a JSON number of degrees (12.34, with no float tail). */
-json_t *cli_json_cdeg(int32_t cdeg);
+/** A field of the GCU's telemetry (@p name, its wire integer @p raw) as JSON: in engineering units, or
+ *  the wire integer with --raw (the unit rule: jsonpkt_value()). */
+json_t *online_field_json(const online *o, const char *name, int64_t raw);
 /** Print @p obj (taken: it is freed) on one line of stdout, flushed. @return 0, or -1 if out of memory. */
 int cli_json_line(json_t *obj);
 /** A command's result as JSON: status ("ok", "failed", "timeout", "link_lost", "cancelled",

@@ -1,5 +1,5 @@
 /*
- * decode.c - `xfgcu decode [--json] [--pod-order le|be|auto] [--file FILE] [HEX ...]`.
+ * cmd_decode.c - `xfgcu decode [--json] [--raw] [--pod-order le|be|auto] [--file FILE] [HEX ...]`.
  *
  * With arguments: each is one whole packet; all are checked before any is
  * printed, and the first bad one fails the command with its fault.
@@ -31,7 +31,7 @@
 
 void help_decode(FILE *out)
 {
-    fputs("usage: xfgcu decode [--json] [--pod-order le|be|auto] [--file FILE] [HEX ...]\n\n"
+    fputs("usage: xfgcu decode [--json] [--raw] [--pod-order le|be|auto] [--file FILE] [HEX ...]\n\n"
           "Decode packets of either direction (host A8 E5, GCU 8A 5E).\n"
           "Each HEX argument is one whole packet: hex digits, with spaces, colons, commas or 0x\n"
           "prefixes if you like (\"A8 E5 48 00 ...\", \"a8e54800...\", \"0xA8,0xE5,...\"). A bad\n"
@@ -41,28 +41,32 @@ void help_decode(FILE *out)
           "packet in it is printed in stream order and everything else is skipped. A line may\n"
           "start with a time: 12.345, [12.345], 2026-11-26T10:00:00.123[Z] or\n"
           "[2026-11-26 10:00:00.123]; each packet then shows the time of the line its last byte\n"
-          "is on (\"t\" in seconds, or \"time\", in --json). A capture (`xfgcu record`, pcap) is\n"
+          "is on (\"t\" in seconds, or \"time\", in --json). A capture (`xfgcu capture`, pcap) is\n"
           "decoded as `xfgcu replay` does.\n\n"
           "  --file FILE  read FILE instead of stdin (hex text, a log, or a capture)\n"
           "  --json    one JSON object per packet and line: direction, version, length, order,\n"
-          "            params (hex of bytes 70..S-3) and every field under its canonical name as\n"
-          "            the raw wire integer; reserved_main / reserved_sub (hex) when not zero;\n"
-          "            extras: order_name, command / command_error (host), feedback, mode_name,\n"
-          "            pod_status_order, pod_flags, gimbal_model (GCU). `xfgcu encode --json` turns\n"
-          "            it back into the packet.\n"
+          "            params (hex of bytes 70..S-3) and every field under its canonical name, in\n"
+          "            engineering units (\"cam_pitch\": -30.0, degrees); reserved_main /\n"
+          "            reserved_sub (hex) when not zero; extras: order_name, command /\n"
+          "            command_error (host), feedback, mode_name, pod_status_order, pod_flags,\n"
+          "            gimbal_model (GCU). `xfgcu encode --json` turns it back into the packet.\n"
+          "  --raw     the fields as wire integers (\"cam_pitch\": -3000), in --json and the table;\n"
+          "            `xfgcu encode --raw --json` reads them back\n"
           "  --pod-order le|be|auto\n"
           "            the byte order the flags of pod_status are read in (pod_status itself stays\n"
           "            the little-endian wire integer). auto (the default): per packet, the order\n"
           "            that leaves the reserved bits clear; little-endian, the documented order,\n"
           "            when both or neither do. The vendor's own example reads it big-endian.\n"
-          "Without --json: a table of field, raw value and physical value.\n",
+          "Without --json: a table of field, raw value and engineering value (docs/protocol.md,\n"
+          "\"Units\").\n",
           out);
 }
 
-/* How to print: --json and --pod-order. */
+/* How to print: --json, --pod-order and --raw. */
 typedef struct style {
     int json;
     pod_reading pod;
+    text_view view;
 } style;
 
 /* The time at the start of a log line. */
@@ -73,20 +77,20 @@ typedef struct log_time {
     char text[40];  /* LOG_DATE: "2026-11-26T10:00:00.123" (Z when given) */
 } log_time;
 
-/* The JSON object with "t" or "time" in front. */
-static int print_json_at(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod, const log_time *at)
+/* The JSON object, with "t" or "time" in front when the line said when. */
+static int print_json_at(const uint8_t *buf, size_t len, xf_direction dir, const style *how, const log_time *at)
 {
-    json_t *pkt = jsonpkt_from_wire(buf, len, dir, pod);
+    json_t *pkt = jsonpkt_from_wire(buf, len, dir, how->pod, how->view);
     json_t *obj = json_object();
     char *text = NULL;
     int ok = (pkt != NULL && obj != NULL);
     if (ok && at->kind == LOG_SECONDS) {
         ok = json_object_set_new(obj, "t", json_real(at->seconds)) == 0;
-    } else if (ok) {
+    } else if (ok && at->kind == LOG_DATE) {
         ok = json_object_set_new(obj, "time", json_string(at->text)) == 0;
     }
     if (ok && json_object_update(obj, pkt) == 0) {
-        text = json_dumps(obj, JSON_COMPACT | JSON_REAL_PRECISION(12));
+        text = jsonpkt_dumps(obj);
     }
     json_decref(pkt);
     json_decref(obj);
@@ -101,13 +105,14 @@ static int print_json_at(const uint8_t *buf, size_t len, xf_direction dir, pod_r
 static int print_packet(const uint8_t *buf, size_t len, xf_direction dir, const char *where, const style *how,
                         size_t index)
 {
+    static const log_time none = {LOG_NONE, 0.0, ""};
     if (how->json) {
-        return jsonpkt_print(buf, len, dir, how->pod, stdout);
+        return print_json_at(buf, len, dir, how, &none);
     }
     if (index > 0u) {
         putchar('\n');
     }
-    table_print(buf, len, dir, where, how->pod, stdout);
+    table_print(buf, len, dir, where, how->pod, how->view, stdout);
     return XFGCU_EXIT_OK;
 }
 
@@ -316,7 +321,7 @@ static void emit(stream *s, const found *f)
         snprintf(where, sizeof(where), "%.60s offset %zu", s->name, f->start);
     }
     if (s->how.json && f->at.kind != LOG_NONE) {
-        s->rc = print_json_at(f->bytes, f->len, f->dir, s->how.pod, &f->at);
+        s->rc = print_json_at(f->bytes, f->len, f->dir, &s->how, &f->at);
     } else {
         s->rc = print_packet(f->bytes, f->len, f->dir, where, &s->how, s->printed);
     }
@@ -573,7 +578,7 @@ static int decode_input(const char *file, const style *how)
         return cli_fail("decode: cannot read %s: %s", name, strerror(e));
     }
     if (c == '#' || (pcap_magic_byte(c) && (c != '\n' || file != NULL))) {
-        return replay_capture(in, name, how->json, (int)how->pod, 0); /* closes in */
+        return replay_capture(in, name, how->json, (int)how->pod, (int)how->view, 0); /* closes in */
     }
     rc = decode_text(in, name, how);
     if (in != stdin) {
@@ -613,11 +618,10 @@ static int pod_order_option(const cli_args *a, pod_reading *pod)
 int cmd_decode(const cli_link *link, int argc, char **argv)
 {
     int id, help = 0, nhex = 0, rc = XFGCU_EXIT_OK;
-    style how = {0, POD_READ_AUTO};
+    style how = {0, POD_READ_AUTO, TEXT_ENGINEERING};
     const char *file = NULL;
     char **hex = calloc((size_t)argc, sizeof(*hex));
     cli_args a;
-    (void)link; /* offline */
     if (hex == NULL) {
         return cli_fail("decode: out of memory");
     }
@@ -632,6 +636,7 @@ int cmd_decode(const cli_link *link, int argc, char **argv)
         default: rc = XFGCU_EXIT_USAGE; break; /* CLI_BAD: said */
         }
     }
+    how.view = link->view; /* --raw: taken anywhere on the line */
     if (rc == XFGCU_EXIT_OK && help) {
         help_decode(stdout);
     } else if (rc == XFGCU_EXIT_OK) {

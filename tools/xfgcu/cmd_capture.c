@@ -1,8 +1,10 @@
 /*
- * cmd_record.c - `xfgcu [LINK] record [--pcap] FILE [--duration S] [--count N] [COMMAND [ARGS]]`.
+ * cmd_capture.c - `xfgcu [LINK] capture [--pcap] FILE [--duration S] [--count N] [COMMAND [ARGS]]`
+ * (and `xfgcu record FILE ...`, its old name, kept for scripts: the camera order record is
+ * `xfgcu send record`).
  *
- * The link is wrapped in a tap (xf_tap.h) that hands every chunk read or
- * written, with its time, to the capture writer (xf_capture.h), so FILE
+ * The link is wrapped in a tap (tap.h) that hands every chunk read or
+ * written, with its time, to the capture writer (capture.h), so FILE
  * holds the bytes exactly as the link moved them, both ways, in the text
  * format of docs/capture-format.md or, with --pcap, in pcap (capture_pcap.h).
  * Meanwhile the client keeps the link going with null packets, or runs
@@ -18,7 +20,8 @@
 #include <unistd.h>
 
 #include "cli.h"
-#include "cmdargs.h"
+#include "cmdline.h"
+#include "linkopts.h"
 #include "online.h"
 #include "capture.h"
 #include "capture_pcap.h"
@@ -26,9 +29,9 @@
 #define NULLS_AFTER 3u
 #define DRAIN_MS    250u
 
-void help_record(FILE *out)
+void help_capture(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] record [--pcap] FILE [--duration S] [--count N] [--force] [COMMAND [ARGS]]\n\n"
+    fputs("usage: xfgcu [LINK OPTIONS] capture [--pcap] FILE [--duration S] [--count N] [--force] [COMMAND [ARGS]]\n\n"
           "Capture every byte the link moves, both ways, with timestamps, into FILE (a text format,\n"
           "one chunk per line: docs/capture-format.md), while null packets keep the link going.\n"
           "`xfgcu replay FILE` decodes it.\n\n"
@@ -44,7 +47,10 @@ void help_record(FILE *out)
           "complete; when no byte moved, nothing is left.\n\n",
           out);
     help_link_options(out);
-    fputs("\nexample: xfgcu --tcp 192.168.144.108 record shutter.cap shutter\n", out);
+    fputs("\n`xfgcu record FILE ...` is the old name of this command, kept for scripts (deprecated; the\n"
+          "camera order record is `xfgcu send record`).\n"
+          "\nexample: xfgcu --tcp 192.168.144.108 capture shutter.cap shutter\n",
+          out);
 }
 
 typedef struct record {
@@ -60,7 +66,8 @@ typedef struct record {
     long count;
     double duration;
     int has_count, has_duration, help;
-    const cmd_spec *spec;
+    int has_spec;
+    cmd_spec spec;
     uint32_t sent, received;
 } record;
 
@@ -82,8 +89,8 @@ static int take_word(record *r, const char *word)
 {
     if (r->file == NULL) {
         r->file = word;
-    } else if ((r->spec = cmdargs_find(word)) == NULL) {
-        return cli_fail("record: unknown command '%s' (see 'xfgcu send --help'); FILE is '%s'", word, r->file);
+    } else if (!(r->has_spec = cmdargs_find(word, &r->spec))) {
+        return cli_fail("capture: unknown command '%s' (see 'xfgcu send --help'); FILE is '%s'", word, r->file);
     }
     return XFGCU_EXIT_OK;
 }
@@ -107,18 +114,18 @@ static int parse_args(record *r, int argc, char **argv, const uint8_t *version, 
 {
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
-    cli_args_init(&a, argc, argv, CLI_IN_ORDER, record_options, "record");
-    while (rc == XFGCU_EXIT_OK && r->spec == NULL && (id = cli_next(&a)) != CLI_END) {
+    cli_args_init(&a, argc, argv, CLI_IN_ORDER, record_options, "capture");
+    while (rc == XFGCU_EXIT_OK && !r->has_spec && (id = cli_next(&a)) != CLI_END) {
         rc = take_arg(r, &a, id);
     }
     if (rc != XFGCU_EXIT_OK || r->help) {
         return rc;
     }
     if (r->file == NULL) {
-        return cli_fail("record: missing FILE (where the capture goes)");
+        return cli_fail("capture: missing FILE (where the capture goes)");
     }
-    return (r->spec != NULL) ? cmdargs_parse_command(r->spec, "record", argc - a.index, argv + a.index, version, cmd)
-                             : XFGCU_EXIT_OK;
+    return r->has_spec ? cmd_line_command(&r->spec, "capture", argc - a.index, argv + a.index, version, cmd)
+                       : XFGCU_EXIT_OK;
 }
 
 /* ---- callbacks ------------------------------------------------------------------------ */
@@ -251,7 +258,7 @@ static int run_command(record *r, const xf_command *cmd)
     if (!r->has_count && !r->has_duration) {
         online_linger(r->o, NULLS_AFTER);
     }
-    snprintf(what, sizeof(what), "record %s", cmdargs_name(r->spec));
+    snprintf(what, sizeof(what), "capture %s", r->spec.name);
     return online_result_exit(r->o, what, &res);
 }
 
@@ -273,11 +280,11 @@ static int capture(record *r, const cli_link *link, const xf_command *cmd, uint3
     hooks.tap = on_chunk;
     hooks.on_bytes = on_bytes;
     hooks.user = r;
-    rc = online_open(r->o, link, "record", &hooks);
-    if (rc == XFGCU_EXIT_OK && r->spec != NULL) {
+    rc = online_open(r->o, link, "capture", &hooks);
+    if (rc == XFGCU_EXIT_OK && r->has_spec) {
         rc = run_command(r, cmd);
     }
-    if (rc == XFGCU_EXIT_OK && (r->spec == NULL || r->has_count || r->has_duration)) {
+    if (rc == XFGCU_EXIT_OK && (!r->has_spec || r->has_count || r->has_duration)) {
         while (!done(r, xf_ms_since(xf_posix_now_ms(), start))) {
             online_poll(r->o, 50);
         }
@@ -298,7 +305,7 @@ static int publish(record *r, int rc)
     struct stat st;
     int e = 0;
     if (rc == XFGCU_EXIT_LINK && lstat(r->file, &st) == 0) {
-        cli_note("record: the link failed: %s is kept as it was; this run's capture is %s", r->file, r->tmp);
+        cli_note("capture: the link failed: %s is kept as it was; this run's capture is %s", r->file, r->tmp);
         return 1;
     }
     if (r->force) {
@@ -309,7 +316,7 @@ static int publish(record *r, int rc)
         (void)unlink(r->tmp);
     }
     if (e != 0) {
-        return cli_fail("record: cannot name the capture %s: %s%s; it is kept as %s", r->file, strerror(e),
+        return cli_fail("capture: cannot name the capture %s: %s%s; it is kept as %s", r->file, strerror(e),
                         e == EEXIST ? " (it appeared meanwhile; --force replaces it)" : "", r->tmp);
     }
     return XFGCU_EXIT_OK;
@@ -338,7 +345,7 @@ static int finish_file(record *r, int rc, uint32_t elapsed)
     err = close_file(r);
     if (err != 0) {
         (void)unlink(r->tmp); /* ours; FILE was never touched */
-        return cli_fail("record: cannot write %s: %s", r->file, strerror(err));
+        return cli_fail("capture: cannot write %s: %s", r->file, strerror(err));
     }
     prc = publish(r, rc);
     if (prc == 1) {
@@ -347,7 +354,7 @@ static int finish_file(record *r, int rc, uint32_t elapsed)
     if (prc != XFGCU_EXIT_OK) {
         return prc;
     }
-    printf("recorded %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
+    printf("captured %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
            r->desc, (unsigned)(r->pcap ? r->pw.chunks : r->w.chunks), (unsigned)(r->pcap ? r->pw.bytes : r->w.bytes),
            (unsigned)r->sent, (unsigned)r->received, r->file);
     return rc;
@@ -363,10 +370,10 @@ static int open_tmp(record *r)
         return XFGCU_EXIT_USAGE; /* parse_args() makes sure it is there */
     }
     if (!r->force && lstat(r->file, &st) == 0) {
-        return cli_fail("record: %s exists; not replaced (--force replaces it)", r->file);
+        return cli_fail("capture: %s exists; not replaced (--force replaces it)", r->file);
     }
     if ((size_t)snprintf(r->tmp, sizeof(r->tmp), "%s.partXXXXXX", r->file) >= sizeof(r->tmp)) {
-        return cli_fail("record: the file name is too long");
+        return cli_fail("capture: the file name is too long");
     }
     fd = mkstemp(r->tmp);
     if (fd >= 0) {
@@ -380,7 +387,7 @@ static int open_tmp(record *r)
             close(fd);
             (void)unlink(r->tmp);
         }
-        return cli_fail("record: cannot create a file beside %s: %s", r->file, strerror(e));
+        return cli_fail("capture: cannot create a file beside %s: %s", r->file, strerror(e));
     }
     return XFGCU_EXIT_OK;
 }
@@ -411,19 +418,23 @@ static int run_record(record *r, const cli_link *link, const xf_command *cmd)
     return rc;
 }
 
-int cmd_record(const cli_link *link, int argc, char **argv)
+int cmd_capture(const cli_link *link, int argc, char **argv)
 {
     record r;
     xf_command cmd;
     int rc;
     memset(&r, 0, sizeof(r));
+    if (strcmp(argv[0], "record") == 0) {
+        cli_note("'xfgcu record FILE' is the old name of 'xfgcu capture FILE' (the camera order is 'xfgcu send "
+                 "record'); it still works, use capture in new scripts");
+    }
     /* link options after COMMAND (cli_set_anywhere()) change *link while it is parsed: the command
      * is checked for the protocol version the whole line gives */
     rc = parse_args(&r, argc, argv, &link->protocol, &cmd);
     if (rc == XFGCU_EXIT_OK && r.help) {
-        help_record(stdout);
+        help_capture(stdout);
     } else if (rc == XFGCU_EXIT_OK) {
-        rc = online_check_link(link, "record");
+        rc = linkopts_require(link, "capture");
         if (rc == XFGCU_EXIT_OK) {
             rc = run_record(&r, link, &cmd);
         }

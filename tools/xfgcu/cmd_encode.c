@@ -1,9 +1,11 @@
 /*
- * encode.c - `xfgcu encode [--protocol N] --json OBJECT | COMMAND [ARGS]`.
+ * cmd_encode.c - `xfgcu encode [--protocol N] [--raw] --json OBJECT | COMMAND [ARGS]`.
  *
  * The packet is printed as upper-case hex bytes separated by single
  * spaces, one packet per line. --protocol may come before or after
  * COMMAND (and before `encode`, as a link option); the last one wins.
+ * --json reads the object in engineering units, or wire integers with --raw
+ * (the general option): the two forms decode --json prints.
  */
 #define _POSIX_C_SOURCE 200809L /* getline */
 
@@ -13,7 +15,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "cmdargs.h"
+#include "cmdline.h"
 #include "encode.h"
 #include "hexin.h"
 #include "jsonpkt.h"
@@ -27,16 +29,20 @@ void help_encode(FILE *out)
           "  --json OBJECT   the inverse of `decode --json`: an object with direction (\"host\",\n"
           "                  the default, or \"gcu\"), version (default --protocol), order (number\n"
           "                  or name), params (hex) and any fields by canonical name (missing\n"
-          "                  fields are 0); reserved_main / reserved_sub as hex. A host packet\n"
-          "                  may give \"command\": {...} instead of params, a GCU packet\n"
-          "                  \"feedback\": {\"result\": ...}. OBJECT \"-\" reads JSON Lines on stdin.\n"
+          "                  fields are 0), in engineering units (\"cam_pitch\": -30.0), or as wire\n"
+          "                  integers with --raw (\"cam_pitch\": -3000); reserved_main / reserved_sub\n"
+          "                  as hex. A host packet may give \"command\": {...} instead of params, a\n"
+          "                  GCU packet \"feedback\": {\"result\": ...}. OBJECT \"-\" reads JSON Lines\n"
+          "                  on stdin; a bad line (a NUL byte, a truncated object, anything after\n"
+          "                  it) is an error naming its line.\n"
           "  COMMAND         a host packet with no carrier data (bytes 5-68 zero except\n"
           "                  sub_request = 0x01) carrying the command:\n\n",
           out);
     cmdargs_list(out);
     fputs("\n  --cameras CAMS: camera numbers (1, or 1,2 = 0x03), a hex mask (0x03) or all (0xFF); a\n"
           "                  decimal number is a camera: 3 is camera 3 (0x04).\n"
-          "  --protocol 1|2: the version byte (default 1).\n",
+          "  --protocol 1|2: the version byte (default 1).\n"
+          "  --raw:          --json OBJECT gives wire integers, not engineering units.\n",
           out);
 }
 
@@ -49,38 +55,40 @@ static void print_hex(const uint8_t *buf, size_t len)
 
 /* ---- --json ------------------------------------------------------------------ */
 
-static int encode_object(const char *text, uint8_t version, const char *where)
+static int encode_object(const char *text, size_t len, uint8_t version, text_view view, const char *where)
 {
-    json_error_t error;
     uint8_t buf[XF_PACKET_MAX_LEN];
-    size_t len = 0;
+    size_t n = 0;
+    text_err e;
+    json_t *obj;
     int rc;
-    json_t *obj = json_loads(text, JSON_REJECT_DUPLICATES, &error);
-    if (obj == NULL) {
-        return cli_fail("%s: invalid JSON at column %d: %s", where, error.column, error.text);
-    }
-    rc = jsonpkt_to_wire(obj, version, where, buf, sizeof(buf), &len);
+    text_err_init(&e);
+    obj = jsonpkt_parse(text, len, where, &e);
+    rc = (obj != NULL) ? jsonpkt_to_wire(obj, version, view, where, buf, sizeof(buf), &n, &e) : TEXT_BAD;
     json_decref(obj);
-    if (rc == XFGCU_EXIT_OK) {
-        print_hex(buf, len);
+    if (rc != TEXT_OK) {
+        return cli_text_fail(&e, NULL);
     }
-    return rc;
+    print_hex(buf, n);
+    return XFGCU_EXIT_OK;
 }
 
 /* "-": one object per line (the output of decode --json); blank lines are skipped. */
-static int encode_lines(uint8_t version)
+static int encode_lines(uint8_t version, text_view view)
 {
     char *line = NULL;
     size_t cap = 0, number = 0;
+    ssize_t got;
     int rc = XFGCU_EXIT_OK;
-    while (rc == XFGCU_EXIT_OK && getline(&line, &cap, stdin) >= 0) {
+    while (rc == XFGCU_EXIT_OK && (got = getline(&line, &cap, stdin)) >= 0) {
         char where[48];
+        size_t len = (size_t)got;
         number++;
-        if (strspn(line, " \t\r\n") == strlen(line)) {
-            continue;
+        if (strspn(line, " \t\r\n") == len) {
+            continue; /* a blank line (a NUL byte would stop strspn short: not blank) */
         }
         snprintf(where, sizeof(where), "encode: stdin line %zu", number);
-        rc = encode_object(line, version, where);
+        rc = encode_object(line, len, version, view, where);
     }
     free(line);
     if (rc == XFGCU_EXIT_OK && ferror(stdin)) { /* closed, a directory, an I/O error: not an empty input */
@@ -91,35 +99,17 @@ static int encode_lines(uint8_t version)
 
 /* ---- COMMAND ------------------------------------------------------------------ */
 
-int encode_command(const cmd_spec *spec, const xf_command *command, uint8_t version, uint8_t *out, size_t cap,
-                   size_t *len)
-{
-    xf_host_packet pkt;
-    xf_command cmd = *command;
-    xf_field bad = XF_F_NONE;
-    xf_err err;
-    cmdargs_for_version(&cmd, version); /* --protocol N: N's meaning */
-    xf_host_packet_init(&pkt, version); /* no carrier data; sub_request = 0x01 */
-    err = xf_host_set_command(&pkt, &cmd, &bad);
-    if (err == XF_OK) {
-        err = xf_host_pack(&pkt, out, cap, len);
-    }
-    if (err != XF_OK) {
-        return cli_fail("encode %s: %s%s%s", cmdargs_name(spec), xf_strerror(err), bad != XF_F_NONE ? ": " : "",
-                        bad != XF_F_NONE ? xf_field_name(bad) : "");
-    }
-    return XFGCU_EXIT_OK;
-}
-
 static int encode_named(const cmd_line *l)
 {
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t len = 0;
-    int rc = encode_command(l->spec, &l->cmd, l->version, buf, sizeof(buf), &len);
-    if (rc == XFGCU_EXIT_OK) {
-        print_hex(buf, len);
+    text_err e;
+    text_err_init(&e);
+    if (encode_command(&l->spec, &l->cmd, l->version, buf, sizeof(buf), &len, &e) != TEXT_OK) {
+        return cli_text_fail(&e, NULL);
     }
-    return rc;
+    print_hex(buf, len);
+    return XFGCU_EXIT_OK;
 }
 
 int cmd_encode(const cli_link *link, int argc, char **argv)
@@ -130,9 +120,11 @@ int cmd_encode(const cli_link *link, int argc, char **argv)
         return rc;
     }
     if (l.json != NULL) {
-        return (strcmp(l.json, "-") == 0) ? encode_lines(l.version) : encode_object(l.json, l.version, "encode --json");
+        return (strcmp(l.json, "-") == 0)
+                   ? encode_lines(l.version, link->view)
+                   : encode_object(l.json, strlen(l.json), l.version, link->view, "encode --json");
     }
-    if (l.spec == NULL) {
+    if (!l.has_spec) {
         return cli_fail("encode: give --json OBJECT or a COMMAND (see 'xfgcu encode --help')");
     }
     return encode_named(&l);

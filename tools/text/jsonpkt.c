@@ -1,21 +1,20 @@
 /*
  * jsonpkt.c - packet <-> JSON object (see jsonpkt.h for the keys).
  *
- * Both directions walk the same field rows (fields.h), so what decode
- * prints is exactly what encode reads back. Typed extras ("command",
- * "feedback") come from the codec's own decoders; on input they are only
- * used when "params" is absent, and a "command" that disagrees with the
- * "params" next to it is refused rather than silently dropped.
+ * Both directions walk the rows of the codec's field table (xfgcu/xf_fields.h), so what decode
+ * prints is exactly what encode reads back, in either view. Typed extras ("command",
+ * "feedback") come from the codec's own decoders; on input they are only used when "params" is
+ * absent, and a "command" that disagrees with the "params" next to it is refused rather than
+ * silently dropped.
  */
 #define _POSIX_C_SOURCE 200809L /* gmtime_r */
 
 #include "jsonpkt.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "fields.h"
 #include "hexin.h"
 
 /* ---- output ---------------------------------------------------------------- */
@@ -40,8 +39,16 @@ static void put_hex(builder *b, const char *key, const uint8_t *bytes, size_t n)
     put(b, key, json_string(text));
 }
 
+json_t *jsonpkt_value(const xf_wire_field *f, int64_t raw, uint8_t version, text_view view)
+{
+    if (view == TEXT_ENGINEERING && xf_wire_field_decimals(f, version) > 0u) {
+        return json_real(xf_wire_field_value(f, raw, version));
+    }
+    return json_integer((json_int_t)raw);
+}
+
 /* Typed parameters of a host packet's order, or why they do not decode. */
-static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t n, uint8_t version)
+static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t n, uint8_t version, text_view view)
 {
     const xf_order_info *info = xf_order_lookup(order);
     xf_field bad = XF_F_NONE;
@@ -61,7 +68,7 @@ static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t
         }
         for (i = 0; i < info->nfields; i++) {
             xf_field f = (xf_field)info->fields[i];
-            put(&c, xf_field_name(f), json_integer(xf_command_get(&cmd, f)));
+            put(&c, xf_field_name(f), jsonpkt_value(xf_wire_param(f), xf_command_get(&cmd, f), version, view));
         }
         b->failed |= c.failed;
         put(b, "command", c.obj);
@@ -105,9 +112,9 @@ static void put_feedback(builder *b, uint8_t order, const uint8_t *fb, size_t n)
 }
 
 /* A reserved block, as hex, when one of its bytes is not 0. */
-static void put_reserved(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version, const field_desc *f)
+static void put_reserved(builder *b, const uint8_t *buf, uint8_t version, const xf_wire_field *f)
 {
-    size_t i, n, at = reserved_span(dir, f, version, &n);
+    size_t i, n, at = reserved_span(f, version, &n);
     for (i = 0; i < n; i++) {
         if (buf[at + i] != 0u) {
             put_hex(b, f->name, buf + at, n);
@@ -119,47 +126,55 @@ static void put_reserved(builder *b, const uint8_t *buf, xf_direction dir, uint8
 /* The order pod_status is read in, and the names of its flags in that order. */
 static void put_pod(builder *b, uint16_t raw, pod_reading how)
 {
+    const xf_wire_field *row = pod_row();
     xf_pod_order order = pod_order_for(raw, how);
     unsigned flags = xf_pod_flags(raw, order);
     json_t *names = json_array();
     size_t i;
     put(b, "pod_status_order", json_string(pod_order_name(order)));
-    for (i = 0; names != NULL && pod_flag_names[i].name != NULL; i++) {
-        if ((flags & pod_flag_names[i].mask) != 0u &&
-            json_array_append_new(names, json_string(pod_flag_names[i].name)) != 0) {
+    for (i = 0; names != NULL && i < row->nbits; i++) {
+        if ((flags & row->bits[i].mask) != 0u && json_array_append_new(names, json_string(row->bits[i].name)) != 0) {
             b->failed = 1;
         }
     }
     put(b, "pod_flags", names);
 }
 
-static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version, pod_reading pod)
+/* The extras after a field: the names of codes, the pod status word's flags. */
+static void put_extras(builder *b, const xf_wire_field *f, int64_t v, pod_reading pod)
 {
-    size_t i, n;
-    const field_desc *rows = fields_of(dir, &n);
-    for (i = 0; i < n; i++) {
-        const field_desc *f = &rows[i];
-        long long v = field_get(buf, f);
-        const char *name = NULL;
-        if (f->unit == FU_RESERVED) {
-            put_reserved(b, buf, dir, version, f);
-            continue;
-        }
-        if (!field_present(f, version)) {
-            continue;
-        }
-        put(b, f->name, json_integer(v));
-        if (f->unit == FU_POD_STATUS) {
-            put_pod(b, (uint16_t)v, pod);
-        } else if (f->unit == FU_MODE && (name = xf_mode_name((uint8_t)v)) != NULL) {
-            put(b, "mode_name", json_string(name));
-        } else if (f->unit == FU_MODEL && (name = xf_gimbal_model((uint8_t)v)) != NULL) {
-            put(b, "gimbal_model", json_string(name));
-        }
+    const char *name = (f->value_name != NULL) ? f->value_name((uint8_t)v) : NULL;
+    if (f == pod_row()) {
+        put_pod(b, (uint16_t)v, pod);
+    } else if (name != NULL && strcmp(f->name, "gimbal_mode") == 0) {
+        put(b, "mode_name", json_string(name));
+    } else if (name != NULL && strcmp(f->name, "gimbal_code") == 0) {
+        put(b, "gimbal_model", json_string(name));
     }
 }
 
-json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod)
+static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t version, pod_reading pod,
+                       text_view view)
+{
+    size_t i, n;
+    const xf_wire_field *rows = xf_wire_fields(xf_wire_frames(dir), &n);
+    for (i = 0; i < n; i++) {
+        const xf_wire_field *f = &rows[i];
+        int64_t v;
+        if (f->kind == XF_WIRE_RESERVED) {
+            put_reserved(b, buf, version, f);
+            continue;
+        }
+        if (!xf_wire_field_present(f, version)) {
+            continue;
+        }
+        v = xf_wire_field_get(f, buf);
+        put(b, f->name, jsonpkt_value(f, v, version, view));
+        put_extras(b, f, v, pod);
+    }
+}
+
+json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod, text_view view)
 {
     uint8_t version, order;
     const uint8_t *params = buf + XF_OFF_PARAMS;
@@ -185,11 +200,11 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_
     }
     put_hex(&b, "params", params, plen);
     if (dir == XF_DIR_HOST) {
-        put_command(&b, order, params, plen, version);
+        put_command(&b, order, params, plen, version, view);
     } else {
         put_feedback(&b, order, params, plen);
     }
-    put_fields(&b, buf, dir, version, pod);
+    put_fields(&b, buf, dir, version, pod, view);
     if (b.failed) {
         json_decref(b.obj);
         return NULL;
@@ -197,17 +212,27 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_
     return b.obj;
 }
 
-int jsonpkt_print(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod, FILE *out)
+char *jsonpkt_dumps(const json_t *obj)
 {
-    json_t *obj = jsonpkt_from_wire(buf, len, dir, pod);
-    char *text = (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER) : NULL;
-    json_decref(obj);
-    if (text == NULL) {
-        return cli_fail("decode: out of memory");
+    /* 15 significant digits: the decimal of every engineering value (at most 10 digits) without
+     * a double's binary tail (0.29, not 0.28999999999999998), which reads back to it exactly */
+    return (obj != NULL) ? json_dumps(obj, JSON_COMPACT | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(15)) : NULL;
+}
+
+json_t *jsonpkt_parse(const char *text, size_t len, const char *where, text_err *e)
+{
+    json_error_t error;
+    const char *nul = memchr(text, '\0', len);
+    json_t *v;
+    if (nul != NULL) {
+        text_fail(e, where, "NUL byte at column %zu (the JSON text must not hold one)", (size_t)(nul - text) + 1u);
+        return NULL;
     }
-    fprintf(out, "%s\n", text);
-    free(text);
-    return XFGCU_EXIT_OK;
+    v = json_loadb(text, len, JSON_REJECT_DUPLICATES, &error);
+    if (v == NULL) {
+        text_fail(e, where, "invalid JSON at column %d: %s", error.column, error.text);
+    }
+    return v;
 }
 
 /* ---- input ----------------------------------------------------------------- */
@@ -215,6 +240,8 @@ int jsonpkt_print(const uint8_t *buf, size_t len, xf_direction dir, pod_reading 
 typedef struct reader {
     const json_t *obj;
     const char *where;
+    text_err *err;
+    text_view view;
     xf_direction dir;
     uint8_t version;
     uint8_t order;
@@ -248,19 +275,19 @@ static int check_keys(const reader *r)
     const char *side = (r->dir == XF_DIR_HOST) ? "host" : "gcu";
     json_object_foreach((json_t *)r->obj, key, value)
     {
-        const field_desc *f = field_find(r->dir, key);
+        const xf_wire_field *f = xf_wire_field_find(xf_wire_frames(r->dir), key);
         (void)value;
-        if (f != NULL && !field_present(f, r->version)) {
-            return cli_fail_in(
-                r->where, "key '%s' needs version >= %u (in version %u these bytes are reserved: use reserved_sub)",
-                key, (unsigned)f->since, (unsigned)r->version);
+        if (f != NULL && !xf_wire_field_present(f, r->version)) {
+            return text_fail(r->err, r->where,
+                             "key '%s' needs version >= %u (in version %u these bytes are reserved: use reserved_sub)",
+                             key, (unsigned)f->since, (unsigned)r->version);
         }
         if (f == NULL && !in_list(common_keys, key) &&
             !in_list(r->dir == XF_DIR_HOST ? host_extra_keys : gcu_extra_keys, key)) {
-            return cli_fail_in(r->where, "unknown key '%s' for a %s packet", key, side);
+            return text_fail(r->err, r->where, "unknown key '%s' for a %s packet", key, side);
         }
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
 }
 
 /* An optional integer member in [lo, hi]; *present tells whether it was there. */
@@ -270,16 +297,52 @@ static int get_int(const reader *r, const json_t *obj, const char *prefix, const
     json_t *v = json_object_get(obj, key);
     *present = (v != NULL);
     if (v == NULL) {
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
     if (!json_is_integer(v)) {
-        return cli_fail_in(r->where, "%s%s must be an integer in %lld..%lld", prefix, key, lo, hi);
+        return text_fail(r->err, r->where, "%s%s must be an integer in %lld..%lld", prefix, key, lo, hi);
     }
     *out = (long long)json_integer_value(v);
     if (*out < lo || *out > hi) {
-        return cli_fail_in(r->where, "%s%s %lld is out of range %lld..%lld", prefix, key, *out, lo, hi);
+        return text_fail(r->err, r->where, "%s%s %lld is out of range %lld..%lld", prefix, key, *out, lo, hi);
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
+}
+
+/* An optional field's value in the reader's view: its wire integer into *out. */
+static int get_field(const reader *r, const json_t *obj, const char *prefix, const xf_wire_field *f, int64_t *out,
+                     int *present)
+{
+    json_t *v = json_object_get(obj, f->name);
+    unsigned d = (r->view == TEXT_RAW) ? 0u : xf_wire_field_decimals(f, r->version);
+    int64_t lo, hi;
+    long long i = 0;
+    xf_err err;
+    xf_wire_field_range(f, &lo, &hi);
+    if (d == 0u) { /* a wire integer */
+        int rc = get_int(r, obj, prefix, f->name, (long long)lo, (long long)hi, &i, present);
+        *out = (int64_t)i;
+        return rc;
+    }
+    *present = (v != NULL);
+    if (v == NULL) {
+        return TEXT_OK;
+    }
+    err = json_is_number(v) ? xf_wire_field_raw(f, json_number_value(v), r->version, out) : XF_ERR_ARG;
+    if (err == XF_OK) {
+        return TEXT_OK;
+    }
+    if (!json_is_number(v)) {
+        return text_fail(r->err, r->where, "%s%s must be a number (%s), %.*f..%.*f", prefix, f->name, f->unit, (int)d,
+                         xf_wire_field_value(f, lo, r->version), (int)d, xf_wire_field_value(f, hi, r->version));
+    }
+    if (err == XF_ERR_RANGE) {
+        return text_fail(r->err, r->where, "%s%s %.15g is out of range %.*f..%.*f %s", prefix, f->name,
+                         json_number_value(v), (int)d, xf_wire_field_value(f, lo, r->version), (int)d,
+                         xf_wire_field_value(f, hi, r->version), f->unit);
+    }
+    return text_fail(r->err, r->where, "%s%s %.15g is not a whole number of steps of %.*f %s (the wire's resolution)",
+                     prefix, f->name, json_number_value(v), (int)d, xf_wire_field_value(f, 1, r->version), f->unit);
 }
 
 /* A hex string member into @p out (at most @p cap bytes); *n gets its size. */
@@ -291,19 +354,19 @@ static int get_hex(const reader *r, const char *key, uint8_t *out, size_t cap, s
     *present = (v != NULL);
     *n = 0;
     if (v == NULL) {
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
     if (!json_is_string(v)) {
-        return cli_fail_in(r->where, "%s must be a string of hex bytes", key);
+        return text_fail(r->err, r->where, "%s must be a string of hex bytes", key);
     }
     if (hex_parse_string(json_string_value(v), out, cap, n, &fault) != 0) {
         hex_fault_text(&fault, why, sizeof(why));
-        return cli_fail_in(r->where, "%s, position %zu: %s", key, fault.offset + 1u, why);
+        return text_fail(r->err, r->where, "%s, position %zu: %s", key, fault.offset + 1u, why);
     }
     if (*n > cap) {
-        return cli_fail_in(r->where, "%s holds %zu bytes, at most %zu fit in a packet", key, *n, cap);
+        return text_fail(r->err, r->where, "%s holds %zu bytes, at most %zu fit in a packet", key, *n, cap);
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
 }
 
 static int read_direction(reader *r)
@@ -317,9 +380,9 @@ static int read_direction(reader *r)
     } else if (s != NULL && strcmp(s, "gcu") == 0) {
         r->dir = XF_DIR_GCU;
     } else {
-        return cli_fail_in(r->where, "direction must be \"host\" or \"gcu\"");
+        return text_fail(r->err, r->where, "direction must be \"host\" or \"gcu\"");
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
 }
 
 /* "order": a number or a canonical name; without it, "order_name"; else the null order. */
@@ -331,27 +394,16 @@ static int read_order(reader *r)
     }
     if (v == NULL) {
         r->order = XF_ORDER_NULL;
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
     if (json_is_integer(v) && json_integer_value(v) >= 0 && json_integer_value(v) <= 255) {
         r->order = (uint8_t)json_integer_value(v);
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
     if (json_is_string(v) && xf_order_from_name(json_string_value(v), &r->order) == XF_OK) {
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
-    return cli_fail_in(r->where, "order must be an integer 0..255 or the name of an order, like \"zoom_to\"");
-}
-
-/* The range of a member: what xf_command_set() saturates to, its type's. */
-static void member_range(xf_field f, long long *lo, long long *hi)
-{
-    xf_command c;
-    memset(&c, 0, sizeof(c));
-    xf_command_set(&c, f, INT32_MIN);
-    *lo = xf_command_get(&c, f);
-    xf_command_set(&c, f, INT32_MAX);
-    *hi = xf_command_get(&c, f);
+    return text_fail(r->err, r->where, "order must be an integer 0..255 or the name of an order, like \"zoom_to\"");
 }
 
 static int command_member(const reader *r, const xf_order_info *info, const char *key, xf_field *f)
@@ -361,13 +413,13 @@ static int command_member(const reader *r, const xf_order_info *info, const char
     for (i = 0; i < info->nfields; i++) {
         if (strcmp(xf_field_name((xf_field)info->fields[i]), key) == 0) {
             *f = (xf_field)info->fields[i];
-            return XFGCU_EXIT_OK;
+            return TEXT_OK;
         }
         strncat(names, i > 0u ? ", " : "", sizeof(names) - strlen(names) - 1u);
         strncat(names, xf_field_name((xf_field)info->fields[i]), sizeof(names) - strlen(names) - 1u);
     }
-    return cli_fail_in(r->where, "command.%s is not a parameter of %s (%s)", key, xf_order_name(info->order),
-                       info->nfields > 0u ? names : "it takes none");
+    return text_fail(r->err, r->where, "command.%s is not a parameter of %s (%s)", key, xf_order_name(info->order),
+                     info->nfields > 0u ? names : "it takes none");
 }
 
 /* Parameters from a "command" object: missing members take xf_command_init's defaults. */
@@ -380,34 +432,33 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
     xf_command cmd;
     xf_err err;
     if (info == NULL) {
-        return cli_fail_in(r->where, "command needs a known order; 0x%02X is not one (give params instead)", r->order);
+        return text_fail(r->err, r->where, "command needs a known order; 0x%02X is not one (give params instead)",
+                         r->order);
     }
     if (!json_is_object(c)) {
-        return cli_fail_in(r->where, "command must be an object of %s's parameters", xf_order_name(info->order));
+        return text_fail(r->err, r->where, "command must be an object of %s's parameters", xf_order_name(info->order));
     }
     xf_command_init(&cmd, r->order);
     json_object_foreach((json_t *)c, key, value)
     {
         xf_field f = XF_F_CAMERAS;
-        long long v = 0, lo, hi;
+        int64_t v = 0;
         int present, rc = command_member(r, info, key, &f);
         (void)value;
-        member_range(f, &lo, &hi);
-        if (rc == XFGCU_EXIT_OK) {
-            rc = get_int(r, c, "command.", key, lo, hi, &v, &present);
+        if (rc == TEXT_OK) {
+            rc = get_field(r, c, "command.", xf_wire_param(f), &v, &present);
         }
-        if (rc != XFGCU_EXIT_OK) {
+        if (rc != TEXT_OK) {
             return rc;
         }
         xf_command_set(&cmd, f, (int32_t)v);
     }
     err = xf_command_encode(&cmd, r->version, out, XF_PARAMS_MAX, n, &bad);
     if (err != XF_OK) {
-        return cli_fail_in(r->where, "command.%s is out of range for %s (protocol %u)",
-                           bad != XF_F_NONE ? xf_field_name(bad) : "?", xf_order_name(info->order),
-                           (unsigned)r->version);
+        return text_fail(r->err, r->where, "command.%s is out of range for %s (protocol %u)",
+                         bad != XF_F_NONE ? xf_field_name(bad) : "?", xf_order_name(info->order), (unsigned)r->version);
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
 }
 
 /* Host: "command" builds the params when they are absent, and must agree with them when present. */
@@ -418,10 +469,10 @@ static int read_command(reader *r)
     size_t n = 0;
     int rc;
     if (c == NULL) {
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
     rc = params_from_command(r, c, bytes, &n);
-    if (rc != XFGCU_EXIT_OK) {
+    if (rc != TEXT_OK) {
         return rc;
     }
     if (!r->has_params) {
@@ -429,9 +480,9 @@ static int read_command(reader *r)
         r->params_len = n;
         r->has_params = 1;
     } else if (n != r->params_len || memcmp(bytes, r->params, n) != 0) {
-        return cli_fail_in(r->where, "command and params disagree; give only one of them");
+        return text_fail(r->err, r->where, "command and params disagree; give only one of them");
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
 }
 
 /* GCU: "feedback" builds the state byte only when params are absent (it is derived from them). */
@@ -444,7 +495,7 @@ static int read_feedback(reader *r)
     int present, rc;
     xf_result result;
     if (f == NULL || r->has_params) {
-        return XFGCU_EXIT_OK;
+        return TEXT_OK;
     }
     if (strcmp(s, "ok") == 0) {
         result = XF_RESULT_OK;
@@ -453,10 +504,10 @@ static int read_feedback(reader *r)
     } else if (strcmp(s, "operating") == 0) {
         result = XF_RESULT_OPERATING;
     } else {
-        return cli_fail_in(r->where, "feedback.result must be \"ok\", \"failed\" or \"operating\"");
+        return text_fail(r->err, r->where, "feedback.result must be \"ok\", \"failed\" or \"operating\"");
     }
     rc = get_int(r, f, "feedback.", "failed_cameras", 0, 255, &cams, &present);
-    if (rc == XFGCU_EXIT_OK) {
+    if (rc == TEXT_OK) {
         r->params[0] = xf_feedback_state(r->order, result, (uint8_t)cams);
         r->params_len = 1;
         r->has_params = 1;
@@ -468,15 +519,30 @@ static int read_params(reader *r)
 {
     long long length = 0;
     int present, rc = get_hex(r, "params", r->params, sizeof(r->params), &r->params_len, &r->has_params);
-    if (rc == XFGCU_EXIT_OK) {
+    if (rc == TEXT_OK) {
         rc = (r->dir == XF_DIR_HOST) ? read_command(r) : read_feedback(r);
     }
-    if (rc == XFGCU_EXIT_OK) {
+    if (rc == TEXT_OK) {
         rc = get_int(r, r->obj, "", "length", XF_PACKET_MIN_LEN, XF_PACKET_MAX_LEN, &length, &present);
     }
-    if (rc == XFGCU_EXIT_OK && present && (size_t)length != XF_PACKET_MIN_LEN + r->params_len) {
-        return cli_fail_in(r->where, "length %lld disagrees with %zu params bytes (the packet is %zu bytes)", length,
-                           r->params_len, (size_t)XF_PACKET_MIN_LEN + r->params_len);
+    if (rc == TEXT_OK && present && (size_t)length != XF_PACKET_MIN_LEN + r->params_len) {
+        return text_fail(r->err, r->where, "length %lld disagrees with %zu params bytes (the packet is %zu bytes)",
+                         length, r->params_len, (size_t)XF_PACKET_MIN_LEN + r->params_len);
+    }
+    return rc;
+}
+
+/* A reserved block's hex, when given, into the packet's bytes @p out. */
+static int read_reserved(const reader *r, const xf_wire_field *f, uint8_t *out)
+{
+    uint8_t bytes[RESERVED_MAX];
+    size_t got = 0, len, at = reserved_span(f, r->version, &len);
+    int present, rc = get_hex(r, f->name, bytes, sizeof(bytes), &got, &present);
+    if (rc == TEXT_OK && present && got != len) {
+        return text_fail(r->err, r->where, "%s must hold %zu bytes for this packet, not %zu", f->name, len, got);
+    }
+    if (rc == TEXT_OK && present) {
+        memcpy(out + at, bytes, len);
     }
     return rc;
 }
@@ -484,34 +550,23 @@ static int read_params(reader *r)
 /* The fields and reserved blocks into the packet's bytes @p out. */
 static int read_fields(const reader *r, uint8_t *out)
 {
-    size_t i, n, len, at;
-    const field_desc *rows = fields_of(r->dir, &n);
+    size_t i, n;
+    const xf_wire_field *rows = xf_wire_fields(xf_wire_frames(r->dir), &n);
     for (i = 0; i < n; i++) {
-        const field_desc *f = &rows[i];
-        uint8_t bytes[RESERVED_MAX];
-        long long v = 0, lo, hi;
-        size_t got = 0;
-        int present, rc;
-        if (f->unit == FU_RESERVED) {
-            at = reserved_span(r->dir, f, r->version, &len);
-            rc = get_hex(r, f->name, bytes, sizeof(bytes), &got, &present);
-            if (rc == XFGCU_EXIT_OK && present && got != len) {
-                rc = cli_fail_in(r->where, "%s must hold %zu bytes for this packet, not %zu", f->name, len, got);
-            } else if (rc == XFGCU_EXIT_OK && present) {
-                memcpy(out + at, bytes, len);
-            }
-        } else if (field_present(f, r->version)) {
-            field_range(f, &lo, &hi);
-            rc = get_int(r, r->obj, "", f->name, lo, hi, &v, &present);
-            field_set(out, f, v);
-        } else {
-            continue;
+        const xf_wire_field *f = &rows[i];
+        int64_t v = 0;
+        int present, rc = TEXT_OK;
+        if (f->kind == XF_WIRE_RESERVED) {
+            rc = read_reserved(r, f, out);
+        } else if (xf_wire_field_present(f, r->version)) {
+            rc = get_field(r, r->obj, "", f, &v, &present);
+            xf_wire_field_put(f, out, v);
         }
-        if (rc != XFGCU_EXIT_OK) {
+        if (rc != TEXT_OK) {
             return rc;
         }
     }
-    return XFGCU_EXIT_OK;
+    return TEXT_OK;
 }
 
 static int read_header(reader *r, uint8_t default_version)
@@ -519,17 +574,17 @@ static int read_header(reader *r, uint8_t default_version)
     long long v = default_version;
     int present;
     int rc = read_direction(r);
-    if (rc == XFGCU_EXIT_OK) {
+    if (rc == TEXT_OK) {
         rc = get_int(r, r->obj, "", "version", 0, 255, &v, &present);
         r->version = (uint8_t)v;
     }
-    if (rc == XFGCU_EXIT_OK) {
+    if (rc == TEXT_OK) {
         rc = check_keys(r);
     }
-    if (rc == XFGCU_EXIT_OK) {
+    if (rc == TEXT_OK) {
         rc = read_order(r);
     }
-    return (rc == XFGCU_EXIT_OK) ? read_params(r) : rc;
+    return (rc == TEXT_OK) ? read_params(r) : rc;
 }
 
 /* The packet of a host or GCU packet struct: only the codec writes the header, length and CRC. */
@@ -539,8 +594,8 @@ static xf_err pack(xf_direction dir, const xf_host_packet *host, const xf_gcu_pa
     return (dir == XF_DIR_HOST) ? xf_host_pack(host, out, cap, len) : xf_gcu_pack(gcu, out, cap, len);
 }
 
-int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *where, uint8_t *out, size_t cap,
-                    size_t *len)
+int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
+                    size_t cap, size_t *len, text_err *e)
 {
     reader r;
     xf_host_packet host;
@@ -551,11 +606,13 @@ int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *wher
     memset(&r, 0, sizeof(r));
     r.obj = obj;
     r.where = where;
+    r.err = e;
+    r.view = view;
     if (!json_is_object(obj)) {
-        return cli_fail_in(r.where, "expected a JSON object");
+        return text_fail(e, where, "expected a JSON object");
     }
     rc = read_header(&r, default_version);
-    if (rc != XFGCU_EXIT_OK) {
+    if (rc != TEXT_OK) {
         return rc;
     }
     /* The codec packs the header, order, params and CRC around frames of zeros (missing fields
@@ -571,7 +628,7 @@ int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *wher
     err = pack(r.dir, &host, &gcu, out, cap, len);
     if (err == XF_OK) {
         rc = read_fields(&r, out);
-        if (rc != XFGCU_EXIT_OK) {
+        if (rc != TEXT_OK) {
             return rc;
         }
         frame.data = out;
@@ -581,7 +638,7 @@ int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, const char *wher
     if (err == XF_OK) {
         err = pack(r.dir, &host, &gcu, out, cap, len);
     }
-    return (err == XF_OK) ? XFGCU_EXIT_OK : cli_fail_in(r.where, "cannot build the packet: %s", xf_strerror(err));
+    return (err == XF_OK) ? TEXT_OK : text_fail(e, where, "cannot build the packet: %s", xf_strerror(err));
 }
 
 /* ---- times ------------------------------------------------------------------------ */
