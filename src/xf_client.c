@@ -12,6 +12,7 @@
 #define XF__CTRL_DROPPED  3u /* none, because the last one was dropped (XF_CTRL_DROPPED) */
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 #define XF__STEADY        25 /* packet periods in a row with one reply each: a link that keeps order */
+#define XF__PROMPT        6  /* ... or from the first packet on, each reply before the next, at one phase */
 
 /* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
 static const xf_client_config xf__defaults = {
@@ -437,12 +438,20 @@ static void xf__out_of_turn(xf_client *c, uint32_t n, int proof)
     xf__set_bound(c);
 }
 
+/* Whether the first periods may still show the link in order (XF__PROMPT): every period since
+ * the first packet brought one reply, at one phase (xf__judge_round()). */
+static int xf__judging(const xf_client *c) { return !c->health.in_order && c->steady == c->health.packets_sent; }
+
 /* Replies on a link that keeps order and does not duplicate answer the packets in the order they
  * were sent, once each. A reply of the last command's order after a reply of another order that
  * came after one of its own, or more replies of the running command than it had packets, cannot
  * be that. */
 static void xf__judge_reply(xf_client *c, uint8_t order)
 {
+    if (c->round_replies == 0u) {
+        uint32_t rtt = xf_ms_since(c->now_ms, c->last_tx_ms); /* under 1.5 periods where it counts */
+        c->round_rtt = (uint16_t)((rtt < UINT16_MAX) ? rtt : UINT16_MAX);
+    }
     if (c->round_replies < UINT8_MAX) {
         c->round_replies++;
     }
@@ -471,25 +480,39 @@ static void xf__in_order(xf_client *c)
     }
 }
 
-/* At a packet due one period after the last (not after a silence, not late): the replies that
- * came since. The first packet's reply before the second packet shows a link that answers within
- * a period; on a link that keeps order with a steady delay one reply comes per period, so
- * XF__STEADY periods in a row with one reply each show it too. More than one in a period means
- * replies held back and overtaken, or copies: the delay varies by a period or more, as it does
- * on a link that reorders (and on a GCU, or a loaded host, that answers in bursts). Periods before
- * the third packet are not held against the link: replies to a program that ran before on it may
- * still come. */
+/*
+ * At a packet due one period after the last (not after a silence, not late): the replies that
+ * came since. A link that keeps order with a steady delay brings one reply a period; a link whose
+ * delay varies by a period or more, as one that reorders does, brings none in some periods and
+ * several in others (held back and overtaken, or copies; so do a GCU, or a loaded host, that
+ * answer in bursts). So the link is taken to keep order after XF__STEADY periods in a row with one
+ * reply each, or after XF__PROMPT from the first packet on whose replies also came at one phase:
+ * each before the next packet (so it answered its own: nothing else was in flight at first), each
+ * as long after its packet as the first (within an eighth of a period, and a millisecond for the
+ * clock's grain). A link that reorders rarely answers so six times from the start; one reply a
+ * period at random phases is far more common there (docs/protocol.md §7.4 has the figures).
+ * Periods before the third packet are not counted out of turn: replies to a program that ran
+ * before on the link may still come.
+ */
 static void xf__judge_round(xf_client *c)
 {
     uint32_t since = xf_ms_since(c->now_ms, c->last_tx_ms);
     if (since <= c->period_ms + c->period_ms / 2u) {
-        if (c->health.packets_sent == 1u && c->round_replies == 1u) {
-            xf__in_order(c);
-        } else if (c->health.packets_sent >= 3u && c->round_replies > 1u) {
+        uint32_t tol = c->period_ms / 8u + 1u;
+        int off_phase = c->steady + 1u == c->health.packets_sent && /* the first periods, each answered so far */
+                        (c->round_rtt > c->phase_ms + tol || c->phase_ms > c->round_rtt + tol);
+        if (c->health.packets_sent >= 3u && c->round_replies > 1u) {
             xf__out_of_turn(c, c->round_replies - 1u, 0);
         }
-        c->steady = (c->health.packets_sent >= 3u && c->round_replies == 1u) ? (uint8_t)(c->steady + 1u) : 0u;
-        if (c->steady >= XF__STEADY) {
+        if (c->round_replies != 1u) {
+            c->steady = 0;
+        } else if (c->steady == 0u || off_phase) {
+            c->steady = 1; /* a run starts here: after an off-phase reply, not from the first packet */
+            c->phase_ms = c->round_rtt;
+        } else if (c->steady < UINT8_MAX) {
+            c->steady++;
+        }
+        if (c->steady >= (xf__judging(c) ? XF__PROMPT : XF__STEADY)) {
             xf__in_order(c);
         }
     }
@@ -700,6 +723,9 @@ static int xf__may_start(xf_client *c)
     }
     if (c->active || c->q_count == 0u || c->nulls_owed > 0u || c->synced != 2u) {
         return 0; /* nothing to start, a null owed, or replies from before this client may be in flight */
+    }
+    if (xf__judging(c) && !c->cfg.reorder_fixed && c->cfg.reorder_ms == 0u) {
+        return 0; /* the first periods may yet show the link in order: a few periods, not the bound */
     }
     /* Replies to the previous packets of this order may still be on their way, each with that
      * command's state. Replies come in order: send nulls until one of theirs is back, then every

@@ -189,9 +189,10 @@ typedef struct xf_health {
     /** the version byte of the packets the GCU answers: the one a reply to a null came for; 0 before (and,
      *  with version_auto, while the client looks for it again after the link went down) */
     uint8_t version_answered;
-    /** 1: the link has shown that it keeps order (the first packet answered before the second was sent,
-     *  or 25 packet periods in a row with one reply each) and no reply came out of turn since; never again
-     *  once a reply came that no link in order delivers (docs/protocol.md §7.4) */
+    /** 1: the link has shown that it keeps order (its first six packets each answered before the next was
+     *  sent, all with the same round trip within an eighth of a period, or 25 packet periods in a row with
+     *  one reply each) and no reply came out of turn since; never again once a reply came that no link in
+     *  order delivers (docs/protocol.md §7.4) */
     uint8_t in_order;
     /** the reorder bound in force, ms: xf_client_config.reorder_ms when the application set one (or fixed
      *  0); else the client's own while the link is not in_order, 0 while it is */
@@ -356,11 +357,13 @@ typedef struct xf_client_config {
      *  command (docs/protocol.md §7.4), so that no reply is taken for the wrong command and the
      *  GCU runs each command once. At most 1000, and stale_ms must exceed a packet period plus
      *  twice this (xf_client_config_problem()). While it is 0, and unless reorder_fixed is set, the client
-     *  judges the link itself and uses the largest bound stale_ms and command_timeout_ms allow (114 ms with
-     *  the defaults) while the link has not shown that it keeps order (xf_health.reorder_ms, in_order,
-     *  out_of_turn; docs/protocol.md §7.4). */
+     *  judges the link itself: a new client's first command waits while the first six packet periods can
+     *  still show the link in order, and commands run with the largest bound stale_ms and
+     *  command_timeout_ms allow (114 ms with the defaults) while the link has not shown it
+     *  (xf_health.reorder_ms, in_order, out_of_turn; docs/protocol.md §7.4). */
     uint16_t reorder_ms;
-    /** 1: keep reorder_ms as set (0 included) whatever the link shows; 0 (default): the client may apply a
+    /** 1: keep reorder_ms as set (0 included) whatever the link shows, and never wait for the link to be
+     *  judged (for a link known to keep order: a serial line, TCP); 0 (default): the client may apply a
      *  bound of its own on a link that reorders or duplicates, while reorder_ms is 0 */
     uint8_t reorder_fixed;
 } xf_client_config;
@@ -479,6 +482,9 @@ typedef struct xf_client {
     uint8_t run_seen;         /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
     uint8_t steady;           /**< private: packet periods in a row with one reply each */
     uint8_t out_of_order;     /**< private: a reply came that no link in order can deliver: never in_order again */
+    /** @var xf_client::phase_ms
+     *  private: the time from packet to reply in the first of the steady periods (xf__judge_round) */
+    uint16_t phase_ms, round_rtt; /**< private: the time from the last packet to the first reply since */
 } xf_client;
 
 /**
