@@ -13,6 +13,7 @@
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 #define XF__STEADY        25 /* packet periods in a row with one reply each: a link that keeps order */
 #define XF__PROMPT        6  /* ... or from the first packet on, each reply before the next, at one phase */
+#define XF__OSD_INTENT    0u /* xf_cmd_slot.version of xf_client_osd()'s command: params[0] is show */
 
 /* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
 static const xf_client_config xf__defaults = {
@@ -735,13 +736,38 @@ static int xf__may_start(xf_client *c)
              !(c->guard_wait && xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms));
 }
 
+/* Whether the queue's head may go to a GCU that speaks version @p v (docs/protocol.md §10.1): its
+ * parameters were checked for a version of the same meaning, or they are valid in @p v and mean
+ * the same there. OSD's value means the opposite in the other version: xf_client_osd()'s is set
+ * for @p v here, any other such command is refused. */
+static int xf__fits_version(xf_cmd_slot *slot, uint8_t v)
+{
+    xf_command cmd;
+    if (slot->version == XF__OSD_INTENT) {
+        slot->params[0] = xf_osd_value(slot->params[0], v);
+        slot->version = v;
+        return 1;
+    }
+    if ((slot->version >= XF_PROTOCOL_V2) == (v >= XF_PROTOCOL_V2)) {
+        return 1;
+    }
+    return slot->order != XF_ORDER_OSD &&
+           xf_command_decode(slot->order, slot->params, slot->params_len, v, &cmd, NULL) == XF_OK;
+}
+
 /* The order of the next packet: a command, an owed null, the stream, or null; or -1: send
  * nothing in this slot (reorder_ms: let what was sent land before a packet that must not
  * overtake it or be overtaken by it). Sets *params (the bytes to send, *n of them). */
 static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
 {
-    const xf_cmd_slot *cmd = &c->queue[c->q_head];
+    const xf_cmd_slot *cmd;
     uint32_t quiet = xf_ms_since(c->now_ms, c->last_tx_ms);
+    /* A command checked before the GCU had answered (or for another GCU) starts only if it means
+     * the same to this one: never sent otherwise. The GCU has answered a null by now. */
+    while (xf__may_start(c) && !xf__fits_version(&c->queue[c->q_head], xf_client_gcu_version(c))) {
+        xf__finish(c, XF_CMD_REFUSED, NULL);
+    }
+    cmd = &c->queue[c->q_head];
     *params = c->stream;
     *n = 0;
     if (c->health.reorder_ms > 0u && c->health.packets_sent > 0u && quiet < c->health.reorder_ms &&
@@ -996,6 +1022,7 @@ static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t 
     }
     slot->order = cmd->order;
     slot->params_len = (uint8_t)n;
+    slot->version = version;
     return XF_OK;
 }
 
@@ -1012,12 +1039,18 @@ uint8_t xf_client_answered_version(const xf_client *c) { return (c == NULL) ? 0u
 xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
 {
     xf_command cmd;
+    xf_err err;
     if (c == NULL) {
         return XF_ERR_ARG;
     }
     xf_command_init(&cmd, XF_ORDER_OSD);
-    cmd.value = xf_osd_value(show, xf_client_gcu_version(c));
-    return xf_client_submit(c, &cmd, id, NULL);
+    err = xf_client_submit(c, &cmd, id, NULL);
+    if (err == XF_OK) { /* the value for the GCU's version is set when it starts (xf__fits_version) */
+        xf_cmd_slot *slot = &c->queue[(c->q_head + c->q_count - 1u) % XF_CLIENT_QUEUE];
+        slot->params[0] = (uint8_t)(show != 0);
+        slot->version = XF__OSD_INTENT;
+    }
+    return err;
 }
 
 xf_support xf_client_supports(const xf_client *c, uint8_t order)
@@ -1215,6 +1248,7 @@ const char *xf_cmd_status_name(xf_cmd_status s)
     case XF_CMD_TIMEOUT: return "timeout";
     case XF_CMD_LINK_LOST: return "link lost";
     case XF_CMD_CANCELLED: return "cancelled";
+    case XF_CMD_REFUSED: return "refused";
     default: return "unknown";
     }
 }

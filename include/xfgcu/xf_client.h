@@ -87,7 +87,10 @@ typedef enum xf_cmd_status {
     XF_CMD_FAILED = 5,    /**< the GCU said failure; see failed_cameras */
     XF_CMD_TIMEOUT = 6,   /**< no execution state within the timeout */
     XF_CMD_LINK_LOST = 7, /**< the link went down before it finished */
-    XF_CMD_CANCELLED = 8  /**< removed by xf_client_cancel_all */
+    XF_CMD_CANCELLED = 8, /**< removed by xf_client_cancel_all */
+    /** never sent: checked before the GCU had answered (for xf_client_gcu_version() then), its
+     *  parameters are out of range, or mean something else, in the version the GCU speaks */
+    XF_CMD_REFUSED = 9
 } xf_cmd_status;
 
 /**
@@ -377,6 +380,7 @@ typedef struct xf_client_config {
 typedef struct xf_cmd_slot {
     uint8_t order;                       /**< the order byte */
     uint8_t params_len;                  /**< parameter bytes used */
+    uint8_t version;                     /**< the version they were checked for; 0: xf_client_osd()'s show */
     uint8_t params[XF_PARAMS_KNOWN_MAX]; /**< the encoded parameters */
 } xf_cmd_slot;
 
@@ -780,7 +784,10 @@ void xf_client_clear_control(xf_client *c);
  *
  * The command is checked and encoded now, for the version the GCU speaks
  * (xf_client_gcu_version(): cfg.protocol_version until it answers), and
- * runs when the commands before it have finished: it is sent in every
+ * runs when the commands before it have finished. If the GCU turns out to
+ * speak the other version, it is checked again when it would start: when
+ * its parameters are out of range there, or mean something else (OSD's
+ * value), it ends as ::XF_CMD_REFUSED, never sent. It is sent in every
  * packet until a reply carries its execution state, then a null packet
  * follows. A command of the same order as the last one, while a packet of
  * that one has no reply yet, waits until the reply to a null sent after it
@@ -831,6 +838,8 @@ uint8_t xf_client_answered_version(const xf_client *c);
  * Show or hide the on-screen display: an ::XF_ORDER_OSD command with the
  * value that means it in the GCU's version (xf_osd_value(); the meaning was
  * inverted between V0.1 and V0.2), queued as xf_client_submit() queues.
+ * The value is chosen when the command starts, once the GCU has answered,
+ * so it means show or hide whatever version the GCU turns out to speak.
  * @param c     the client
  * @param show  nonzero to show the OSD, 0 to hide it
  * @param id    receives the command's id (may be NULL)
@@ -986,7 +995,7 @@ const char *xf_link_state_name(xf_link_state s);
  * Name of a command status, for messages.
  * @param s  the status
  * @return "queued", "sending", "operating", "ok", "failed", "timeout",
- *   "link lost", "cancelled", or "unknown" (::XF_CMD_UNKNOWN and any other
+ *   "link lost", "cancelled", "refused", or "unknown" (::XF_CMD_UNKNOWN and any other
  *   value); static
  */
 const char *xf_cmd_status_name(xf_cmd_status s);
