@@ -380,21 +380,21 @@ typedef struct xf_client_config {
 typedef struct xf_cmd_slot {
     uint8_t order;                       /**< the order byte */
     uint8_t params_len;                  /**< parameter bytes used */
-    uint8_t version;                     /**< the version they were checked for; 0: xf_client_osd()'s show */
+    uint8_t fits;                        /**< the versions in which they are valid and mean the same (bits) */
     uint8_t params[XF_PARAMS_KNOWN_MAX]; /**< the encoded parameters */
 } xf_cmd_slot;
 
 /**
  * Internal (a member of xf_client): a finished command's result as the
  * client keeps it for xf_client_command_status(): xf_cmd_result with the
- * status in one byte, so that each of the ::XF_CLIENT_RESULTS kept takes 16
- * bytes on a 32-bit target whatever the size of its enums (xf_cmd_result is
- * 20 where an enum takes 4 bytes, as on RISC-V; arm-none-eabi's take 1).
+ * status in one byte, and without the id (commands finish in the order of
+ * their ids, so a record's id follows from its place: xf_client.c's
+ * xf__id_back), so that each of the ::XF_CLIENT_RESULTS kept takes 12 bytes
+ * on a 32-bit target whatever the size of its enums.
  */
 typedef struct xf_cmd_record {
-    uint32_t id;            /**< as xf_cmd_result.id */
     uint8_t order;          /**< as xf_cmd_result.order */
-    uint8_t status;         /**< xf_cmd_result.status (an ::xf_cmd_status) */
+    uint8_t status;         /**< xf_cmd_result.status (an ::xf_cmd_status); 0: no record yet */
     uint8_t state;          /**< as xf_cmd_result.state */
     uint8_t failed_cameras; /**< as xf_cmd_result.failed_cameras */
     uint16_t packets;       /**< as xf_cmd_result.packets */
@@ -407,32 +407,47 @@ typedef struct xf_cmd_record {
  * xf_client_set_carrier rather than kept as nine floats. */
 #define XF__CARRIER_WORDS 9u
 
-/** Client state: treat the members as private; use the functions. */
+/**
+ * Client state: treat the members as private; use the functions. The
+ * members are grouped by size (4, 2, then 1 byte), so that a 32-bit target
+ * pads none of them.
+ */
 typedef struct xf_client {
     xf_client_config cfg; /**< private: the configuration (a copy) */
     xf_hal hal;           /**< private: the link (a copy) */
     xf_parser parser;     /**< private: parser of the GCU's replies */
     xf_telemetry tele;    /**< private: xf_client_telemetry() */
     xf_health health;     /**< private: xf_client_health() */
-    /* inputs; times on xf_client_step's clock */
-    xf_gnss gnss; /**< private: the last GNSS data */
+    xf_gnss gnss;         /**< private: the last GNSS data */
+    /* times, on xf_client_step's clock */
     /** @var xf_client::gnss_ms
      *  private: when the GNSS data was set */
     /** @var xf_client::carrier_ms
      *  private: when the carrier state was set */
     uint32_t gnss_ms, carrier_ms, ctrl_ms; /**< private: when the control quantities were set */
-    float ctrl[3];                         /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
-    uint16_t carrier[XF__CARRIER_WORDS];   /**< private: carrier state as it goes on the wire */
-    /** @var xf_client::have_carrier
-     *  private: carrier state was set */
-    uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
-    uint8_t ctrl_kind;   /**< private: 0 none, 1 rates, 2 angles, 3 none: dropped (xf_client_control_status()) */
-    uint8_t ctrl_mode;   /**< private: the reported mode that last read the setpoint (0: none yet) */
-    uint8_t main_camera; /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
-    uint8_t pod_order;   /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
-    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
-    uint8_t stream_on; /**< private: the external-track stream is on */
-    uint8_t stream[6]; /**< private: the stream's encoded parameters */
+    uint32_t operating_ms;                 /**< private: when the GCU said "operating" */
+    uint32_t now_ms;                       /**< private: the time of the current step */
+    uint32_t next_send_ms;                 /**< private: when the next packet is due */
+    uint32_t window_start_ms;              /**< private: start of the current one-second window */
+    /** @var xf_client::last_tx_ms
+     *  private: when the last packet went out */
+    /** @var xf_client::sync_ms
+     *  private: when synced became 1 */
+    /** @var xf_client::head_ms
+     *  private: when the queue's head began to wait, or (running) was first sent */
+    uint32_t last_tx_ms, sync_ms, head_ms;
+    uint32_t guard_ms;                        /**< private: when the guard opened */
+    uint32_t version_ms;                      /**< private: when the client began to send the version it sends now */
+    uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
+    float ctrl[3];                            /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
+    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
+    uint16_t carrier[XF__CARRIER_WORDS];      /**< private: carrier state as it goes on the wire */
+    /** @var xf_client::window_sent
+     *  private: packets sent in the window */
+    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
+    uint16_t period_ms;                   /**< private: ms between packets */
+    uint16_t packets;                     /**< private: packets that carried the running command */
+    uint16_t answered;                    /**< private: replies of the running command's order so far */
     /* commands */
     xf_cmd_slot queue[XF_CLIENT_QUEUE]; /**< private: commands queued or running, a ring */
     /** @var xf_client::q_head
@@ -440,55 +455,40 @@ typedef struct xf_client {
     uint8_t q_head, q_count; /**< private: commands in the queue */
     uint8_t active;          /**< private: queue[q_head] is being sent */
     uint8_t operating;       /**< private: ... and the GCU said "operating" */
+    uint8_t nulls_owed;      /**< private: null packets to send before the next command */
+    uint8_t r_next;          /**< private: results[r_next] is overwritten next */
+    uint8_t head_new;        /**< private: the queue's head is new: it waits from the next step's time */
     uint8_t guard_order;     /**< private: order of the last finished command (or of the stopped stream) */
-    uint8_t guard_open; /**< private: no null's reply since the guarded packets: guard_order waits (every order with
-                           reorder_ms or guard_multi) */
-    uint8_t nulls_owed; /**< private: null packets to send before the next command */
-    uint8_t r_next;     /**< private: results[r_next] is overwritten next */
-    /** @var xf_client::started_ms
-     *  private: when the running command was first sent */
-    uint32_t started_ms, operating_ms;        /**< private: when the GCU said "operating" */
-    uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
-    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
-    /* timing */
-    uint32_t now_ms;          /**< private: the time of the current step */
-    uint32_t next_send_ms;    /**< private: when the next packet is due */
-    uint32_t window_start_ms; /**< private: start of the current one-second window */
-    /** @var xf_client::window_sent
-     *  private: packets sent in the window */
-    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
-    uint16_t period_ms;                   /**< private: ms between packets */
-    uint16_t packets;                     /**< private: packets that carried the running command */
-    uint8_t started;                      /**< private: the first step has run */
-    uint8_t awaiting;                     /**< private: the last packet sent has had no reply yet */
-    uint8_t window_awaiting;              /**< private: the same, when the window started */
+    uint8_t guard_open;  /**< private: no null's reply since the guarded packets: guard_order waits (every order with
+                            reorder_ms or guard_multi) */
+    uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
+    uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
+    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
+    uint8_t stream_on; /**< private: the external-track stream is on */
+    uint8_t stream[6]; /**< private: the stream's encoded parameters */
+    /* inputs */
+    /** @var xf_client::have_carrier
+     *  private: carrier state was set */
+    uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
+    uint8_t ctrl_kind;   /**< private: 0 none, 1 rates, 2 angles, 3 none: dropped (xf_client_control_status()) */
+    uint8_t ctrl_mode;   /**< private: the reported mode that last read the setpoint (0: none yet) */
+    uint8_t main_camera; /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
+    uint8_t pod_order;   /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
+    /* the link */
+    uint8_t started;         /**< private: the first step has run */
+    uint8_t awaiting;        /**< private: the last packet sent has had no reply yet */
+    uint8_t window_awaiting; /**< private: the same, when the window started */
     uint8_t busy; /**< private: in xf_client_step() or xf_client_cancel_all(): a nested step returns ::XF_ERR_BUSY */
     /** private: 0; 1: a reply to a null has come back; 2: and reorder_ms has passed, commands may start */
     uint8_t synced;
-    /** @var xf_client::last_tx_ms
-     *  private: when the last packet went out */
-    /** @var xf_client::sync_ms
-     *  private: when synced became 1 */
-    uint32_t last_tx_ms, sync_ms, head_ms; /**< private: when the queue's head began to wait */
-    /** @var xf_client::guard_ms
-     *  private: when the guard opened */
-    /** @var xf_client::answered
-     *  private: replies of the running command's order so far */
-    uint32_t guard_ms;
-    uint16_t answered;
-    uint8_t guard_wait;       /**< private: a reply of guard_order must come first (none had come when it ended) */
-    uint8_t guard_multi;      /**< private: the guard holds for every order (another guard was still open) */
-    uint8_t head_new;         /**< private: the queue's head is new: it waits from the next step's time */
-    uint32_t version_ms;      /**< private: when the client began to send the version it sends now */
-    uint16_t auto_reorder_ms; /**< private: the bound the client applies when it sees replies out of turn */
-    uint8_t round_replies;    /**< private: replies since the last packet sent (saturating) */
-    uint8_t run_order;        /**< private: the order of the running command, or of the last one */
-    uint8_t run_seen;         /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
-    uint8_t steady;           /**< private: packet periods in a row with one reply each */
-    uint8_t out_of_order;     /**< private: a reply came that no link in order can deliver: never in_order again */
+    uint8_t round_replies; /**< private: replies since the last packet sent (saturating) */
+    uint8_t run_order;     /**< private: the order of the running command, or of the last one */
+    uint8_t run_seen;      /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
+    uint8_t steady;        /**< private: packet periods in a row with one reply each */
+    uint8_t out_of_order;  /**< private: a reply came that no link in order can deliver: never in_order again */
     /** @var xf_client::phase_ms
      *  private: the time from packet to reply in the first of the steady periods (xf__judge_round) */
-    uint16_t phase_ms, round_rtt; /**< private: the time from the last packet to the first reply since */
+    uint8_t phase_ms, round_rtt; /**< private: the time from the last packet to the first reply since; 255: later */
 } xf_client;
 
 /**
