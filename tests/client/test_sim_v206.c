@@ -342,7 +342,7 @@ static void test_v01_refuses_v02_orders(void **state)
             uint8_t mode;
             memset(&k, 0, sizeof(k));
             f = fx_version(version, &k);
-            mode = f->s.mode;
+            mode = (uint8_t)f->s.mode;
             ct_valid_command(&cmd, info->order);
             if (info->order == XF_ORDER_TIME_ZONE) {
                 cmd.hours = 5;
