@@ -12,6 +12,11 @@
 #define XF__CTRL_DROPPED  3u /* none, because the last one was dropped (XF_CTRL_DROPPED) */
 #define XF_READS_PER_STEP 16 /* bound the work of one step on a flooded link */
 #define XF__STEADY        25 /* packet periods in a row with one reply each: a link that keeps order */
+#define XF__PROMPT        6  /* ... or from the first packet on, each reply before the next, at one phase */
+/* xf_cmd_slot.fits: the versions in which the parameters are valid and mean the same */
+#define XF__FITS_V1  0x01u /* V0.1 (a version byte of 0 or 1) */
+#define XF__FITS_V2  0x02u /* V0.2 (2 and up) */
+#define XF__FITS_OSD 0x04u /* xf_client_osd()'s: params[0] is show, set for the GCU's version when it starts */
 
 /* The defaults, in flash: no callbacks, and the times of xf_client_config's comments. */
 static const xf_client_config xf__defaults = {
@@ -52,27 +57,36 @@ xf_err xf_client_config_timing(const xf_client_config *cfg, xf_client_timing *t)
     return XF_OK;
 }
 
-const char *xf_client_config_problem(const xf_client_config *cfg)
+/* The rule of xf_client_config_problem(), without its text (a firmware that only starts a client
+ * carries no strings): 0 when @p cfg can work, else the number of the line it breaks. *t gets the
+ * times @p cfg implies. */
+static int xf__config_fault(const xf_client_config *cfg, xf_client_timing *t)
 {
-    xf_client_timing t;
-    if (cfg == NULL) {
-        return NULL; /* the defaults */
-    }
-    if (xf_client_config_timing(cfg, &t) != XF_OK) {
-        return "rate_hz: 1..200";
+    if (xf_client_config_timing(cfg, t) != XF_OK) {
+        return 1;
     }
     if (cfg->protocol_version == 0u || cfg->operating_timeout_ms == 0u || cfg->reorder_ms > 1000u ||
         cfg->version_auto > 1u) {
-        return "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000; version_auto: 0 or 1";
+        return 2;
     }
     /* A link that reads stale (or down) between two good replies cannot work. */
-    if (cfg->stale_ms <= t.gap_ms || cfg->down_ms <= cfg->stale_ms) {
-        return "stale_ms: > 1000 / rate_hz + 2 reorder_ms (stale between packets); down_ms: > stale_ms";
+    if (cfg->stale_ms <= t->gap_ms || cfg->down_ms <= cfg->stale_ms) {
+        return 3;
     }
-    if (cfg->command_timeout_ms < t.round_trip_ms) {
-        return "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)";
-    }
-    return NULL;
+    return (cfg->command_timeout_ms < t->round_trip_ms) ? 4 : 0;
+}
+
+const char *xf_client_config_problem(const xf_client_config *cfg)
+{
+    static const char *const lines[] = {
+        NULL,
+        "rate_hz: 1..200",
+        "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000; version_auto: 0 or 1",
+        "stale_ms: > 1000 / rate_hz + 2 reorder_ms (stale between packets); down_ms: > stale_ms",
+        "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)",
+    };
+    xf_client_timing t;
+    return (cfg == NULL) ? NULL : lines[xf__config_fault(cfg, &t)]; /* NULL: the defaults */
 }
 
 static void xf__set_bound(xf_client *c);
@@ -91,6 +105,7 @@ static uint16_t xf__auto_reorder_ms(const xf_client_config *cfg, uint32_t period
 xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_config *cfg, unsigned long options,
                               size_t size)
 {
+    xf_client_timing t;
     if (options != XF_OPTIONS_WORD || size != sizeof(xf_client)) {
         return XF_ERR_CONFIG; /* the caller's xf_client is not ours: writing to it would overrun it */
     }
@@ -100,17 +115,16 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
     if (cfg == NULL) {
         cfg = &xf__defaults;
     }
-    if (xf_client_config_problem(cfg) != NULL) {
+    if (xf__config_fault(cfg, &t) != 0) {
         return XF_ERR_RANGE; /* a link that is never up, or commands that time out before they are sent */
     }
     XF_MEMSET(c, 0, sizeof(*c));
     c->cfg = *cfg;
     c->hal = *hal;
     xf_parser_init(&c->parser, XF_DIR_GCU);
-    c->period_ms = (uint16_t)((1000u + cfg->rate_hz / 2u) / cfg->rate_hz);
+    c->period_ms = (uint16_t)t.period_ms;
     c->next_id = 1;
     c->health.version_sent = cfg->protocol_version;
-    c->auto_reorder_ms = xf__auto_reorder_ms(cfg, c->period_ms);
     xf__set_bound(c);
     return (cfg->rate_hz < 30u || cfg->rate_hz > 50u) ? XF_WARN_RATE : XF_OK;
 }
@@ -126,11 +140,18 @@ static uint32_t xf__queued_id(const xf_client *c, size_t i)
     return (back < c->next_id) ? c->next_id - back : c->next_id - back - 1u;
 }
 
+/* The other way: how many ids before next_id command @p id was handed out (1: the last one; 0: not
+ * yet). The queue holds the last q_count; the results before them, newest first: commands finish
+ * from the queue's head only, so in the order of their ids, and each once. */
+static uint32_t xf__ids_back(const xf_client *c, uint32_t id)
+{
+    return (id < c->next_id) ? c->next_id - id : c->next_id - id - 1u;
+}
+
 static void xf__publish(xf_client *c, const xf_cmd_result *r)
 {
     if (r->status != XF_CMD_OPERATING) {
-        xf_cmd_record *k = &c->results[c->r_next]; /* kept in 16 bytes (xf_cmd_record) */
-        k->id = r->id;
+        xf_cmd_record *k = &c->results[c->r_next]; /* kept in 12 bytes (xf_cmd_record) */
         k->order = r->order;
         k->status = (uint8_t)r->status;
         k->state = r->state;
@@ -151,10 +172,9 @@ static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r
     r->id = xf__queued_id(c, 0);
     r->order = c->queue[c->q_head].order;
     r->status = st;
-    r->elapsed_ms = xf_ms_since(c->now_ms, c->head_ms); /* never sent: how long it waited */
+    r->elapsed_ms = xf_ms_since(c->now_ms, c->head_ms); /* since first sent; never sent: how long it waited */
     if (c->active) {
         r->packets = c->packets;
-        r->elapsed_ms = xf_ms_since(c->now_ms, c->started_ms);
     }
 }
 
@@ -413,15 +433,18 @@ static void xf__reply_order(xf_client *c, uint8_t order)
     }
 }
 
+/* Whether the reorder bound is the client's to choose: the application set none and did not fix 0. */
+static int xf__own_bound(const xf_client *c) { return !c->cfg.reorder_fixed && c->cfg.reorder_ms == 0u; }
+
 /* The reorder bound in force: the application's, when it set one (or fixed 0); else the client's
  * own while the link has not shown that it keeps order (a command that starts before the link
  * could be judged is protected), 0 once it has. */
 static void xf__set_bound(xf_client *c)
 {
-    if (c->cfg.reorder_fixed || c->cfg.reorder_ms > 0u) {
+    if (!xf__own_bound(c)) {
         c->health.reorder_ms = c->cfg.reorder_ms;
     } else {
-        c->health.reorder_ms = c->health.in_order ? 0u : c->auto_reorder_ms;
+        c->health.reorder_ms = c->health.in_order ? 0u : xf__auto_reorder_ms(&c->cfg, c->period_ms);
     }
 }
 
@@ -437,12 +460,20 @@ static void xf__out_of_turn(xf_client *c, uint32_t n, int proof)
     xf__set_bound(c);
 }
 
+/* Whether the first periods may still show the link in order (XF__PROMPT): every period since
+ * the first packet brought one reply, at one phase (xf__judge_round()). */
+static int xf__judging(const xf_client *c) { return !c->health.in_order && c->steady == c->health.packets_sent; }
+
 /* Replies on a link that keeps order and does not duplicate answer the packets in the order they
  * were sent, once each. A reply of the last command's order after a reply of another order that
  * came after one of its own, or more replies of the running command than it had packets, cannot
  * be that. */
 static void xf__judge_reply(xf_client *c, uint8_t order)
 {
+    if (c->round_replies == 0u) {
+        uint32_t rtt = xf_ms_since(c->now_ms, c->last_tx_ms);
+        c->round_rtt = (uint8_t)((rtt < UINT8_MAX) ? rtt : UINT8_MAX); /* 255: too late for the fast verdict */
+    }
     if (c->round_replies < UINT8_MAX) {
         c->round_replies++;
     }
@@ -471,25 +502,40 @@ static void xf__in_order(xf_client *c)
     }
 }
 
-/* At a packet due one period after the last (not after a silence, not late): the replies that
- * came since. The first packet's reply before the second packet shows a link that answers within
- * a period; on a link that keeps order with a steady delay one reply comes per period, so
- * XF__STEADY periods in a row with one reply each show it too. More than one in a period means
- * replies held back and overtaken, or copies: the delay varies by a period or more, as it does
- * on a link that reorders (and on a GCU, or a loaded host, that answers in bursts). Periods before
- * the third packet are not held against the link: replies to a program that ran before on it may
- * still come. */
+/*
+ * At a packet due one period after the last (not after a silence, not late): the replies that
+ * came since. A link that keeps order with a steady delay brings one reply a period; a link whose
+ * delay varies by a period or more, as one that reorders does, brings none in some periods and
+ * several in others (held back and overtaken, or copies; so do a GCU, or a loaded host, that
+ * answer in bursts). So the link is taken to keep order after XF__STEADY periods in a row with one
+ * reply each, or after XF__PROMPT from the first packet on whose replies also came at one phase:
+ * each before the next packet (so it answered its own: nothing else was in flight at first), each
+ * as long after its packet as the first (within an eighth of a period, and a millisecond for the
+ * clock's grain). A link that reorders rarely answers so six times from the start; one reply a
+ * period at random phases is far more common there (docs/protocol.md §7.4 has the figures).
+ * Periods before the third packet are not counted out of turn: replies to a program that ran
+ * before on the link may still come.
+ */
 static void xf__judge_round(xf_client *c)
 {
     uint32_t since = xf_ms_since(c->now_ms, c->last_tx_ms);
     if (since <= c->period_ms + c->period_ms / 2u) {
-        if (c->health.packets_sent == 1u && c->round_replies == 1u) {
-            xf__in_order(c);
-        } else if (c->health.packets_sent >= 3u && c->round_replies > 1u) {
+        uint32_t tol = c->period_ms / 8u + 1u;
+        int off_phase =
+            c->steady + 1u == c->health.packets_sent && /* the first periods, each answered so far */
+            (c->round_rtt > c->phase_ms + tol || c->phase_ms > c->round_rtt + tol || c->round_rtt == UINT8_MAX);
+        if (c->health.packets_sent >= 3u && c->round_replies > 1u) {
             xf__out_of_turn(c, c->round_replies - 1u, 0);
         }
-        c->steady = (c->health.packets_sent >= 3u && c->round_replies == 1u) ? (uint8_t)(c->steady + 1u) : 0u;
-        if (c->steady >= XF__STEADY) {
+        if (c->round_replies != 1u) {
+            c->steady = 0;
+        } else if (c->steady == 0u || off_phase) {
+            c->steady = 1; /* a run starts here: after an off-phase reply, not from the first packet */
+            c->phase_ms = c->round_rtt;
+        } else if (c->steady < UINT8_MAX) {
+            c->steady++;
+        }
+        if (c->steady >= (xf__judging(c) ? XF__PROMPT : XF__STEADY)) {
             xf__in_order(c);
         }
     }
@@ -701,6 +747,9 @@ static int xf__may_start(xf_client *c)
     if (c->active || c->q_count == 0u || c->nulls_owed > 0u || c->synced != 2u) {
         return 0; /* nothing to start, a null owed, or replies from before this client may be in flight */
     }
+    if (xf__judging(c) && xf__own_bound(c)) {
+        return 0; /* the first periods may yet show the link in order: a few periods, not the bound */
+    }
     /* Replies to the previous packets of this order may still be on their way, each with that
      * command's state. Replies come in order: send nulls until one of theirs is back, then every
      * reply of this order answers this command. Where the link reorders, every command waits so
@@ -709,27 +758,50 @@ static int xf__may_start(xf_client *c)
              !(c->guard_wait && xf_ms_since(c->now_ms, c->guard_ms) >= c->cfg.command_timeout_ms));
 }
 
+/* The bit of xf_cmd_slot.fits for version @p v (docs/protocol.md §9.17: 0 and 1 are V0.1). */
+static uint8_t xf__fits_bit(uint8_t v) { return (v >= XF_PROTOCOL_V2) ? XF__FITS_V2 : XF__FITS_V1; }
+
+/* Whether the queue's head may go to a GCU that speaks version @p v (docs/protocol.md §10.1): its
+ * parameters, checked at submit for the version known then, are valid in @p v and mean the same
+ * there. xf_client_osd()'s value is set for @p v here. */
+static int xf__fits_version(xf_cmd_slot *slot, uint8_t v)
+{
+    if (slot->fits == XF__FITS_OSD) {
+        slot->params[0] = xf_osd_value(slot->params[0], v);
+        slot->fits = xf__fits_bit(v);
+    }
+    return (slot->fits & xf__fits_bit(v)) != 0u;
+}
+
 /* The order of the next packet: a command, an owed null, the stream, or null; or -1: send
  * nothing in this slot (reorder_ms: let what was sent land before a packet that must not
  * overtake it or be overtaken by it). Sets *params (the bytes to send, *n of them). */
 static int xf__next_order(xf_client *c, const uint8_t **params, size_t *n)
 {
-    const xf_cmd_slot *cmd = &c->queue[c->q_head];
+    const xf_cmd_slot *cmd;
     uint32_t quiet = xf_ms_since(c->now_ms, c->last_tx_ms);
+    int start = xf__may_start(c);
+    /* A command checked before the GCU had answered (or for another GCU) starts only if it means
+     * the same to this one: never sent otherwise. The GCU has answered a null by now. */
+    while (start && !xf__fits_version(&c->queue[c->q_head], xf_client_gcu_version(c))) {
+        xf__finish(c, XF_CMD_REFUSED, NULL);
+        start = xf__may_start(c);
+    }
+    cmd = &c->queue[c->q_head];
     *params = c->stream;
     *n = 0;
     if (c->health.reorder_ms > 0u && c->health.packets_sent > 0u && quiet < c->health.reorder_ms &&
-        (c->nulls_owed > 0u || xf__may_start(c))) {
+        (c->nulls_owed > 0u || start)) {
         /* The null after a command must not overtake the command's last packet, nor a command the
          * packet before it: either way the GCU would run the command twice. */
         return -1;
     }
-    if (xf__may_start(c)) {
+    if (start) {
         c->active = 1;
         c->operating = 0;
         c->packets = 0;
         c->answered = 0;
-        c->started_ms = c->now_ms;
+        c->head_ms = c->now_ms; /* from waiting to being sent */
         c->run_order = cmd->order;
         c->run_seen = 0;
         /* What was set before it must not be read after it; a setpoint that a mode change waits for
@@ -822,7 +894,7 @@ static void xf__check_timeouts(xf_client *c)
         }
         return;
     }
-    since = c->operating ? c->operating_ms : c->started_ms;
+    since = c->operating ? c->operating_ms : c->head_ms;
     limit = c->operating ? c->cfg.operating_timeout_ms : c->cfg.command_timeout_ms;
     if (xf_ms_since(c->now_ms, since) >= limit) {
         xf__finish(c, (c->health.link == XF_LINK_DOWN) ? XF_CMD_LINK_LOST : XF_CMD_TIMEOUT, NULL);
@@ -964,12 +1036,19 @@ void xf_client_clear_control(xf_client *c)
 static xf_err xf__slot_encode(xf_cmd_slot *slot, const xf_command *cmd, uint8_t version, xf_field *bad_field)
 {
     size_t n = 0;
+    uint8_t other = (version >= XF_PROTOCOL_V2) ? XF_PROTOCOL_V1 : XF_PROTOCOL_V2;
     xf_err err = xf_command_encode(cmd, version, slot->params, sizeof(slot->params), &n, bad_field);
     if (err != XF_OK) {
         return err;
     }
     slot->order = cmd->order;
     slot->params_len = (uint8_t)n;
+    /* Valid in the other version too, with the same meaning? OSD's value means the opposite there
+     * (docs/protocol.md §11.4); the ranges are the codec's. */
+    slot->fits = xf__fits_bit(version);
+    if (cmd->order != XF_ORDER_OSD && xf_command_check(cmd, other, NULL) == XF_OK) {
+        slot->fits |= xf__fits_bit(other);
+    }
     return XF_OK;
 }
 
@@ -986,12 +1065,18 @@ uint8_t xf_client_answered_version(const xf_client *c) { return (c == NULL) ? 0u
 xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
 {
     xf_command cmd;
+    xf_err err;
     if (c == NULL) {
         return XF_ERR_ARG;
     }
     xf_command_init(&cmd, XF_ORDER_OSD);
-    cmd.value = xf_osd_value(show, xf_client_gcu_version(c));
-    return xf_client_submit(c, &cmd, id, NULL);
+    err = xf_client_submit(c, &cmd, id, NULL);
+    if (err == XF_OK) { /* the value for the GCU's version is set when it starts (xf__fits_version) */
+        xf_cmd_slot *slot = &c->queue[(c->q_head + c->q_count - 1u) % XF_CLIENT_QUEUE];
+        slot->params[0] = (uint8_t)(show != 0);
+        slot->fits = XF__FITS_OSD;
+    }
+    return err;
 }
 
 xf_support xf_client_supports(const xf_client *c, uint8_t order)
@@ -1047,35 +1132,33 @@ xf_err xf_client_submit_opt(xf_client *c, const xf_command *cmd, unsigned flags,
 
 xf_cmd_status xf_client_command_status(const xf_client *c, uint32_t id, xf_cmd_result *result)
 {
-    size_t i;
+    uint32_t back;
+    const xf_cmd_record *k;
     if (c == NULL || id == 0u) {
         return XF_CMD_UNKNOWN;
     }
-    for (i = 0; i < c->q_count; i++) {
-        if (xf__queued_id(c, i) == id) {
-            if (i == 0u && c->active) {
-                return c->operating ? XF_CMD_OPERATING : XF_CMD_SENDING;
-            }
-            return XF_CMD_QUEUED;
+    back = xf__ids_back(c, id);
+    if (back >= 1u && back <= c->q_count) { /* queued; the head is the oldest */
+        if (back == c->q_count && c->active) {
+            return c->operating ? XF_CMD_OPERATING : XF_CMD_SENDING;
         }
+        return XF_CMD_QUEUED;
     }
-    for (i = 0; i < XF_CLIENT_RESULTS; i++) {
-        const xf_cmd_record *k = &c->results[i];
-        if (k->id == id) {
-            xf_cmd_status st = (xf_cmd_status)k->status; /* stored in a byte */
-            if (result != NULL) {
-                result->id = k->id;
-                result->order = k->order;
-                result->status = st;
-                result->state = k->state;
-                result->failed_cameras = k->failed_cameras;
-                result->packets = k->packets;
-                result->elapsed_ms = k->elapsed_ms;
-            }
-            return st;
-        }
+    back -= c->q_count + 1u; /* finished: 0 the newest (a huge number for an id not handed out) */
+    if (back >= XF_CLIENT_RESULTS) {
+        return XF_CMD_UNKNOWN;
     }
-    return XF_CMD_UNKNOWN;
+    k = &c->results[(c->r_next + XF_CLIENT_RESULTS - 1u - back) % XF_CLIENT_RESULTS];
+    if (k->status != XF_CMD_UNKNOWN && result != NULL) {
+        result->id = id;
+        result->order = k->order;
+        result->status = (xf_cmd_status)k->status; /* stored in a byte */
+        result->state = k->state;
+        result->failed_cameras = k->failed_cameras;
+        result->packets = k->packets;
+        result->elapsed_ms = k->elapsed_ms;
+    }
+    return (xf_cmd_status)k->status; /* XF_CMD_UNKNOWN (0): fewer commands have finished */
 }
 
 size_t xf_client_pending(const xf_client *c) { return (c == NULL) ? 0u : c->q_count; }
@@ -1189,6 +1272,7 @@ const char *xf_cmd_status_name(xf_cmd_status s)
     case XF_CMD_TIMEOUT: return "timeout";
     case XF_CMD_LINK_LOST: return "link lost";
     case XF_CMD_CANCELLED: return "cancelled";
+    case XF_CMD_REFUSED: return "refused";
     default: return "unknown";
     }
 }

@@ -109,6 +109,7 @@ const char *xf_sim_question_text(xf_sim_question q)
         return "an order only camera 2 takes, with a camera mask other than 0x02: answered failure "
                "0x02";
     case XF_SIM_Q_ORDER: return "an order the protocol does not define: answered failure";
+    case XF_SIM_Q_NEWER: return "an order V0.2 added, to a simulator that speaks V0.1: answered failure";
     default: return "";
     }
 }
@@ -389,14 +390,18 @@ static uint8_t xf__failure(uint8_t order, uint8_t cameras)
     return (cameras != 0u) ? cameras : info->default_cameras;
 }
 
-/* The open question a packet raises, given what decoding it (in the simulator's version) gave: 0
- * when it raises none. A record parameter or a camera-2 order's mask is checked before the range,
+/* The open question a packet raises, given what decoding it (in the simulator's version @p version)
+ * gave: 0 when it raises none. An order a later version added is as unknown to this GCU as one no
+ * version defines. A record parameter or a camera-2 order's mask is checked before the range,
  * which also refuses a mask of 0. */
-static xf_sim_question xf__question(const xf_host_packet *p, xf_err decoded)
+static xf_sim_question xf__question(const xf_host_packet *p, uint8_t version, xf_err decoded)
 {
     const xf_order_info *info = xf_order_lookup(p->order);
     if (decoded == XF_ERR_NOT_FOUND) {
         return XF_SIM_Q_ORDER;
+    }
+    if (info != NULL && info->since > version) {
+        return XF_SIM_Q_NEWER;
     }
     if (decoded == XF_ERR_PARAMS) {
         return XF_SIM_Q_LENGTH;
@@ -434,7 +439,8 @@ static uint8_t xf__execute(xf_sim *s, const xf_host_packet *p)
     xf_command c;
     xf_sim_question q;
     s->stats.executed[p->order]++;
-    q = xf__question(p, xf_command_decode(p->order, p->params, p->params_len, s->cfg.version, &c, NULL));
+    q = xf__question(p, s->cfg.version,
+                     xf_command_decode(p->order, p->params, p->params_len, s->cfg.version, &c, NULL));
     if (q != 0) {
         return xf__strict(s, p, q);
     }

@@ -87,7 +87,10 @@ typedef enum xf_cmd_status {
     XF_CMD_FAILED = 5,    /**< the GCU said failure; see failed_cameras */
     XF_CMD_TIMEOUT = 6,   /**< no execution state within the timeout */
     XF_CMD_LINK_LOST = 7, /**< the link went down before it finished */
-    XF_CMD_CANCELLED = 8  /**< removed by xf_client_cancel_all */
+    XF_CMD_CANCELLED = 8, /**< removed by xf_client_cancel_all */
+    /** never sent: checked before the GCU had answered (for xf_client_gcu_version() then), its
+     *  parameters are out of range, or mean something else, in the version the GCU speaks */
+    XF_CMD_REFUSED = 9
 } xf_cmd_status;
 
 /**
@@ -189,9 +192,10 @@ typedef struct xf_health {
     /** the version byte of the packets the GCU answers: the one a reply to a null came for; 0 before (and,
      *  with version_auto, while the client looks for it again after the link went down) */
     uint8_t version_answered;
-    /** 1: the link has shown that it keeps order (the first packet answered before the second was sent,
-     *  or 25 packet periods in a row with one reply each) and no reply came out of turn since; never again
-     *  once a reply came that no link in order delivers (docs/protocol.md §7.4) */
+    /** 1: the link has shown that it keeps order (its first six packets each answered before the next was
+     *  sent, all with the same round trip within an eighth of a period, or 25 packet periods in a row with
+     *  one reply each) and no reply came out of turn since; never again once a reply came that no link in
+     *  order delivers (docs/protocol.md §7.4) */
     uint8_t in_order;
     /** the reorder bound in force, ms: xf_client_config.reorder_ms when the application set one (or fixed
      *  0); else the client's own while the link is not in_order, 0 while it is */
@@ -356,11 +360,13 @@ typedef struct xf_client_config {
      *  command (docs/protocol.md §7.4), so that no reply is taken for the wrong command and the
      *  GCU runs each command once. At most 1000, and stale_ms must exceed a packet period plus
      *  twice this (xf_client_config_problem()). While it is 0, and unless reorder_fixed is set, the client
-     *  judges the link itself and uses the largest bound stale_ms and command_timeout_ms allow (114 ms with
-     *  the defaults) while the link has not shown that it keeps order (xf_health.reorder_ms, in_order,
-     *  out_of_turn; docs/protocol.md §7.4). */
+     *  judges the link itself: a new client's first command waits while the first six packet periods can
+     *  still show the link in order, and commands run with the largest bound stale_ms and
+     *  command_timeout_ms allow (114 ms with the defaults) while the link has not shown it
+     *  (xf_health.reorder_ms, in_order, out_of_turn; docs/protocol.md §7.4). */
     uint16_t reorder_ms;
-    /** 1: keep reorder_ms as set (0 included) whatever the link shows; 0 (default): the client may apply a
+    /** 1: keep reorder_ms as set (0 included) whatever the link shows, and never wait for the link to be
+     *  judged (for a link known to keep order: a serial line, TCP); 0 (default): the client may apply a
      *  bound of its own on a link that reorders or duplicates, while reorder_ms is 0 */
     uint8_t reorder_fixed;
 } xf_client_config;
@@ -374,20 +380,21 @@ typedef struct xf_client_config {
 typedef struct xf_cmd_slot {
     uint8_t order;                       /**< the order byte */
     uint8_t params_len;                  /**< parameter bytes used */
+    uint8_t fits;                        /**< the versions in which they are valid and mean the same (bits) */
     uint8_t params[XF_PARAMS_KNOWN_MAX]; /**< the encoded parameters */
 } xf_cmd_slot;
 
 /**
  * Internal (a member of xf_client): a finished command's result as the
  * client keeps it for xf_client_command_status(): xf_cmd_result with the
- * status in one byte, so that each of the ::XF_CLIENT_RESULTS kept takes 16
- * bytes on a 32-bit target whatever the size of its enums (xf_cmd_result is
- * 20 where an enum takes 4 bytes, as on RISC-V; arm-none-eabi's take 1).
+ * status in one byte, and without the id (commands finish in the order of
+ * their ids, so a record's id follows from its place: xf_client.c's
+ * xf__id_back), so that each of the ::XF_CLIENT_RESULTS kept takes 12 bytes
+ * on a 32-bit target whatever the size of its enums.
  */
 typedef struct xf_cmd_record {
-    uint32_t id;            /**< as xf_cmd_result.id */
     uint8_t order;          /**< as xf_cmd_result.order */
-    uint8_t status;         /**< xf_cmd_result.status (an ::xf_cmd_status) */
+    uint8_t status;         /**< xf_cmd_result.status (an ::xf_cmd_status); 0: no record yet */
     uint8_t state;          /**< as xf_cmd_result.state */
     uint8_t failed_cameras; /**< as xf_cmd_result.failed_cameras */
     uint16_t packets;       /**< as xf_cmd_result.packets */
@@ -400,32 +407,47 @@ typedef struct xf_cmd_record {
  * xf_client_set_carrier rather than kept as nine floats. */
 #define XF__CARRIER_WORDS 9u
 
-/** Client state: treat the members as private; use the functions. */
+/**
+ * Client state: treat the members as private; use the functions. The
+ * members are grouped by size (4, 2, then 1 byte), so that a 32-bit target
+ * pads none of them.
+ */
 typedef struct xf_client {
     xf_client_config cfg; /**< private: the configuration (a copy) */
     xf_hal hal;           /**< private: the link (a copy) */
     xf_parser parser;     /**< private: parser of the GCU's replies */
     xf_telemetry tele;    /**< private: xf_client_telemetry() */
     xf_health health;     /**< private: xf_client_health() */
-    /* inputs; times on xf_client_step's clock */
-    xf_gnss gnss; /**< private: the last GNSS data */
+    xf_gnss gnss;         /**< private: the last GNSS data */
+    /* times, on xf_client_step's clock */
     /** @var xf_client::gnss_ms
      *  private: when the GNSS data was set */
     /** @var xf_client::carrier_ms
      *  private: when the carrier state was set */
     uint32_t gnss_ms, carrier_ms, ctrl_ms; /**< private: when the control quantities were set */
-    float ctrl[3];                         /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
-    uint16_t carrier[XF__CARRIER_WORDS];   /**< private: carrier state as it goes on the wire */
-    /** @var xf_client::have_carrier
-     *  private: carrier state was set */
-    uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
-    uint8_t ctrl_kind;   /**< private: 0 none, 1 rates, 2 angles, 3 none: dropped (xf_client_control_status()) */
-    uint8_t ctrl_mode;   /**< private: the reported mode that last read the setpoint (0: none yet) */
-    uint8_t main_camera; /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
-    uint8_t pod_order;   /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
-    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
-    uint8_t stream_on; /**< private: the external-track stream is on */
-    uint8_t stream[6]; /**< private: the stream's encoded parameters */
+    uint32_t operating_ms;                 /**< private: when the GCU said "operating" */
+    uint32_t now_ms;                       /**< private: the time of the current step */
+    uint32_t next_send_ms;                 /**< private: when the next packet is due */
+    uint32_t window_start_ms;              /**< private: start of the current one-second window */
+    /** @var xf_client::last_tx_ms
+     *  private: when the last packet went out */
+    /** @var xf_client::sync_ms
+     *  private: when synced became 1 */
+    /** @var xf_client::head_ms
+     *  private: when the queue's head began to wait, or (running) was first sent */
+    uint32_t last_tx_ms, sync_ms, head_ms;
+    uint32_t guard_ms;                        /**< private: when the guard opened */
+    uint32_t version_ms;                      /**< private: when the client began to send the version it sends now */
+    uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
+    float ctrl[3];                            /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
+    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
+    uint16_t carrier[XF__CARRIER_WORDS];      /**< private: carrier state as it goes on the wire */
+    /** @var xf_client::window_sent
+     *  private: packets sent in the window */
+    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
+    uint16_t period_ms;                   /**< private: ms between packets */
+    uint16_t packets;                     /**< private: packets that carried the running command */
+    uint16_t answered;                    /**< private: replies of the running command's order so far */
     /* commands */
     xf_cmd_slot queue[XF_CLIENT_QUEUE]; /**< private: commands queued or running, a ring */
     /** @var xf_client::q_head
@@ -433,52 +455,40 @@ typedef struct xf_client {
     uint8_t q_head, q_count; /**< private: commands in the queue */
     uint8_t active;          /**< private: queue[q_head] is being sent */
     uint8_t operating;       /**< private: ... and the GCU said "operating" */
+    uint8_t nulls_owed;      /**< private: null packets to send before the next command */
+    uint8_t r_next;          /**< private: results[r_next] is overwritten next */
+    uint8_t head_new;        /**< private: the queue's head is new: it waits from the next step's time */
     uint8_t guard_order;     /**< private: order of the last finished command (or of the stopped stream) */
-    uint8_t guard_open; /**< private: no null's reply since the guarded packets: guard_order waits (every order with
-                           reorder_ms or guard_multi) */
-    uint8_t nulls_owed; /**< private: null packets to send before the next command */
-    uint8_t r_next;     /**< private: results[r_next] is overwritten next */
-    /** @var xf_client::started_ms
-     *  private: when the running command was first sent */
-    uint32_t started_ms, operating_ms;        /**< private: when the GCU said "operating" */
-    uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
-    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
-    /* timing */
-    uint32_t now_ms;          /**< private: the time of the current step */
-    uint32_t next_send_ms;    /**< private: when the next packet is due */
-    uint32_t window_start_ms; /**< private: start of the current one-second window */
-    /** @var xf_client::window_sent
-     *  private: packets sent in the window */
-    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
-    uint16_t period_ms;                   /**< private: ms between packets */
-    uint16_t packets;                     /**< private: packets that carried the running command */
-    uint8_t started;                      /**< private: the first step has run */
-    uint8_t awaiting;                     /**< private: the last packet sent has had no reply yet */
-    uint8_t window_awaiting;              /**< private: the same, when the window started */
+    uint8_t guard_open;  /**< private: no null's reply since the guarded packets: guard_order waits (every order with
+                            reorder_ms or guard_multi) */
+    uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
+    uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
+    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
+    uint8_t stream_on; /**< private: the external-track stream is on */
+    uint8_t stream[6]; /**< private: the stream's encoded parameters */
+    /* inputs */
+    /** @var xf_client::have_carrier
+     *  private: carrier state was set */
+    uint8_t have_carrier, have_gnss; /**< private: GNSS data was set */
+    uint8_t ctrl_kind;   /**< private: 0 none, 1 rates, 2 angles, 3 none: dropped (xf_client_control_status()) */
+    uint8_t ctrl_mode;   /**< private: the reported mode that last read the setpoint (0: none yet) */
+    uint8_t main_camera; /**< private: the camera on the main screen, whose zoom scales rates (1 or 2) */
+    uint8_t pod_order;   /**< private: xf_pod_order of pod_status in use; 0x80 set: forced */
+    /* the link */
+    uint8_t started;         /**< private: the first step has run */
+    uint8_t awaiting;        /**< private: the last packet sent has had no reply yet */
+    uint8_t window_awaiting; /**< private: the same, when the window started */
     uint8_t busy; /**< private: in xf_client_step() or xf_client_cancel_all(): a nested step returns ::XF_ERR_BUSY */
     /** private: 0; 1: a reply to a null has come back; 2: and reorder_ms has passed, commands may start */
     uint8_t synced;
-    /** @var xf_client::last_tx_ms
-     *  private: when the last packet went out */
-    /** @var xf_client::sync_ms
-     *  private: when synced became 1 */
-    uint32_t last_tx_ms, sync_ms, head_ms; /**< private: when the queue's head began to wait */
-    /** @var xf_client::guard_ms
-     *  private: when the guard opened */
-    /** @var xf_client::answered
-     *  private: replies of the running command's order so far */
-    uint32_t guard_ms;
-    uint16_t answered;
-    uint8_t guard_wait;       /**< private: a reply of guard_order must come first (none had come when it ended) */
-    uint8_t guard_multi;      /**< private: the guard holds for every order (another guard was still open) */
-    uint8_t head_new;         /**< private: the queue's head is new: it waits from the next step's time */
-    uint32_t version_ms;      /**< private: when the client began to send the version it sends now */
-    uint16_t auto_reorder_ms; /**< private: the bound the client applies when it sees replies out of turn */
-    uint8_t round_replies;    /**< private: replies since the last packet sent (saturating) */
-    uint8_t run_order;        /**< private: the order of the running command, or of the last one */
-    uint8_t run_seen;         /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
-    uint8_t steady;           /**< private: packet periods in a row with one reply each */
-    uint8_t out_of_order;     /**< private: a reply came that no link in order can deliver: never in_order again */
+    uint8_t round_replies; /**< private: replies since the last packet sent (saturating) */
+    uint8_t run_order;     /**< private: the order of the running command, or of the last one */
+    uint8_t run_seen;      /**< private: 1: a reply of run_order came since it started; 2: and then one of another */
+    uint8_t steady;        /**< private: packet periods in a row with one reply each */
+    uint8_t out_of_order;  /**< private: a reply came that no link in order can deliver: never in_order again */
+    /** @var xf_client::phase_ms
+     *  private: the time from packet to reply in the first of the steady periods (xf__judge_round) */
+    uint8_t phase_ms, round_rtt; /**< private: the time from the last packet to the first reply since; 255: later */
 } xf_client;
 
 /**
@@ -774,7 +784,10 @@ void xf_client_clear_control(xf_client *c);
  *
  * The command is checked and encoded now, for the version the GCU speaks
  * (xf_client_gcu_version(): cfg.protocol_version until it answers), and
- * runs when the commands before it have finished: it is sent in every
+ * runs when the commands before it have finished. If the GCU turns out to
+ * speak the other version, it is checked again when it would start: when
+ * its parameters are out of range there, or mean something else (OSD's
+ * value), it ends as ::XF_CMD_REFUSED, never sent. It is sent in every
  * packet until a reply carries its execution state, then a null packet
  * follows. A command of the same order as the last one, while a packet of
  * that one has no reply yet, waits until the reply to a null sent after it
@@ -825,6 +838,8 @@ uint8_t xf_client_answered_version(const xf_client *c);
  * Show or hide the on-screen display: an ::XF_ORDER_OSD command with the
  * value that means it in the GCU's version (xf_osd_value(); the meaning was
  * inverted between V0.1 and V0.2), queued as xf_client_submit() queues.
+ * The value is chosen when the command starts, once the GCU has answered,
+ * so it means show or hide whatever version the GCU turns out to speak.
  * @param c     the client
  * @param show  nonzero to show the OSD, 0 to hide it
  * @param id    receives the command's id (may be NULL)
@@ -980,7 +995,7 @@ const char *xf_link_state_name(xf_link_state s);
  * Name of a command status, for messages.
  * @param s  the status
  * @return "queued", "sending", "operating", "ok", "failed", "timeout",
- *   "link lost", "cancelled", or "unknown" (::XF_CMD_UNKNOWN and any other
+ *   "link lost", "cancelled", "refused", or "unknown" (::XF_CMD_UNKNOWN and any other
  *   value); static
  */
 const char *xf_cmd_status_name(xf_cmd_status s);

@@ -53,7 +53,8 @@ typedef enum xf_sim_question {
     XF_SIM_Q_RANGE = 2,  /**< a parameter outside the range of the version the simulator speaks: failed */
     XF_SIM_Q_RECORD = 3, /**< record with a parameter other than 0x01 (the vendor's toggle): failed */
     XF_SIM_Q_CAMERA = 4, /**< an order only camera 2 takes, with another camera mask than 0x02: failed */
-    XF_SIM_Q_ORDER = 5   /**< an order the protocol does not define: failed */
+    XF_SIM_Q_ORDER = 5,  /**< an order the protocol does not define: failed */
+    XF_SIM_Q_NEWER = 6   /**< an order V0.2 added, to a simulator that speaks V0.1 (which does not know it): failed */
 } xf_sim_question;
 
 /** What the simulator tells xf_sim_config.on_note: a packet it read strictly. */

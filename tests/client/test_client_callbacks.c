@@ -349,7 +349,7 @@ static void test_cb_resubmit_during_cancel_all(void **state)
     uint32_t old[3];
     size_t i;
     (void)state;
-    assert_true(ct_run_link(r, XF_LINK_UP, 1000));
+    assert_true(ct_run_ready(r, 1000));
     r->s.fault.silent = 1; /* nothing finishes on its own */
     old[0] = ct_submit(r, XF_ORDER_SHUTTER);
     old[1] = ct_submit(r, XF_ORDER_RECORD);

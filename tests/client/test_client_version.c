@@ -266,13 +266,81 @@ static void test_fixed_version_unanswered(void **state)
     ct_rig_free(r);
 }
 
+/* A command submitted before the GCU has answered is checked for the version guessed then; when it
+ * would start, the GCU has answered, and one whose parameters are out of range or mean something
+ * else in the GCU's version ends as refused, never sent; the OSD helper's value is set for the
+ * GCU's version; the others run. @p first: the version guessed (with version_auto, and without:
+ * the configured one), @p gcu: the GCU's. */
+static void run_queued_early(uint8_t first, uint8_t gcu, int version_auto)
+{
+    xf_client_config cc;
+    xf_sim_config sc;
+    ct_rig *r;
+    xf_command cmd;
+    uint32_t bad_value, osd_raw, osd_hide, shutter, both;
+    size_t i;
+    xf_client_config_init(&cc);
+    cc.protocol_version = first;
+    cc.version_auto = (uint8_t)version_auto;
+    xf_sim_config_init(&sc);
+    sc.version = gcu;
+    sc.answer_only = version_auto ? gcu : 0u;
+    r = ct_rig_new(&cc, &sc);
+    /* before the first step: checked for the first guess */
+    xf_command_init(&cmd, (first == 1u) ? XF_ORDER_PALETTE : XF_ORDER_PIP);
+    cmd.value = (first == 1u) ? 50u : 3u; /* palette 50: V0.1 only; pip 3: V0.2 only */
+    bad_value = ct_submit_cmd(r, &cmd);
+    xf_command_init(&cmd, XF_ORDER_OSD);
+    cmd.value = xf_osd_value(1, first); /* "show" in the first guess: "hide" in the other version */
+    osd_raw = ct_submit_cmd(r, &cmd);
+    assert_xf(xf_client_osd(&r->c, 0, &osd_hide), XF_OK);
+    shutter = ct_submit(r, XF_ORDER_SHUTTER);
+    xf_command_init(&cmd, XF_ORDER_PALETTE);
+    cmd.value = 5; /* valid in both, the same meaning */
+    both = ct_submit_cmd(r, &cmd);
+    assert_status(ct_run_cmd(r, both, 3000, NULL), XF_CMD_OK);
+    assert_int_equal(xf_client_gcu_version(&r->c), gcu);
+    assert_status(xf_client_command_status(&r->c, bad_value, NULL), XF_CMD_REFUSED);
+    assert_status(xf_client_command_status(&r->c, osd_raw, NULL), XF_CMD_REFUSED);
+    assert_status(xf_client_command_status(&r->c, osd_hide, NULL), XF_CMD_OK);
+    assert_status(xf_client_command_status(&r->c, shutter, NULL), XF_CMD_OK);
+    assert_non_null(ct_result_of(&r->log, bad_value));
+    assert_int_equal(ct_result_of(&r->log, bad_value)->status, XF_CMD_REFUSED);
+    assert_int_equal(ct_result_of(&r->log, bad_value)->packets, 0);
+    /* on the wire: the refused ones never, the OSD once, as "hide" in the GCU's version */
+    assert_int_equal(r->s.stats.executed[XF_ORDER_OSD], 1);
+    assert_int_equal(r->s.camera_status & XF_CAMERA_OSD_ON, 0);
+    assert_int_equal(r->s.stats.executed[XF_ORDER_PIP], 0);
+    print_message("case %u %u %d: palette %u\n", first, gcu, version_auto,
+                  (unsigned)r->s.stats.executed[XF_ORDER_PALETTE]);
+    for (i = 0; i < r->log.n_sent; i++)
+        print_message(" %02x", r->log.sent_order[i]);
+    print_message("\n");
+    assert_int_equal(r->s.stats.executed[XF_ORDER_PALETTE], 1);
+    assert_int_equal(r->s.stats.photos, 1);
+    for (i = 0; i < r->log.n_sent; i++) {
+        assert_true(r->log.sent_order[i] != XF_ORDER_PIP);
+    }
+    assert_string_equal(xf_cmd_status_name(XF_CMD_REFUSED), "refused");
+    ct_rig_free(r);
+}
+
+static void test_queued_before_version_known(void **state)
+{
+    (void)state;
+    run_queued_early(1, 2, 1); /* version_auto, a wrong first guess either way */
+    run_queued_early(2, 1, 1);
+    run_queued_early(1, 2, 0); /* configured for V0.1, the GCU speaks V0.2 */
+    run_queued_early(2, 1, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_protocol_v2_rates),        cmocka_unit_test(test_protocol_v2_orders),
         cmocka_unit_test(test_submit_model_support),     cmocka_unit_test(test_gcu_version_decides),
         cmocka_unit_test(test_auto_version_finds_it),    cmocka_unit_test(test_auto_version_sticks),
-        cmocka_unit_test(test_fixed_version_unanswered),
+        cmocka_unit_test(test_fixed_version_unanswered), cmocka_unit_test(test_queued_before_version_known),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

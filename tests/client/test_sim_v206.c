@@ -320,6 +320,62 @@ static void test_rates_by_main_screen_zoom(void **state)
     free(f);
 }
 
+/* Every order V0.2 added, with valid parameters, on the wire: a V0.1 simulator does not know it and
+ * answers as to an unknown order (failure, told to on_note, nothing done: the time zone and the
+ * mode stay); a V0.2 simulator runs it. */
+static void test_v01_refuses_v02_orders(void **state)
+{
+    size_t i, newer = 0;
+    (void)state;
+    for (i = 0; i < XF_ORDER_COUNT; i++) {
+        const xf_order_info *info = xf_order_at(i);
+        uint8_t version;
+        if (info->since < XF_PROTOCOL_V2) {
+            continue;
+        }
+        newer++;
+        for (version = 1; version <= 2u; version++) {
+            notes k;
+            sim_fx *f;
+            xf_gcu_packet r;
+            xf_command cmd;
+            uint8_t mode;
+            memset(&k, 0, sizeof(k));
+            f = fx_version(version, &k);
+            mode = (uint8_t)f->s.mode;
+            ct_valid_command(&cmd, info->order);
+            if (info->order == XF_ORDER_TIME_ZONE) {
+                cmd.hours = 5;
+            }
+            send_cmd(f, version, &cmd, &r);
+            assert_int_equal(r.order, info->order);
+            assert_int_equal(r.params_len, 1);
+            if (version == 1u) {
+                assert_int_equal(r.params[0], (info->flags & XF_ORDER_MASK_FAILURE) ? XF_CAM2 : XF_STATE_FAILURE);
+                assert_int_equal(k.n, 1);
+                assert_int_equal(k.last.question, XF_SIM_Q_NEWER);
+                assert_int_equal(k.last.order, info->order);
+                assert_string_equal(k.last.text, xf_sim_question_text(XF_SIM_Q_NEWER));
+                assert_int_equal(f->s.stats.strict, 1);
+                assert_int_equal(f->s.mode, mode);
+                assert_int_equal(f->s.time_zone, 0);
+            } else {
+                assert_int_equal(k.n, 0);
+                assert_int_equal(f->s.stats.strict, 0);
+                if (info->order == XF_ORDER_TIME_ZONE) {
+                    assert_int_equal(f->s.time_zone, 5);
+                    assert_int_equal(r.params[0], XF_STATE_SUCCESS);
+                }
+                if (info->order == XF_ORDER_FPV) {
+                    assert_int_equal(f->s.mode, XF_MODE_FPV);
+                }
+            }
+            free(f);
+        }
+    }
+    assert_int_equal(newer, 10); /* V0.2's ten new orders (docs/protocol.md §10.2) */
+}
+
 /* ---- what V2.0.6 leaves open: the strict reading, said -------------------------------------- */
 
 /* Parameters of the wrong length (a 2-byte shutter, a 9-byte click-to-aim and track, as public
@@ -427,13 +483,10 @@ static void test_answer_only(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_commands_in_own_version),
-        cmocka_unit_test(test_angles_hold_while_invalid),
-        cmocka_unit_test(test_relative_angles_from_encoders),
-        cmocka_unit_test(test_camera2_orders_fail_0x02),
-        cmocka_unit_test(test_rates_by_main_screen_zoom),
-        cmocka_unit_test(test_strict_readings_told),
-        cmocka_unit_test(test_answer_only),
+        cmocka_unit_test(test_commands_in_own_version),       cmocka_unit_test(test_angles_hold_while_invalid),
+        cmocka_unit_test(test_relative_angles_from_encoders), cmocka_unit_test(test_camera2_orders_fail_0x02),
+        cmocka_unit_test(test_rates_by_main_screen_zoom),     cmocka_unit_test(test_strict_readings_told),
+        cmocka_unit_test(test_v01_refuses_v02_orders),        cmocka_unit_test(test_answer_only),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
