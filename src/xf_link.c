@@ -461,6 +461,11 @@ xf_err xf_link_hal(xf_link *l, xf_hal *hal)
     return XF_OK;
 }
 
+int xf_link_keeps_order(const xf_link_spec *spec)
+{
+    return spec != NULL && (spec->kind == XF_LINK_KIND_SERIAL || spec->kind == XF_LINK_KIND_TCP);
+}
+
 void xf_link_close(xf_link *l)
 {
     if (l != NULL && l->is_open) { /* a zeroed link holds descriptor 0: never closed */

@@ -269,6 +269,30 @@ static void test_spec_init(void **state)
     assert_xf(xf_link_spec_init(NULL, XF_LINK_KIND_TCP, "x"), XF_ERR_ARG);
 }
 
+/* Serial lines and TCP streams keep order and never duplicate; UDP may not: only the first two
+ * let a client skip judging the link. */
+static void test_keeps_order(void **state)
+{
+    static const struct {
+        const char *spec;
+        int keeps;
+    } kinds[] = {{"serial:/dev/ttyUSB0", 1},
+                 {"tcp:10.0.0.5", 1},
+                 {"tcp:10.0.0.5:2332", 1},
+                 {"udp:10.0.0.5", 0},
+                 {"udp:127.0.0.1:2337,local=0", 0}};
+    xf_link_spec s;
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(kinds) / sizeof(kinds[0]); i++) {
+        assert_xf(xf_link_spec_parse(kinds[i].spec, &s), XF_OK);
+        assert_int_equal(xf_link_keeps_order(&s), kinds[i].keeps);
+    }
+    memset(&s, 0, sizeof(s));
+    assert_int_equal(xf_link_keeps_order(&s), 0); /* no kind */
+    assert_int_equal(xf_link_keeps_order(NULL), 0);
+}
+
 static void test_describe(void **state)
 {
     xf_link l;
@@ -684,13 +708,14 @@ static void test_run_refusals(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_parse_good),      cmocka_unit_test(test_parse_bad),
-        cmocka_unit_test(test_parse_lengths),   cmocka_unit_test(test_parse_garbage),
-        cmocka_unit_test(test_spec_init),       cmocka_unit_test(test_describe),
-        cmocka_unit_test(test_link_arguments),  cmocka_unit_test(test_open_failures),
-        cmocka_unit_test(test_open_tcp),        cmocka_unit_test(test_open_udp),
-        cmocka_unit_test(test_open_serial_pty), cmocka_unit_test(test_run_to_result),
-        cmocka_unit_test(test_run_timeout),     cmocka_unit_test(test_run_refusals),
+        cmocka_unit_test(test_parse_good),    cmocka_unit_test(test_parse_bad),
+        cmocka_unit_test(test_parse_lengths), cmocka_unit_test(test_parse_garbage),
+        cmocka_unit_test(test_spec_init),     cmocka_unit_test(test_keeps_order),
+        cmocka_unit_test(test_describe),      cmocka_unit_test(test_link_arguments),
+        cmocka_unit_test(test_open_failures), cmocka_unit_test(test_open_tcp),
+        cmocka_unit_test(test_open_udp),      cmocka_unit_test(test_open_serial_pty),
+        cmocka_unit_test(test_run_to_result), cmocka_unit_test(test_run_timeout),
+        cmocka_unit_test(test_run_refusals),
     };
     signal(SIGPIPE, SIG_IGN);
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -171,6 +171,16 @@ xf_err xf_link_wait(xf_link *l, uint32_t timeout_ms);
 xf_err xf_link_hal(xf_link *l, xf_hal *hal);
 
 /**
+ * Whether a link of this kind delivers bytes in the order they were sent and never twice: a
+ * serial line and a TCP stream do, UDP does not (a radio, a VPN or Wi-Fi may reorder or duplicate
+ * datagrams). A client on such a link need not judge it: set xf_client_config.reorder_fixed from
+ * this, unless the user gave a reorder bound (docs/protocol.md §7.4). Never blocks.
+ * @param spec  a parsed spec (xf_link.spec)
+ * @return 1 for `serial:` and `tcp:`, 0 for `udp:` and anything else (NULL included)
+ */
+int xf_link_keeps_order(const xf_link_spec *spec);
+
+/**
  * Close the link; it no longer reconnects or reopens by itself. l->spec is kept (for
  * xf_link_describe()). Safe on a closed or never-opened (zeroed) link; does nothing for a NULL
  * @p l. Never blocks.
