@@ -1,0 +1,348 @@
+#!/usr/bin/env python3
+"""Firmware in the loop: the example firmware runs, not only compiles, against the simulator.
+
+The emulator's image of examples/mcu (board_netduinoplus2.c) runs under qemu-system-arm's
+netduinoplus2 machine: its USART2 (the gimbal) on a pseudo-terminal that `xfgcu sim --serial`
+serves as the gimbal, its USART1 (the report) on qemu's standard output. The firmware runs
+throughout; the simulator is started and stopped around it, phase by phase:
+
+  normal    the loop comes up: 50 packets/s answered, photos, carrier data once the INS is valid
+  stopped   no simulator: the link goes down, the firmware keeps running
+  noise     a simulator whose replies carry line noise and lose bytes: the link comes back,
+            the firmware counts CRC errors and skipped bytes, photos still succeed
+  silent    a simulator that answers nothing: the link goes down again
+  failing   a simulator whose shutter fails: the link comes back, the photos fail
+
+The checks read the simulator's JSON log (--json --verbose --stats 1) and the firmware's report
+lines, each stamped on arrival with the monotonic clock that the simulator's time_mono uses.
+qemu runs with -icount shift=auto: its virtual clock (the firmware's SysTick) follows the
+instructions run and is kept near real time. Without it, SysTick loses ticks (4 % on an idle
+host, 12 % with both cores busy) and, on a loaded host, replies reach the firmware late and in
+bursts, so that its link flaps between up and stale; with it, measured under the same load, the
+link stays up. Rates are still checked loosely on the host's clock, and tightly on the firmware's
+own clock (the one the client runs on).
+
+usage: firmware_loop.py --qemu PATH --elf PATH --xfgcu PATH --log DIR
+exit 0 when every check holds; 1 with each failed check on standard error.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import threading
+import time
+
+PHASES = [  # name, seconds, the simulator's fault options (None: no simulator)
+    ("normal", 8.0, []),
+    ("stopped", 2.5, None),
+    ("noise", 6.0, ["--noise", "2", "--drop-bytes", "2"]),
+    ("silent", 3.0, ["--drop", "1000"]),
+    ("failing", 4.0, ["--fail", "shutter=1"]),
+]
+HOST_RATE = (30.0, 56.0)  # packets/s the simulator sees on the host's clock: loose, a loaded host is slow
+FW_RATE = (48.0, 52.0)    # packets/s the firmware sent on its own clock: the client's pacing
+SLACK = 0.3               # s: lines of the two logs are compared in time with this much doubt
+
+FW_LINE = re.compile(r"^xfgcu mcu: (\d+)\.(\d{3}) s: (.*)$")
+HEALTH = re.compile(
+    r"^link (?P<link>up|stale|down), (?P<rate>\d+) replies/s, (?P<missing>\d+) missing/s, "
+    r"(?P<sent>\d+) sent, (?P<received>\d+) received; (?P<crc>\d+) CRC errors, "
+    r"(?P<length>\d+) length errors, (?P<skipped>\d+) bytes skipped; commands (?P<ok>\d+) ok, "
+    r"(?P<failed>\d+) failed, (?P<timeout>\d+) timeout, (?P<lost>\d+) link lost; "
+    r"(?P<send_errors>\d+) send errors, (?P<overruns>\d+) rx overruns, (?P<lines_lost>\d+) report lines lost$")
+RESULT = re.compile(r"^(?P<order>\S+) (?P<status>ok|failed|timeout|link lost|operating|cancelled) "
+                    r"\((?P<packets>\d+) packets, (?P<ms>\d+) ms\)$")
+
+
+class Lines:
+    """A process's output lines, each with the monotonic time it arrived, copied to a log."""
+
+    def __init__(self, stream, log_path, echo=False):
+        self.items, self.lock = [], threading.Lock()
+        self.thread = threading.Thread(target=self._read, args=(stream, log_path, echo), daemon=True)
+        self.thread.start()
+
+    def _read(self, stream, log_path, echo):
+        with open(log_path, "w", encoding="utf-8") as log:
+            for raw in stream:
+                text = raw.decode("utf-8", "replace").rstrip("\r\n")
+                with self.lock:
+                    self.items.append((time.monotonic(), text))
+                log.write(text + "\n")
+                log.flush()
+                if echo:
+                    print(text, flush=True)
+
+    def snapshot(self):
+        with self.lock:
+            return list(self.items)
+
+
+def start_qemu(args, seconds):
+    cmd = ["timeout", "--signal=KILL", str(int(seconds) + 30), args.qemu, "-M", "netduinoplus2",
+           "-kernel", args.elf, "-icount", "shift=auto", "-display", "none", "-monitor", "none", "-serial", "stdio", "-serial", "pty"]
+    proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    return proc, Lines(proc.stdout, os.path.join(args.log, "firmware.log"), echo=args.echo)
+
+
+def wait_pty(lines, proc):
+    deadline = time.monotonic() + 10.0
+    while time.monotonic() < deadline and proc.poll() is None:
+        for _, text in lines.snapshot():
+            m = re.search(r"redirected to (/dev/pts/\d+) \(label serial1\)", text)
+            if m:
+                return m.group(1)
+        time.sleep(0.05)
+    raise SystemExit("firmware_loop: qemu gave no pseudo-terminal for USART2 (see firmware.log)")
+
+
+def run_phase(args, pty, name, seconds, faults):
+    """One phase; returns (start, end, simulator events)."""
+    start = time.monotonic()
+    if faults is None:
+        time.sleep(seconds)
+        return start, time.monotonic(), []
+    cmd = [args.xfgcu, "sim", "--serial", pty, "--json", "--verbose", "--stats", "1",
+           "--duration", str(seconds)] + faults
+    with open(os.path.join(args.log, f"sim-{name}.log"), "w", encoding="utf-8") as log:
+        proc = subprocess.run(cmd, stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=seconds + 15)
+        log.write(proc.stdout + proc.stderr)
+    if proc.returncode != 0:
+        raise SystemExit(f"firmware_loop: {' '.join(cmd)} exited {proc.returncode}: {proc.stderr.strip()}")
+    return start, time.monotonic(), [json.loads(line) for line in proc.stdout.splitlines() if line.strip()]
+
+
+def parse_firmware(items):
+    """Report lines as dicts: t (host), fw (firmware seconds), kind, and the fields of the kind."""
+    out = []
+    for t, text in items:
+        m = FW_LINE.match(text)
+        if not m:
+            continue
+        rec = {"t": t, "fw": int(m.group(1)) + int(m.group(2)) / 1000.0, "text": m.group(3)}
+        h, r = HEALTH.match(rec["text"]), RESULT.match(rec["text"])
+        if h:
+            rec.update(kind="health", link=h.group("link"),
+                       **{k: int(v) for k, v in h.groupdict().items() if k != "link"})
+        elif r:
+            rec.update(kind="result", order=r.group("order"), status=r.group("status"))
+        elif rec["text"].startswith("link "):
+            rec.update(kind="link", link=rec["text"][5:])
+        elif rec["text"].startswith("ins "):
+            rec.update(kind="ins", valid=rec["text"] == "ins valid")
+        else:
+            rec.update(kind="other")
+        out.append(rec)
+    return out
+
+
+class Checks:
+    def __init__(self):
+        self.failed, self.passed = [], 0
+
+    def expect(self, ok, what):
+        if ok:
+            self.passed += 1
+        else:
+            self.failed.append(what)
+        print(f"{'ok  ' if ok else 'FAIL'} {what}", flush=True)
+
+
+class Phase:
+    def __init__(self, name, start, end, events):
+        self.name, self.start, self.end, self.events = name, start, end, events
+        self.stats = [e for e in events if e.get("event") == "stats"]
+
+    def holds(self, rec, late=SLACK):
+        """rec arrived during the phase (or up to `late` s after its end)."""
+        return self.start <= rec["t"] <= self.end + late
+
+    def executed(self, order, state=None):
+        return [e for e in self.events if e.get("event") == "executed" and e.get("order_name") == order
+                and (state is None or e.get("state") == state)]
+
+    def final(self, key):
+        return self.stats[-1][key] if self.stats else None
+
+
+def of_kind(fw, kind, **fields):
+    return [r for r in fw if r["kind"] == kind and all(r.get(k) == v for k, v in fields.items())]
+
+
+def last_before(health, t):
+    before = [r for r in health if r["t"] <= t]
+    return before[-1] if before else None
+
+
+def check_boot(c, fw):
+    starts = [r for r in fw if r["text"].startswith("started on ")]
+    c.expect(len(starts) == 1 and "netduinoplus2" in starts[0]["text"],
+             "the firmware started once, on the emulated board, and never again")
+    m = re.search(r"a photo every (\d+) ms", starts[0]["text"]) if starts else None
+    return int(m.group(1)) if m else 0
+
+
+def check_alive(c, fw, phases):
+    health = of_kind(fw, "health")
+    gaps = [b["t"] - a["t"] for a, b in zip(health, health[1:])]
+    c.expect(len(health) >= 15 and max(gaps) <= 3.0,
+             f"a health line at least every 3 s throughout ({len(health)} lines, longest gap "
+             f"{max(gaps) if gaps else 0:.2f} s)")
+    c.expect(bool(health) and health[-1]["t"] >= phases[-1].end - 1.5,
+             "the firmware still reports after the last phase")
+    if len(health) >= 2:
+        ratio = (health[-1]["fw"] - health[0]["fw"]) / (health[-1]["t"] - health[0]["t"])
+        c.expect(0.8 <= ratio <= 1.2, f"the firmware's millisecond tick keeps time: {ratio:.3f} s per host s")
+    c.expect(bool(health) and health[-1]["send_errors"] == 0 and health[-1]["overruns"] == 0
+             and health[-1]["lines_lost"] == 0, "no send error, receive overrun or lost report line")
+
+
+def check_loop(c, fw, normal):
+    c.expect(any(normal.holds(r) for r in of_kind(fw, "link", link="up")), "normal: the firmware's link comes up")
+    up = [r for r in of_kind(fw, "health", link="up") if normal.holds(r, late=0)]
+    if len(up) >= 2 and up[-1]["fw"] - up[0]["fw"] >= 3.0:
+        rate = (up[-1]["sent"] - up[0]["sent"]) / (up[-1]["fw"] - up[0]["fw"])
+        c.expect(FW_RATE[0] <= rate <= FW_RATE[1], f"normal: the firmware sends {rate:.1f} packets/s on its clock")
+    else:
+        c.expect(False, f"normal: the link is up for 3 s of health lines ({len(up)} lines)")
+    c.expect(bool(up) and max(r["rate"] for r in up) >= 40 and all(r["crc"] == 0 for r in up),
+             "normal: the firmware counts 40 replies/s or more, and no CRC error")
+    flowing = [s for s in normal.stats if s["packets_in"] > 0][1:]  # from the second: the link is settled
+    if len(flowing) >= 3:
+        a, b = flowing[0], flowing[-1]
+        rate = (b["packets_in"] - a["packets_in"]) / (b["time_mono"] - a["time_mono"])
+        c.expect(HOST_RATE[0] <= rate <= HOST_RATE[1], f"normal: the simulator gets {rate:.1f} packets/s")
+    else:
+        c.expect(False, f"normal: packets reach the simulator for 3 s ({len(flowing)} stats lines)")
+    c.expect(normal.final("replies") == normal.final("packets_in") > 0,
+             f"normal: the simulator answers every packet ({normal.final('replies')} of "
+             f"{normal.final('packets_in')})")
+
+
+def check_photos(c, fw, phase, status, least):
+    state = 0 if status == "ok" else 1
+    sim = len(phase.executed("shutter", state))
+    mine = len([r for r in of_kind(fw, "result", order="shutter", status=status) if phase.holds(r, late=1.5)])
+    c.expect(sim >= least and mine >= least,
+             f"{phase.name}: photos {status}: {sim} executed by the simulator, {mine} reported by the firmware")
+
+
+def check_results(c, fw, phases):
+    """Every execution ends in a result at the firmware, and no result comes without one."""
+    ran = {st: sum(len(p.executed("shutter", st)) for p in phases) for st in (0, 1)}
+    got = {st: len(of_kind(fw, "result", order="shutter", status=st))
+           for st in ("ok", "failed", "timeout", "link lost")}
+    c.expect(got["ok"] <= ran[0] and got["failed"] <= ran[1] and ran[0] + ran[1] <= sum(got.values()),
+             f"photos: {ran[0]} executed ok and {ran[1]} failing by the simulator; the firmware reports "
+             + ", ".join(f"{n} {st}" for st, n in got.items()))
+
+
+def check_ins(c, fw, normal, later):
+    ins = of_kind(fw, "ins")
+    c.expect(len(ins) == 1 and ins[0]["valid"] and normal.holds(ins[0]),
+             "normal: the stand-in INS becomes valid once, while the simulator runs")
+    if len(ins) != 1:
+        return
+    t = ins[0]["t"]
+    steps = list(zip(normal.stats, normal.stats[1:]))
+    before = [(a, b) for a, b in steps if b["time_mono"] < t - SLACK and b["packets_in"] > a["packets_in"]]
+    after = [(a, b) for a, b in steps if a["time_mono"] > t + SLACK]
+    c.expect(bool(before) and all(b["ins_valid_packets"] == 0 for _, b in before),
+             f"normal: before the INS is valid, no packet has ins_valid set ({len(before)} s of packets)")
+    c.expect(bool(after) and all(b["ins_valid_packets"] - a["ins_valid_packets"] == b["packets_in"] - a["packets_in"]
+                                 for a, b in after),
+             f"normal: after it, every packet has ins_valid set ({len(after)} s of packets)")
+    c.expect(all(p.final("ins_valid_packets") == p.final("packets_in") > 0 for p in later),
+             "noise, silent, failing: every packet has ins_valid set")
+
+
+def check_restart(c, fw, stopped, back):
+    down = [r for r in of_kind(fw, "link", link="down") if stopped.holds(r)]
+    up = [r for r in of_kind(fw, "link", link="up") if back.holds(r)]
+    c.expect(bool(down) and bool(up) and down[0]["t"] < up[0]["t"],
+             f"{stopped.name}, {back.name}: the firmware's link goes down, and comes back when the "
+             "simulator is started again")
+
+
+def check_noise(c, fw, noise):
+    health = of_kind(fw, "health")
+    a, b = last_before(health, noise.start), last_before(health, noise.end + SLACK)
+    c.expect(noise.final("noise_bytes") > 0 and noise.final("dropped_bytes") > 0,
+             f"noise: the simulator added {noise.final('noise_bytes')} noise bytes, "
+             f"dropped {noise.final('dropped_bytes')}")
+    c.expect(a is not None and b is not None and b["crc"] > a["crc"] and b["skipped"] > a["skipped"]
+             and b["received"] > a["received"],
+             "noise: the firmware counts CRC errors and skipped bytes, and still receives replies")
+
+
+def check_silent(c, fw, silent):
+    down = [r for r in of_kind(fw, "link", link="down") if silent.holds(r)]
+    last = last_before(of_kind(fw, "health"), silent.end + SLACK)
+    c.expect(silent.final("packets_in") > 0 and silent.final("replies") == 0,
+             "silent: the firmware keeps sending, the simulator answers nothing")
+    c.expect(bool(down) and last is not None and last["link"] == "down" and last["rate"] == 0
+             and last["missing"] >= 20, "silent: the firmware's link goes down, and it counts the missing replies")
+
+
+def check_counts(c, fw):
+    last = of_kind(fw, "health")[-1]
+    ok, failed = len(of_kind(fw, "result", status="ok")), len(of_kind(fw, "result", status="failed"))
+    c.expect(last["ok"] == ok and last["failed"] == failed,
+             f"the health line counts the results reported: {last['ok']} ok, {last['failed']} failed")
+
+
+def run(args):
+    os.makedirs(args.log, exist_ok=True)
+    qemu, lines = start_qemu(args, sum(p[1] for p in PHASES))
+    phases = []
+    try:
+        pty = wait_pty(lines, qemu)
+        for name, seconds, faults in PHASES:
+            print(f"--- {name}: {seconds:.1f} s, " + (f"xfgcu sim {' '.join(faults)}" if faults is not None
+                                                         else "no simulator"), flush=True)
+            phases.append(Phase(name, *run_phase(args, pty, name, seconds, faults)))
+        time.sleep(2.0)  # the last health line, and the result of a photo the last stop cut short
+    finally:
+        qemu.terminate()  # timeout(1) passes it on to qemu
+        qemu.wait(10)
+        lines.thread.join(5)
+    return phases, parse_firmware(lines.snapshot())
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--qemu", required=True)
+    ap.add_argument("--elf", required=True)
+    ap.add_argument("--xfgcu", required=True)
+    ap.add_argument("--log", required=True, help="directory for the firmware's and the simulator's logs")
+    args = ap.parse_args()
+    args.echo = True
+    t0 = time.monotonic()
+    phases, fw = run(args)
+    p = {ph.name: ph for ph in phases}
+    c = Checks()
+    photo_ms = check_boot(c, fw)
+    c.expect(0 < photo_ms <= 2000, f"a test image: a photo every {photo_ms} ms (2000 at most)")
+    check_alive(c, fw, phases)
+    check_loop(c, fw, p["normal"])
+    check_photos(c, fw, p["normal"], "ok", 2)
+    check_ins(c, fw, p["normal"], [p["noise"], p["silent"], p["failing"]])
+    check_restart(c, fw, p["stopped"], p["noise"])
+    check_noise(c, fw, p["noise"])
+    check_photos(c, fw, p["noise"], "ok", 1)
+    check_silent(c, fw, p["silent"])
+    check_restart(c, fw, p["silent"], p["failing"])
+    check_photos(c, fw, p["failing"], "failed", 1)
+    check_results(c, fw, phases)
+    check_counts(c, fw)
+    print(f"firmware_loop: {c.passed} checks passed, {len(c.failed)} failed, {time.monotonic() - t0:.1f} s; "
+          f"logs in {args.log}", flush=True)
+    for what in c.failed:
+        print(f"firmware_loop: FAILED: {what}", file=sys.stderr)
+    return 1 if c.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
