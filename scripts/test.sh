@@ -6,8 +6,9 @@
 # package installed into a venv and tested, a capture dissected by tshark, the clang
 # ASan+UBSan preset + ctest, the bare-metal presets); gcc -O2, clang -O2 and -O3 builds + ctest;
 # fuzz smoke; compiler matrix; docs (Doxygen with warnings as errors, man page, no references
-# outside the project); static analysis; MCU sizes; big-endian tests under qemu; benchmark figures
-# (printed, never asserted).
+# outside the project); static analysis; MCU sizes; the MCU example under qemu-system-arm against
+# the simulator (ctest -L firmware, once); big-endian tests under qemu; benchmark figures (printed,
+# never asserted).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh --dev
@@ -18,7 +19,7 @@ stage() { printf '\n=== %s  (%ss)\n' "$*" "$(($(date +%s) - t0))"; }
 stage "gcc: Debug build with -Werror (the Python package's native library too), run the tests"
 cmake -S . -B build/gcc -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_COMPILER=gcc -DXFGCU_BUILD_PYTHON=ON >/dev/null
 cmake --build build/gcc --parallel "$jobs"
-ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"
+ctest --test-dir build/gcc --output-on-failure --parallel "$jobs" --label-exclude firmware # its own stage
 
 stage "Python: the package's tests (pytest, hypothesis) over build/gcc's library and program"
 python/run_tests.sh build/gcc
@@ -34,8 +35,9 @@ for cfg in "gcc -O2" "clang -O2" "clang -O3"; do
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="$1" \
         -DCMAKE_C_FLAGS_RELEASE="$2 -DNDEBUG" >/dev/null
   cmake --build "$dir" --parallel "$jobs"
-  ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --label-exclude live # the Debug, Release
-done                                                                                 # and ASan runs have them
+  # live: the Debug, Release and ASan runs have them; firmware: its own stage below
+  ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --label-exclude 'live|firmware'
+done
 
 stage "fuzz smoke: libFuzzer harnesses over the saved corpus and a short run"
 scripts/fuzz.sh smoke
@@ -51,6 +53,9 @@ scripts/lint.sh
 
 stage "MCU: Cortex-M4 firmware and RISC-V builds, sizes"
 scripts/mcu_size.sh
+
+stage "firmware in the loop: the MCU example under qemu-system-arm against xfgcu sim (ctest -L firmware)"
+ctest --test-dir build/gcc --output-on-failure -L firmware --no-tests=error
 
 stage "big-endian: codec and client tests on s390x under qemu-user"
 scripts/bigendian.sh

@@ -117,7 +117,7 @@ static void count_result(xf_cmd_status status)
     }
 }
 
-/* "shutter ok (2 packets, 40 ms)", as `xfgcu send` names the outcome */
+/* "shutter ok (2 packets, 40 ms)", with the words `xfgcu send` names the outcome in */
 void report_result(void *user, const xf_cmd_result *result)
 {
     const char *name = xf_order_name(result->order);
@@ -130,16 +130,13 @@ void report_result(void *user, const xf_cmd_result *result)
     put_str(&l, xf_cmd_status_name(result->status));
     put_str(&l, " (");
     put_u32(&l, result->packets);
-    put_str(&l, " packets, ");
+    put_str(&l, result->packets == 1u ? " packet, " : " packets, ");
     put_u32(&l, result->elapsed_ms);
     put_str(&l, " ms)");
     finish(&l);
 }
 
-void report_ins(int valid)
-{
-    report_text(valid ? "ins valid" : "ins no data");
-}
+void report_ins(int valid) { report_text(valid ? "ins valid" : "ins no data"); }
 
 /* "link up, 50 replies/s, 0 missing/s, 600 sent, 598 received", as `xfgcu monitor` prints it */
 static void put_link(line *l, const xf_health *h)
