@@ -64,7 +64,8 @@ int main(void)
 
     board_init();
     start = last_photo = last_report = board_millis();
-    report_start(GIMBAL_BAUD, EXAMPLE_PHOTO_MS);
+    report_init(board_millis, board_report_put);
+    report_start(board_name, GIMBAL_BAUD, EXAMPLE_PHOTO_MS);
     if (!start_client()) {
         report_text("xf_client_init failed: check the HAL and the configuration");
         for (;;) {

@@ -6,46 +6,80 @@
  */
 #include "report.h"
 
-#include "board.h"
+#include <string.h>
 
-/* The longest line, the health line with every count at 10 digits, is 316 characters. */
-#define LINE_MAX 320u
+/* The longest line, the health line with the time and every count at 10 digits, is 358
+ * characters with its CR LF. A longer one (a long report_text()) ends in "..." where it was cut. */
+#define LINE_MAX 384u
+#define TEXT_MAX (LINE_MAX - 5u) /* room for "...\r\n" */
 
 typedef struct line {
     char text[LINE_MAX];
     uint32_t n;
+    uint8_t cut; /* something did not fit */
 } line;
 
-static char g_ring[REPORT_RING];
-static uint32_t g_head, g_tail; /* main loop only: no interrupt touches them */
-static uint32_t g_lost_lines;
-static uint32_t g_ok, g_failed, g_timeout, g_link_lost; /* command results so far */
+/* The report's state: main loop only, no interrupt touches it. */
+typedef struct report {
+    uint32_t (*now_ms)(void);
+    int (*put)(uint8_t byte);
+    char ring[REPORT_RING];
+    uint32_t head, tail;
+    uint32_t lost_lines;
+    uint32_t ok, failed, timeout, link_lost; /* command results so far */
+} report;
+
+static report g_report;
 
 static void put_str(line *l, const char *s)
 {
-    while (*s != '\0' && l->n < LINE_MAX) {
+    while (*s != '\0' && l->n < TEXT_MAX) {
         l->text[l->n++] = *s++;
     }
+    l->cut = (uint8_t)(l->cut || *s != '\0');
 }
 
 static void put_u32(line *l, uint32_t v)
 {
-    char digits[10];
-    uint32_t k = 0;
+    char digits[11];
+    uint32_t k = sizeof(digits) - 1u;
+    digits[k] = '\0';
     do {
-        digits[k++] = (char)('0' + v % 10u);
+        digits[--k] = (char)('0' + v % 10u);
         v /= 10u;
     } while (v != 0u);
-    while (k > 0u && l->n < LINE_MAX) {
-        l->text[l->n++] = digits[--k];
+    put_str(l, digits + k);
+}
+
+/* "3 CRC errors, ": numbers, each with the words that follow it */
+typedef struct count {
+    uint32_t n;
+    const char *words;
+} count;
+
+static void put_counts(line *l, const count *c, uint32_t k)
+{
+    uint32_t i;
+    for (i = 0; i < k; i++) {
+        put_u32(l, c[i].n);
+        put_str(l, c[i].words);
     }
+}
+
+/* "0x20": an order byte as docs/protocol.md and `xfgcu decode` show it */
+static void put_hex8(line *l, uint8_t v)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    char text[5] = {'0', 'x', hex[v >> 4], hex[v & 0xFu], '\0'};
+    put_str(l, text);
 }
 
 /* "xfgcu mcu: 12.345 s: ", the time on the client's clock */
 static void begin(line *l)
 {
-    uint32_t now = board_millis(), frac = now % 1000u;
+    uint32_t now = g_report.now_ms(), frac = now % 1000u;
     l->n = 0;
+    l->cut = 0;
     put_str(l, "xfgcu mcu: ");
     put_u32(l, now / 1000u);
     put_str(l, frac < 10u ? ".00" : frac < 100u ? ".0" : ".");
@@ -56,35 +90,47 @@ static void begin(line *l)
 static void finish(line *l)
 {
     uint32_t i;
-    put_str(l, "\r\n");
-    if (l->n > REPORT_RING - 1u - (g_head - g_tail)) {
-        g_lost_lines++;
+    if (l->cut) {
+        l->text[l->n++] = '.';
+        l->text[l->n++] = '.';
+        l->text[l->n++] = '.';
+    }
+    l->text[l->n++] = '\r';
+    l->text[l->n++] = '\n';
+    if (l->n > REPORT_RING - 1u - (g_report.head - g_report.tail)) {
+        g_report.lost_lines++;
         return;
     }
     for (i = 0; i < l->n; i++) {
-        g_ring[(g_head + i) & (REPORT_RING - 1u)] = l->text[i];
+        g_report.ring[(g_report.head + i) & (REPORT_RING - 1u)] = l->text[i];
     }
-    g_head += l->n;
+    g_report.head += l->n;
 }
 
 void report_poll(void)
 {
-    while (g_tail != g_head && board_report_put((uint8_t)g_ring[g_tail & (REPORT_RING - 1u)])) {
-        g_tail++;
+    report *r = &g_report;
+    while (r->tail != r->head && r->put((uint8_t)r->ring[r->tail & (REPORT_RING - 1u)])) {
+        r->tail++;
     }
 }
 
-void report_start(uint32_t baud, uint32_t photo_ms)
+void report_init(uint32_t (*now_ms)(void), int (*put)(uint8_t byte))
+{
+    memset(&g_report, 0, sizeof(g_report));
+    g_report.now_ms = now_ms;
+    g_report.put = put;
+}
+
+void report_start(const char *board, uint32_t baud, uint32_t photo_ms)
 {
     line l;
+    const count counts[] = {{baud, " baud, a photo every "}, {photo_ms, " ms"}};
     begin(&l);
     put_str(&l, "started on ");
-    put_str(&l, board_name);
+    put_str(&l, board);
     put_str(&l, "; gimbal at ");
-    put_u32(&l, baud);
-    put_str(&l, " baud, a photo every ");
-    put_u32(&l, photo_ms);
-    put_str(&l, " ms");
+    put_counts(&l, counts, 2u);
     finish(&l);
 }
 
@@ -109,23 +155,24 @@ void report_link(void *user, xf_link_state state)
 static void count_result(xf_cmd_status status)
 {
     switch (status) {
-    case XF_CMD_OK: g_ok++; break;
-    case XF_CMD_FAILED: g_failed++; break;
-    case XF_CMD_TIMEOUT: g_timeout++; break;
-    case XF_CMD_LINK_LOST: g_link_lost++; break;
+    case XF_CMD_OK: g_report.ok++; break;
+    case XF_CMD_FAILED: g_report.failed++; break;
+    case XF_CMD_TIMEOUT: g_report.timeout++; break;
+    case XF_CMD_LINK_LOST: g_report.link_lost++; break;
     default: break; /* operating: progress, not a result */
     }
 }
 
-/* "shutter ok (2 packets, 40 ms)", with the words `xfgcu send` names the outcome in */
+/* "order 0x20 ok (2 packets, 40 ms)", in the words `xfgcu send` gives the outcome. The order goes
+ * by its number: xf_order_name() would link every order's name into the image. */
 void report_result(void *user, const xf_cmd_result *result)
 {
-    const char *name = xf_order_name(result->order);
     line l;
     (void)user;
     count_result(result->status);
     begin(&l);
-    put_str(&l, name != NULL ? name : "order");
+    put_str(&l, "order ");
+    put_hex8(&l, result->order);
     put_str(&l, " ");
     put_str(&l, xf_cmd_status_name(result->status));
     put_str(&l, " (");
@@ -138,62 +185,33 @@ void report_result(void *user, const xf_cmd_result *result)
 
 void report_ins(int valid) { report_text(valid ? "ins valid" : "ins no data"); }
 
-/* "link up, 50 replies/s, 0 missing/s, 600 sent, 598 received", as `xfgcu monitor` prints it */
-static void put_link(line *l, const xf_health *h)
-{
-    put_str(l, "link ");
-    put_str(l, xf_link_state_name(h->link));
-    put_str(l, ", ");
-    put_u32(l, h->reply_rate_hz);
-    put_str(l, " replies/s, ");
-    put_u32(l, h->replies_missing);
-    put_str(l, " missing/s, ");
-    put_u32(l, h->packets_sent);
-    put_str(l, " sent, ");
-    put_u32(l, h->replies);
-    put_str(l, " received");
-}
-
-/* "0 CRC errors, 0 length errors, 0 bytes skipped", as `xfgcu monitor` prints the parser's */
-static void put_parser(line *l, const xf_parser_stats *ps)
-{
-    put_u32(l, ps->crc_errors);
-    put_str(l, " CRC errors, ");
-    put_u32(l, ps->length_errors);
-    put_str(l, " length errors, ");
-    put_u32(l, ps->bytes_skipped);
-    put_str(l, " bytes skipped");
-}
-
-static void put_commands(line *l)
-{
-    put_str(l, "commands ");
-    put_u32(l, g_ok);
-    put_str(l, " ok, ");
-    put_u32(l, g_failed);
-    put_str(l, " failed, ");
-    put_u32(l, g_timeout);
-    put_str(l, " timeout, ");
-    put_u32(l, g_link_lost);
-    put_str(l, " link lost");
-}
-
+/* The first part in the words of `xfgcu monitor`'s link row ("link up, 50 replies/s, 0 missing/s,
+ * 600 sent, 598 received"), the second in those of its parser row. */
 void report_health(const xf_client *c, uint32_t rx_overruns)
 {
     const xf_health *h = xf_client_health(c);
+    const xf_parser_stats *ps = xf_client_parser_stats(c);
+    const count counts[] = {
+        {h->reply_rate_hz, " replies/s, "},
+        {h->replies_missing, " missing/s, "},
+        {h->packets_sent, " sent, "},
+        {h->replies, " received; "},
+        {ps->crc_errors, " CRC errors, "},
+        {ps->length_errors, " length errors, "},
+        {ps->bytes_skipped, " bytes skipped; commands "},
+        {g_report.ok, " ok, "},
+        {g_report.failed, " failed, "},
+        {g_report.timeout, " timeout, "},
+        {g_report.link_lost, " link lost; "},
+        {h->send_errors, " send errors, "},
+        {rx_overruns, " rx overruns, "},
+        {g_report.lost_lines, " report lines lost"},
+    };
     line l;
     begin(&l);
-    put_link(&l, h);
-    put_str(&l, "; ");
-    put_parser(&l, xf_client_parser_stats(c));
-    put_str(&l, "; ");
-    put_commands(&l);
-    put_str(&l, "; ");
-    put_u32(&l, h->send_errors);
-    put_str(&l, " send errors, ");
-    put_u32(&l, rx_overruns);
-    put_str(&l, " rx overruns, ");
-    put_u32(&l, g_lost_lines);
-    put_str(&l, " report lines lost");
+    put_str(&l, "link ");
+    put_str(&l, xf_link_state_name(h->link));
+    put_str(&l, ", ");
+    put_counts(&l, counts, (uint32_t)(sizeof(counts) / sizeof(counts[0])));
     finish(&l);
 }

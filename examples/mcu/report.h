@@ -2,9 +2,9 @@
  * report.h - the firmware's report for bring-up: what the client sees (link
  * state and rates, packets sent and received, the parser's errors, command
  * results, the INS), as text lines on the board's report UART, in the words
- * the xfgcu program prints on Linux. Portable: it needs board_millis() and
- * board_report_put() only. Call everything from the main loop (the client's
- * callbacks run there too); nothing waits.
+ * the xfgcu program prints on Linux. Portable: the board gives it a clock
+ * and a UART (report_init()). Call everything from the main loop (the
+ * client's callbacks run there too); nothing waits.
  */
 #ifndef REPORT_H
 #define REPORT_H
@@ -18,8 +18,11 @@
 #error "REPORT_RING must be a power of two, at least 512"
 #endif
 
-/* The first line: the board, the link's speed, the client's rate, the photo period. */
-void report_start(uint32_t baud, uint32_t photo_ms);
+/* The clock the lines are stamped with (the client's), and the UART: put() sends one byte if
+ * the UART can take it now (1) or returns 0, never waiting. Starts the report afresh. */
+void report_init(uint32_t (*now_ms)(void), int (*put)(uint8_t byte));
+/* The first line: the board, the gimbal link's speed, the photo period. */
+void report_start(const char *board, uint32_t baud, uint32_t photo_ms);
 /* Its own line, e.g. when the client cannot start. */
 void report_text(const char *text);
 /* xf_client_config.on_link and .on_result: a line per change and per result. */

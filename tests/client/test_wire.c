@@ -58,166 +58,143 @@ static int sink_fd(void *ctx)
     return 42;
 }
 
-static void wrap(sink *s, xf_simlink_wire *w, xf_hal *out, uint32_t seed)
+/* A wrapped sink: what the faulty link wrote lands in sink. */
+typedef struct rig {
+    sink sink;
+    xf_simlink_wire wire;
+    xf_hal hal;
+} rig;
+
+static rig *rig_new(rig *r, uint32_t seed, uint16_t noise, uint16_t drop)
 {
     xf_hal inner = {NULL, sink_write, sink_read, sink_fd};
-    memset(s, 0, sizeof(*s));
-    inner.ctx = s;
-    xf_simlink_wire_init(w, &inner, seed, out);
+    memset(r, 0, sizeof(*r));
+    inner.ctx = &r->sink;
+    xf_simlink_wire_init(&r->wire, &inner, seed, &r->hal);
+    r->wire.noise_permille = noise;
+    r->wire.drop_permille = drop;
+    return r;
 }
 
 static const uint8_t packet[72] = {0xA8, 0xE5, 0x48, 0x00, 0x01, 0x02, 0x03, 0x04};
 
+/* n packets, each taken whole */
+static void send_packets(rig *r, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        assert_int_equal(r->hal.write(r->hal.ctx, packet, sizeof(packet)), XF_OK);
+    }
+}
+
 static void test_clean(void **state)
 {
-    sink s;
-    xf_simlink_wire w;
-    xf_hal hal;
+    static rig r;
     (void)state;
-    wrap(&s, &w, &hal, 7u);
-    assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    assert_int_equal(s.writes, 2);
-    assert_int_equal(s.len, 2u * sizeof(packet));
-    assert_memory_equal(s.bytes, packet, sizeof(packet));
-    assert_memory_equal(s.bytes + sizeof(packet), packet, sizeof(packet));
-    assert_int_equal(w.noise_bytes, 0);
-    assert_int_equal(w.dropped_bytes, 0);
+    send_packets(rig_new(&r, 7u, 0u, 0u), 2);
+    assert_int_equal(r.sink.writes, 2);
+    assert_int_equal(r.sink.len, 2u * sizeof(packet));
+    assert_memory_equal(r.sink.bytes, packet, sizeof(packet));
+    assert_memory_equal(r.sink.bytes + sizeof(packet), packet, sizeof(packet));
+    assert_int_equal(r.wire.noise_bytes, 0);
+    assert_int_equal(r.wire.dropped_bytes, 0);
 }
 
 static void test_noise(void **state)
 {
-    sink s;
-    xf_simlink_wire w;
-    xf_hal hal;
+    static rig r;
     size_t i;
     (void)state;
-    wrap(&s, &w, &hal, 7u);
-    w.noise_permille = 1000u;
-    assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    assert_int_equal(s.writes, 1); /* still one write: no idle gap the faults did not make */
-    assert_int_equal(s.len, 2u * sizeof(packet));
+    send_packets(rig_new(&r, 7u, 1000u, 0u), 1);
+    assert_int_equal(r.sink.writes, 1); /* still one write: no idle gap the faults did not make */
+    assert_int_equal(r.sink.len, 2u * sizeof(packet));
     for (i = 0; i < sizeof(packet); i++) {
-        assert_int_equal(s.bytes[2u * i], packet[i]); /* each byte, then the noise after it */
+        assert_int_equal(r.sink.bytes[2u * i], packet[i]); /* each byte, then the noise after it */
     }
-    assert_int_equal(w.noise_bytes, sizeof(packet));
-    wrap(&s, &w, &hal, 7u);
-    w.noise_permille = 100u;
-    for (i = 0; i < 20u; i++) {
-        assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    }
-    assert_int_equal(s.len, 20u * sizeof(packet) + w.noise_bytes);
-    assert_in_range(w.noise_bytes, 80u, 220u); /* 144 expected of 1440 bytes; a fixed seed */
+    assert_int_equal(r.wire.noise_bytes, sizeof(packet));
+    send_packets(rig_new(&r, 7u, 100u, 0u), 20);
+    assert_int_equal(r.sink.len, 20u * sizeof(packet) + r.wire.noise_bytes);
+    assert_in_range(r.wire.noise_bytes, 80u, 220u); /* 144 expected of 1440 bytes; a fixed seed */
 }
 
 static void test_drop(void **state)
 {
-    sink s;
-    xf_simlink_wire w;
-    xf_hal hal;
-    int i;
+    static rig r;
     (void)state;
-    wrap(&s, &w, &hal, 7u);
-    w.drop_permille = 1000u;
-    assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    assert_int_equal(s.writes, 0); /* nothing left to write */
-    assert_int_equal(w.dropped_bytes, sizeof(packet));
-    wrap(&s, &w, &hal, 7u);
-    w.drop_permille = 300u;
-    for (i = 0; i < 20; i++) {
-        assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    }
-    assert_int_equal(s.len + w.dropped_bytes, 20u * sizeof(packet));
-    assert_in_range(w.dropped_bytes, 330u, 530u); /* 432 expected */
-}
-
-static void run_faults(sink *s, xf_simlink_wire *w, uint32_t seed)
-{
-    xf_hal hal;
-    int i;
-    wrap(s, w, &hal, seed);
-    w->noise_permille = 50u;
-    w->drop_permille = 50u;
-    for (i = 0; i < 10; i++) {
-        assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_OK);
-    }
+    send_packets(rig_new(&r, 7u, 0u, 1000u), 1);
+    assert_int_equal(r.sink.writes, 0); /* nothing left to write */
+    assert_int_equal(r.wire.dropped_bytes, sizeof(packet));
+    send_packets(rig_new(&r, 7u, 0u, 300u), 20);
+    assert_int_equal(r.sink.len + r.wire.dropped_bytes, 20u * sizeof(packet));
+    assert_in_range(r.wire.dropped_bytes, 330u, 530u); /* 432 expected */
 }
 
 static void test_seeded(void **state)
 {
-    static sink a, b, c;
-    xf_simlink_wire wa, wb, wc;
+    static rig a, b, c;
     (void)state;
-    run_faults(&a, &wa, 99u);
-    run_faults(&b, &wb, 99u);
-    run_faults(&c, &wc, 100u);
-    assert_int_equal(a.len, b.len);
-    assert_memory_equal(a.bytes, b.bytes, a.len);
-    assert_true(wa.noise_bytes > 0u && wa.dropped_bytes > 0u);
-    assert_true(a.len != c.len || memcmp(a.bytes, c.bytes, a.len) != 0);
-    run_faults(&a, &wa, 0u); /* 0 is taken as 1 */
-    run_faults(&b, &wb, 1u);
-    assert_int_equal(a.len, b.len);
-    assert_memory_equal(a.bytes, b.bytes, a.len);
+    send_packets(rig_new(&a, 99u, 50u, 50u), 10);
+    send_packets(rig_new(&b, 99u, 50u, 50u), 10);
+    send_packets(rig_new(&c, 100u, 50u, 50u), 10);
+    assert_int_equal(a.sink.len, b.sink.len);
+    assert_memory_equal(a.sink.bytes, b.sink.bytes, a.sink.len);
+    assert_true(a.wire.noise_bytes > 0u && a.wire.dropped_bytes > 0u);
+    assert_true(a.sink.len != c.sink.len || memcmp(a.sink.bytes, c.sink.bytes, a.sink.len) != 0);
+    send_packets(rig_new(&a, 0u, 50u, 50u), 10); /* 0 is taken as 1 */
+    send_packets(rig_new(&b, 1u, 50u, 50u), 10);
+    assert_int_equal(a.sink.len, b.sink.len);
+    assert_memory_equal(a.sink.bytes, b.sink.bytes, a.sink.len);
 }
 
 static void test_refused(void **state)
 {
-    sink s;
-    xf_simlink_wire w;
-    xf_hal hal;
+    static rig r;
     (void)state;
-    wrap(&s, &w, &hal, 7u);
-    w.noise_permille = 1000u;
-    w.drop_permille = 500u;
-    s.answer = XF_ERR_AGAIN;
-    assert_int_equal(hal.write(hal.ctx, packet, sizeof(packet)), XF_ERR_AGAIN);
-    assert_int_equal(w.noise_bytes, 0);
-    assert_int_equal(w.dropped_bytes, 0);
+    rig_new(&r, 7u, 1000u, 500u);
+    r.sink.answer = XF_ERR_AGAIN;
+    assert_int_equal(r.hal.write(r.hal.ctx, packet, sizeof(packet)), XF_ERR_AGAIN);
+    assert_int_equal(r.wire.noise_bytes, 0);
+    assert_int_equal(r.wire.dropped_bytes, 0);
 }
 
 static void test_long(void **state)
 {
-    static sink s;
+    static rig r;
     static uint8_t big[600];
-    xf_simlink_wire w;
-    xf_hal hal;
     size_t i;
     (void)state;
     for (i = 0; i < sizeof(big); i++) {
         big[i] = (uint8_t)i;
     }
-    wrap(&s, &w, &hal, 7u);
-    assert_int_equal(hal.write(hal.ctx, big, sizeof(big)), XF_OK);
-    assert_int_equal(s.writes, 3);
-    assert_int_equal(s.sizes[0], 256u);
-    assert_int_equal(s.sizes[1], 256u);
-    assert_int_equal(s.sizes[2], 88u);
-    assert_memory_equal(s.bytes, big, sizeof(big));
+    rig_new(&r, 7u, 0u, 0u);
+    assert_int_equal(r.hal.write(r.hal.ctx, big, sizeof(big)), XF_OK);
+    assert_int_equal(r.sink.writes, 3);
+    assert_int_equal(r.sink.sizes[0], 256u);
+    assert_int_equal(r.sink.sizes[1], 256u);
+    assert_int_equal(r.sink.sizes[2], 88u);
+    assert_memory_equal(r.sink.bytes, big, sizeof(big));
 }
 
 static void test_passthrough(void **state)
 {
-    sink s;
-    xf_simlink_wire w;
-    xf_hal hal, before, no_fd = {NULL, sink_write, sink_read, NULL};
+    static rig r;
+    xf_hal before, no_fd = {NULL, sink_write, sink_read, NULL};
     uint8_t buf[8];
     size_t n = 0;
     (void)state;
-    wrap(&s, &w, &hal, 7u);
-    w.noise_permille = 1000u; /* what is read is never touched */
-    assert_int_equal(hal.read(hal.ctx, buf, sizeof(buf), &n), XF_ERR_IO);
+    rig_new(&r, 7u, 1000u, 0u); /* what is read is never touched */
+    assert_int_equal(r.hal.read(r.hal.ctx, buf, sizeof(buf), &n), XF_ERR_IO);
     assert_int_equal(n, 3u);
     assert_memory_equal(buf, "abc", 3);
-    assert_int_equal(hal.fd(hal.ctx), 42);
-    no_fd.ctx = &s;
-    xf_simlink_wire_init(&w, &no_fd, 7u, &hal);
-    assert_int_equal(hal.fd(hal.ctx), -1);
-    before = hal;
-    xf_simlink_wire_init(NULL, &no_fd, 7u, &hal);
-    xf_simlink_wire_init(&w, NULL, 7u, &hal);
-    xf_simlink_wire_init(&w, &no_fd, 7u, NULL);
-    assert_memory_equal(&before, &hal, sizeof(hal));
+    assert_int_equal(r.hal.fd(r.hal.ctx), 42);
+    no_fd.ctx = &r.sink;
+    xf_simlink_wire_init(&r.wire, &no_fd, 7u, &r.hal);
+    assert_int_equal(r.hal.fd(r.hal.ctx), -1);
+    before = r.hal;
+    xf_simlink_wire_init(NULL, &no_fd, 7u, &r.hal);
+    xf_simlink_wire_init(&r.wire, NULL, 7u, &r.hal);
+    xf_simlink_wire_init(&r.wire, &no_fd, 7u, NULL);
+    assert_memory_equal(&before, &r.hal, sizeof(r.hal));
 }
 
 int main(void)

@@ -54,6 +54,7 @@ HOST_SHARE = (0.85, 1.15)  # what the simulator gets on the host's clock, over 5
 CLOCK = (0.3, 1.2)         # the firmware clock's speed in host seconds: it loses ticks, never gains
 SLACK = 0.3               # s: lines of the two logs are compared in time with this much doubt
 
+SHUTTER = "0x20"  # the order a photo is, as the report names it
 FW_LINE = re.compile(r"^xfgcu mcu: (\d+)\.(\d{3}) s: (.*)$")
 HEALTH = re.compile(
     r"^link (?P<link>up|stale|down), (?P<rate>\d+) replies/s, (?P<missing>\d+) missing/s, "
@@ -61,7 +62,7 @@ HEALTH = re.compile(
     r"(?P<length>\d+) length errors, (?P<skipped>\d+) bytes skipped; commands (?P<ok>\d+) ok, "
     r"(?P<failed>\d+) failed, (?P<timeout>\d+) timeout, (?P<lost>\d+) link lost; "
     r"(?P<send_errors>\d+) send errors, (?P<overruns>\d+) rx overruns, (?P<lines_lost>\d+) report lines lost$")
-RESULT = re.compile(r"^(?P<order>\S+) (?P<status>ok|failed|timeout|link lost|operating|cancelled) "
+RESULT = re.compile(r"^order (?P<order>0x[0-9A-F]{2}) (?P<status>ok|failed|timeout|link lost|operating|cancelled) "
                     r"\((?P<packets>\d+) packets?, (?P<ms>\d+) ms\)$")
 
 
@@ -239,7 +240,7 @@ def check_loop(c, fw, normal):
 def check_photos(c, fw, phase, status, least):
     state = 0 if status == "ok" else 1
     sim = len(phase.executed("shutter", state))
-    mine = len([r for r in of_kind(fw, "result", order="shutter", status=status) if phase.holds(r, late=1.5)])
+    mine = len([r for r in of_kind(fw, "result", order=SHUTTER, status=status) if phase.holds(r, late=1.5)])
     c.expect(sim >= least and mine >= least,
              f"{phase.name}: photos {status}: {sim} executed by the simulator, {mine} reported by the firmware")
 
@@ -247,7 +248,7 @@ def check_photos(c, fw, phase, status, least):
 def check_results(c, fw, phases):
     """Every execution ends in a result at the firmware, and no result comes without one."""
     ran = {0: sum(p.final("photos") or 0 for p in phases), 1: sum(len(p.executed("shutter", 1)) for p in phases)}
-    got = {st: len(of_kind(fw, "result", order="shutter", status=st))
+    got = {st: len(of_kind(fw, "result", order=SHUTTER, status=st))
            for st in ("ok", "failed", "timeout", "link lost")}
     c.expect(got["ok"] <= ran[0] and got["failed"] <= ran[1] and ran[0] + ran[1] <= sum(got.values()),
              f"photos: {ran[0]} executed ok and {ran[1]} failing by the simulator; the firmware reports "
