@@ -18,17 +18,13 @@ lines, each stamped on arrival with the monotonic clock that the simulator's tim
 
 Why TCP and not a pseudo-terminal (`-serial pty` and `xfgcu sim --serial /dev/pts/N`, which work
 the same way by hand): with both cores of the host busy, replies through a pty reached the
-firmware late and in bursts (up to 216 in one second of the firmware's clock; the link stale 3 to
-8 times in 10 s, in every run), through loopback TCP they came at 50 a second in every run (5 of
-5). With one core busy, both were steady.
-qemu runs in real time (no -icount), so that the firmware answers the simulator as a board
-would. Its emulated SysTick loses ticks, though (the firmware's clock ran 4 % slow on an idle host
-and 12 % slow with both cores busy), and on a host whose cores are all busy, replies reach the
-firmware late and in bursts, so that its link can go stale for a moment. (-icount shift=auto keeps
-the clock but delays replies on an idle host too; a fixed shift runs the clock 20 to 40 % slow.)
-So the rate is checked on the firmware's own clock, the one the client runs on, and on the host's
-clock against the firmware clock's speed over the same seconds; no check asks the link never to
-go stale.
+firmware late and in bursts, and through loopback TCP they did not (docs/performance.md,
+"Firmware in the loop").
+
+qemu runs in real time (no -icount), so that the firmware answers the simulator as a board would.
+Its emulated SysTick loses ticks, though, the more so on a busy host, so the rate is checked on
+the firmware's own clock, the one the client runs on, and on the host's clock against the
+firmware clock's speed over the same seconds. No check asks the link never to go stale.
 
 usage: firmware_loop.py --qemu PATH --elf PATH --xfgcu PATH --log DIR
 exit 0 when every check holds; 1 with each failed check on standard error.
@@ -316,7 +312,7 @@ class Run:
         self.args, self.port, self.qemu, self.lines, self.phases = args, 0, None, None, []
 
     def phase(self, name, seconds, faults):
-        print(f"--- {name}: {seconds:.1f} s, " + (f"xfgcu sim {' '.join(faults)}" if faults is not None
+        print(f"--- {name}: {seconds:.1f} s, " + (" ".join(["xfgcu sim"] + faults) if faults is not None
                                                      else "no simulator"), flush=True)
         start = time.monotonic()
         if faults is None:
@@ -358,7 +354,11 @@ def main():
     args = ap.parse_args()
     args.echo = True
     t0 = time.monotonic()
-    phases, fw = run(args)
+    try:
+        phases, fw = run(args)
+    except (OSError, subprocess.TimeoutExpired) as e:
+        print(f"firmware_loop: {e}", file=sys.stderr)
+        return 1
     p = {ph.name: ph for ph in phases}
     c = Checks()
     photo_ms = check_boot(c, fw)
