@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
 
-stages=(tree build python readme optimised fuzz matrix docs lint mcu bigendian bench mutation)
+stages=(tree build python readme optimised fuzz matrix docs lint mcu firmware bigendian bench mutation)
 
 describe() {
   case $1 in
@@ -26,6 +26,7 @@ describe() {
     docs)      echo "API reference (Doxygen, warnings are errors), man page current, nothing outside" ;;
     lint)      echo "generated files current, cppcheck, clang-tidy, clang-format, the parser's size" ;;
     mcu)       echo "Cortex-M4 firmware and RISC-V builds, their flash and RAM" ;;
+    firmware)  echo "the MCU example under qemu-system-arm against xfgcu sim (ctest -L firmware)" ;;
     bigendian) echo "codec and client tests on s390x under qemu-user" ;;
     bench)     echo "parser instructions per byte (callgrind), client latency and CPU, send's time" ;;
     mutation)  echo "named mutants of the parser, each killed by its tests (scripts/mutate.sh)" ;;
@@ -40,7 +41,8 @@ gcc_build() {
 }
 
 stage_tree() { scripts/check_tree.py --self-test && scripts/check_tree.py; }
-stage_build() { gcc_build && ctest --test-dir build/gcc --output-on-failure --parallel "$jobs"; }
+# The firmware loop runs once, in its own stage.
+stage_build() { gcc_build && ctest --test-dir build/gcc --output-on-failure --parallel "$jobs" --label-exclude firmware; }
 stage_python() { gcc_build >/dev/null && python/run_tests.sh build/gcc; }
 stage_readme() { scripts/check_readme.sh; }
 stage_optimised() {
@@ -52,8 +54,8 @@ stage_optimised() {
     cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="$1" \
           -DCMAKE_C_FLAGS_RELEASE="$2 -DNDEBUG" >/dev/null
     cmake --build "$dir" --parallel "$jobs"
-    # The build, readme (Release) and ASan runs have the live tests.
-    ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --label-exclude live
+    # live: the build, readme (Release) and ASan runs have them; firmware: its own stage
+    ctest --test-dir "$dir" --output-on-failure --parallel "$jobs" --label-exclude 'live|firmware'
   done
 }
 stage_fuzz() { scripts/fuzz.sh smoke; }
@@ -61,6 +63,7 @@ stage_matrix() { scripts/matrix.sh; }
 stage_docs() { scripts/check_docs.sh; }
 stage_lint() { scripts/lint.sh; }
 stage_mcu() { scripts/mcu_size.sh; }
+stage_firmware() { gcc_build >/dev/null && ctest --test-dir build/gcc --output-on-failure -L firmware --no-tests=error; }
 stage_bigendian() { scripts/bigendian.sh; }
 stage_bench() {
   gcc_build >/dev/null

@@ -400,6 +400,88 @@ void xf_simlink_hal(xf_simlink *l, xf_hal *hal)
     }
 }
 
+/* ---- wire faults ------------------------------------------------------------------------- */
+
+#define XF__WIRE_CHUNK 256u
+
+static uint32_t xf__wire_rand(xf_simlink_wire *w)
+{
+    w->rng ^= w->rng << 13;
+    w->rng ^= w->rng >> 17;
+    w->rng ^= w->rng << 5;
+    return w->rng;
+}
+
+static int xf__wire_chance(xf_simlink_wire *w, uint16_t permille)
+{
+    return permille > 0u && xf__wire_rand(w) % 1000u < permille;
+}
+
+/* One chunk of at most XF__WIRE_CHUNK bytes, faults applied, in one inner write. */
+static xf_err xf__wire_chunk(xf_simlink_wire *w, const uint8_t *data, size_t len)
+{
+    uint8_t out[2u * XF__WIRE_CHUNK];
+    size_t i, n = 0;
+    uint32_t noise = 0, dropped = 0;
+    xf_err err;
+    for (i = 0; i < len; i++) {
+        if (xf__wire_chance(w, w->drop_permille)) {
+            dropped++;
+        } else {
+            out[n++] = data[i];
+        }
+        if (xf__wire_chance(w, w->noise_permille)) {
+            out[n++] = (uint8_t)xf__wire_rand(w);
+            noise++;
+        }
+    }
+    err = (n > 0u) ? w->inner.write(w->inner.ctx, out, n) : XF_OK;
+    if (err == XF_OK) {
+        w->noise_bytes += noise;
+        w->dropped_bytes += dropped;
+    }
+    return err;
+}
+
+static xf_err xf__wire_write(void *ctx, const uint8_t *data, size_t len)
+{
+    xf_simlink_wire *w = (xf_simlink_wire *)ctx;
+    xf_err err = XF_OK;
+    size_t done = 0;
+    while (err == XF_OK && done < len) {
+        size_t n = (len - done < XF__WIRE_CHUNK) ? len - done : XF__WIRE_CHUNK;
+        err = xf__wire_chunk(w, data + done, n);
+        done += n;
+    }
+    return err;
+}
+
+static xf_err xf__wire_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
+{
+    xf_simlink_wire *w = (xf_simlink_wire *)ctx;
+    return w->inner.read(w->inner.ctx, buf, cap, out_len);
+}
+
+static int xf__wire_fd(void *ctx)
+{
+    xf_simlink_wire *w = (xf_simlink_wire *)ctx;
+    return (w->inner.fd != NULL) ? w->inner.fd(w->inner.ctx) : -1;
+}
+
+void xf_simlink_wire_init(xf_simlink_wire *w, const xf_hal *inner, uint32_t seed, xf_hal *out)
+{
+    if (w == NULL || inner == NULL || out == NULL) {
+        return;
+    }
+    memset(w, 0, sizeof(*w));
+    w->inner = *inner;
+    w->rng = (seed != 0u) ? seed : 1u;
+    out->ctx = w;
+    out->write = xf__wire_write;
+    out->read = xf__wire_read;
+    out->fd = xf__wire_fd;
+}
+
 void xf_simlink_close(xf_simlink *l)
 {
     if (l == NULL) {

@@ -1,11 +1,12 @@
 /*
  * uart_hal.c - the xf_hal of the example firmware: USART2 with an RX ring
  * filled by the receive interrupt and a TX ring drained by the transmit
- * interrupt.
+ * interrupt (UART_TX_IRQ=1), or by uart_hal_poll_tx() for a USART that
+ * raises no TXE interrupt (UART_TX_IRQ=0, the emulated board).
  *
  * write() puts a whole packet into the TX ring or nothing (XF_ERR_AGAIN):
- * once the interrupt starts sending, the ring holds the rest of the packet,
- * so the line sees no idle gap inside it, as the protocol asks.
+ * once sending starts, the ring holds the rest of the packet, so the line
+ * sees no idle gap inside it, as the protocol asks.
  */
 #include "uart_hal.h"
 
@@ -54,10 +55,23 @@ static xf_err uart_write(void *ctx, const uint8_t *data, size_t len)
     for (i = 0; i < len; i++) {
         g_tx_buf[(g_tx.head + i) & (UART_TX_RING - 1u)] = data[i];
     }
+    __asm__ volatile("" ::: "memory"); /* the bytes before head: the consumer may be running */
     g_tx.head = (uint16_t)(g_tx.head + len);
+#if UART_TX_IRQ
     USART2_CR1 |= USART_CR1_TXEIE;
+#endif
     return XF_OK;
 }
+
+void uart_hal_poll_tx(void)
+{
+    while (g_tx.tail != g_tx.head && (USART2_SR & USART_SR_TXE) != 0u) {
+        USART2_DR = g_tx_buf[g_tx.tail & (UART_TX_RING - 1u)];
+        g_tx.tail = (uint16_t)(g_tx.tail + 1u);
+    }
+}
+
+uint32_t uart_hal_rx_overruns(void) { return g_rx_overruns; }
 
 static xf_err uart_read(void *ctx, uint8_t *buf, size_t cap, size_t *out_len)
 {

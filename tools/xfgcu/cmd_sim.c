@@ -11,9 +11,10 @@
  *     xfgcu sim: listening on serial /dev/ttyUSB0 at 115200 baud
  *
  * then runs until SIGINT or SIGTERM (exit 0), or --duration, printing
- * nothing more unless --verbose. With --json, the same log as JSON Lines,
- * each object with time_mono and time_utc: {"event": "listening", ...},
- * then {"event": "executed", ...} with --verbose.
+ * nothing more unless --verbose or --stats. With --json, the same log as
+ * JSON Lines, each object with time_mono and time_utc: {"event":
+ * "listening", ...}, then {"event": "executed", ...} with --verbose and
+ * {"event": "stats", ...} with --stats.
  */
 #define _POSIX_C_SOURCE 200809L /* getpid */
 
@@ -53,9 +54,12 @@ void help_sim(FILE *out)
           "  --jitter MS           hold each packet, both ways, a random 0..MS ms more, 0..10000: they\n"
           "                        overtake one another, as on a network that reorders\n"
           "  --dup PERMILLE        this share of packets, both ways, arrive twice, 0..1000\n"
+          "  --noise PERMILLE      after each byte it sends, a random byte more with this chance, 0..1000\n"
+          "  --drop-bytes PERMILLE each byte it would send is lost with this chance, 0..1000\n"
           "  --calibration-ms MS   how long calibration answers \"operating\", 0..600000 (default 1500)\n"
           "  --duration S          stop by itself after S seconds\n"
           "  --verbose             print each order it executes\n"
+          "  --stats S             print its counters every S seconds, and when it stops\n"
           "  --json                its lines as JSON objects instead, one per line, with time_mono and\n"
           "                        time_utc: {\"event\": \"listening\", \"link\": \"tcp\", \"port\": 2332, ...},\n"
           "                        {\"event\": \"executed\", \"order_name\": \"shutter\", ...} (docs/cli.md)\n\n"
@@ -74,10 +78,10 @@ typedef struct sim_args {
     long model;
     int has_model;
     uint8_t fail[256];
-    long drop, delay, jitter, dup, calibration_ms;
+    long drop, delay, jitter, dup, calibration_ms, noise, drop_bytes;
     int has_baud, has_drop, has_delay, has_jitter, has_dup, has_calibration;
-    double duration;
-    int has_duration, verbose, json, help;
+    double duration, stats;
+    int has_duration, has_stats, verbose, json, help;
 } sim_args;
 
 /* ---- arguments ------------------------------------------------------------------------- */
@@ -96,6 +100,9 @@ enum {
     O_DELAY,
     O_JITTER,
     O_DUP,
+    O_NOISE,
+    O_DROP_BYTES,
+    O_STATS,
     O_CALIBRATION,
     O_DURATION,
     O_VERBOSE,
@@ -119,6 +126,9 @@ static const struct option sim_options[] = {
     {"delay", required_argument, NULL, O_DELAY},
     {"jitter", required_argument, NULL, O_JITTER},
     {"dup", required_argument, NULL, O_DUP},
+    {"noise", required_argument, NULL, O_NOISE},
+    {"drop-bytes", required_argument, NULL, O_DROP_BYTES},
+    {"stats", required_argument, NULL, O_STATS},
     {"calibration-ms", required_argument, NULL, O_CALIBRATION},
     {"duration", required_argument, NULL, O_DURATION},
     {"verbose", no_argument, NULL, O_VERBOSE},
@@ -186,6 +196,9 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_DELAY: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->delay, &s->has_delay);
     case O_JITTER: return cli_value_long(a, 0, 10000, "milliseconds, 0..10000", &s->jitter, &s->has_jitter);
     case O_DUP: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->dup, &s->has_dup);
+    case O_NOISE: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->noise, NULL);
+    case O_DROP_BYTES: return cli_value_long(a, 0, 1000, "per mille, 0..1000", &s->drop_bytes, NULL);
+    case O_STATS: return cli_value_real(a, 0.1, 86400.0, "seconds, 0.1..86400", &s->stats, &s->has_stats);
     case O_CALIBRATION:
         return cli_value_long(a, 0, 600000, "milliseconds, 0..600000", &s->calibration_ms, &s->has_calibration);
     case O_DURATION:
@@ -221,6 +234,7 @@ static int check_args(const sim_args *a)
 typedef struct sim_run {
     xf_simlink link;
     xf_serial serial;
+    xf_simlink_wire wire; /* --noise, --drop-bytes */
     xf_sim sim;
     xf_hal hal;
     int opened;
@@ -354,6 +368,9 @@ static int start_sim(sim_run *s, const sim_args *a)
     if (a->has_calibration) {
         sc.calibration_ms = (uint32_t)a->calibration_ms;
     }
+    xf_simlink_wire_init(&s->wire, &s->hal, 1u, &s->hal); /* no fault unless asked */
+    s->wire.noise_permille = (uint16_t)a->noise;
+    s->wire.drop_permille = (uint16_t)a->drop_bytes;
     if (xf_sim_init(&s->sim, &sc) != XF_OK || xf_sim_attach(&s->sim, &s->hal) != XF_OK) {
         return cli_fail("sim: cannot start the simulator");
     }
@@ -400,17 +417,56 @@ static void report_executed(sim_run *s, uint32_t elapsed, int json)
     }
 }
 
+/* --stats: {"event": "stats", "t": ..., "packets_in": ..., ...counters..., times}, or a line. */
+static void report_stats(const sim_run *s, uint32_t elapsed, int json)
+{
+    const xf_sim_stats *st = &s->sim.stats;
+    json_t *obj;
+    if (!json) {
+        printf("xfgcu sim: %.3f s: %u packets in, %u replies, %u dropped, %u corrupted, %u photos, %u with ins_valid, "
+               "%u noise bytes, %u bytes dropped\n",
+               cli_seconds(elapsed), (unsigned)st->packets_in, (unsigned)st->replies, (unsigned)st->dropped,
+               (unsigned)st->corrupted, (unsigned)st->photos, (unsigned)st->ins_valid_packets,
+               (unsigned)s->wire.noise_bytes, (unsigned)s->wire.dropped_bytes);
+        fflush(stdout);
+        return;
+    }
+    obj = cli_json_times(json_object());
+    if (obj != NULL) {
+        json_object_set_new(obj, "event", json_string("stats"));
+        json_object_set_new(obj, "t", json_real(cli_seconds(elapsed)));
+        json_object_set_new(obj, "packets_in", json_integer(st->packets_in));
+        json_object_set_new(obj, "replies", json_integer(st->replies));
+        json_object_set_new(obj, "dropped", json_integer(st->dropped));
+        json_object_set_new(obj, "corrupted", json_integer(st->corrupted));
+        json_object_set_new(obj, "photos", json_integer(st->photos));
+        json_object_set_new(obj, "ins_valid_packets", json_integer(st->ins_valid_packets));
+        json_object_set_new(obj, "noise_bytes", json_integer(s->wire.noise_bytes));
+        json_object_set_new(obj, "dropped_bytes", json_integer(s->wire.dropped_bytes));
+    }
+    (void)cli_json_line(obj);
+}
+
 static void run_sim(sim_run *s, const sim_args *a)
 {
     xf_sim *sims[1];
-    uint32_t start = xf_posix_now_ms(), elapsed = 0;
+    uint32_t start = xf_posix_now_ms(), elapsed = 0, stats_ms = (uint32_t)(a->stats * 1000.0 + 0.5), last_stats = start;
     sims[0] = &s->sim;
     while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration)) {
+        uint32_t now;
         (void)xf_posix_poll(NULL, 0, sims, 1, 50);
-        elapsed = xf_ms_since(xf_posix_now_ms(), start);
+        now = xf_posix_now_ms();
+        elapsed = xf_ms_since(now, start);
         if (a->verbose) {
             report_executed(s, elapsed, a->json);
         }
+        if (a->has_stats && xf_ms_since(now, last_stats) >= stats_ms) {
+            last_stats = now - xf_ms_since(now, last_stats) % stats_ms; /* on the grid from the start */
+            report_stats(s, elapsed, a->json);
+        }
+    }
+    if (a->has_stats) {
+        report_stats(s, elapsed, a->json); /* the totals */
     }
 }
 

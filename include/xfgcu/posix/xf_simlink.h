@@ -123,6 +123,35 @@ void xf_simlink_hal(xf_simlink *l, xf_hal *hal);
  */
 void xf_simlink_disconnect(xf_simlink *l, uint32_t ms);
 /**
+ * Faults on the wire, for testing a host's receiver (its parser, its link
+ * health): random bytes added to what the simulator sends (line noise) and
+ * bytes of it lost. It wraps any link, a serial port included
+ * (xf_simlink_wire_init()); what the host sends is passed on untouched.
+ * Fill it with xf_simlink_wire_init(), then set the two shares at any time.
+ */
+typedef struct xf_simlink_wire {
+    xf_hal inner;            /**< the wrapped link (a copy) */
+    uint16_t noise_permille; /**< after each byte sent, a random byte more with this chance, 0..1000 */
+    uint16_t drop_permille;  /**< each byte to send is lost with this chance, 0..1000 */
+    uint32_t rng;            /**< the faults' random state (xorshift32, never 0) */
+    uint32_t noise_bytes;    /**< random bytes added so far (in writes the link took) */
+    uint32_t dropped_bytes;  /**< bytes lost so far (in writes the link took) */
+} xf_simlink_wire;
+
+/**
+ * Wrap @p inner (copied) with wire faults, none yet; @p out becomes the
+ * faulty link, for xf_sim_attach(). Its write hands each packet, with the
+ * faults applied, to the inner link in one write (a packet longer than
+ * 256 bytes in several): an inner ::XF_ERR_AGAIN still means nothing was
+ * sent. Its read and fd are the inner link's. @p w must outlive @p out.
+ * Does nothing if any pointer is NULL.
+ * @param w      the wrapper's storage
+ * @param inner  the link to wrap
+ * @param seed   starts the random faults (0 is taken as 1): the same seed, the same faults
+ * @param out    receives the faulty link
+ */
+void xf_simlink_wire_init(xf_simlink_wire *w, const xf_hal *inner, uint32_t seed, xf_hal *out);
+/**
  * Close the link and remove its symlink. Safe on a closed link; does
  * nothing for a NULL @p l.
  * @param l  the link
