@@ -46,6 +46,7 @@ int main(int argc, char **argv)
     (void)xf_link_describe(&link, where, sizeof(where)); /* "serial /dev/ttyUSB0 at 115200 baud" */
     xf_client_config_init(&cc);
     cc.on_result = on_result;
+    cc.reorder_fixed = (uint8_t)xf_link_keeps_order(&link.spec); /* a serial line keeps order */
     xf_client_init(&client, &hal, &cc);
 
     xf_command_init(&cmd, XF_ORDER_CALIBRATION); /* keep the gimbal still meanwhile */

@@ -43,6 +43,7 @@ int main(int argc, char **argv)
     }
     xf_client_config_init(&cc);
     cc.on_result = on_result;
+    cc.reorder_fixed = (uint8_t)xf_link_keeps_order(&link.spec); /* TCP and serial keep order; UDP is judged */
     xf_client_init(&client, &hal, &cc);
 
     xf_command_init(&cmd, XF_ORDER_HEAD_LOCK);

@@ -53,6 +53,7 @@ static int start_client(void)
     xf_client_config_init(&cfg);
     cfg.on_link = report_link;     /* a line per change of the link's state */
     cfg.on_result = report_result; /* a line per command result */
+    cfg.reorder_fixed = 1;         /* a UART keeps order: no need to judge the link first */
     return xf_client_init(&g_gimbal, &hal, &cfg) == XF_OK;
 }
 
