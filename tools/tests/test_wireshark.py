@@ -566,6 +566,18 @@ def test_protocols_and_info(captures, link, version):
     assert "host→GCU shutter cameras 0x01" in [i for _, i in cols.values()]
 
 
+def test_info_control_and_failure(tmp):
+    """A host packet whose control quantities are valid shows them (wire integers: their unit is
+    the mode's); a failed camera order shows the cameras that failed."""
+    ctrl = encode_json({"status": 5, "pitch_ctrl": -3000, "yaw_ctrl": 4500, "order": "euler"})
+    failed = encode_json({"direction": "gcu", "version": 2, "order": "zoom_to", "params": "02", "cam_pitch": -1234})
+    unknown = encode_json({"order": 0x99, "params": "0102"})
+    pcap = udp_pcap(os.path.join(tmp, "info.pcap"), [ctrl, failed, unknown])
+    assert [i for _, i in columns(pcap).values()] == ["host→GCU euler ctrl roll 0 pitch -3000 yaw 4500",
+                                                      "GCU→host zoom_to failed (cameras 0x02) pitch -12.34° yaw 0.00°",
+                                                      "host→GCU order 0x99"]
+
+
 def test_tcp_reassembly(tmp, masks):
     a, b, c = encode("zoom-to", "--factor", "5.5"), encode("null"), encode("shutter")
     pcap = os.path.join(tmp, "reassembly.pcap")

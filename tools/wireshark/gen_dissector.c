@@ -53,15 +53,15 @@ static const char *kind_name(uint8_t kind)
 static void emit_bits(FILE *out, const xf_wire_field *f)
 {
     unsigned k;
-    fputs(", bits = {", out);
+    fputs(", bits = {\n", out);
     for (k = 0; k < f->nbits; k++) {
-        fprintf(out, "%s{mask = 0x%04X, name = ", k > 0u ? ", " : "", (unsigned)f->bits[k].mask);
+        fprintf(out, "        {mask = 0x%04X, name = ", (unsigned)f->bits[k].mask);
         lua_string(out, f->bits[k].name);
         fputs(", meaning = ", out);
         lua_string(out, f->bits[k].meaning);
-        fputc('}', out);
+        fputs("},\n", out);
     }
-    fputc('}', out);
+    fputs("     }", out);
 }
 
 /* One row of the field table as a Lua table. */

@@ -56,7 +56,10 @@ local HOST_FIELDS = {
     {name = "yaw_ctrl", offset = 9, size = 2, signed = true, kind = "context", decimals = {0, 0}, since = 1, hex = false,
      unit = "", meaning = "yaw control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode"},
     {name = "status", offset = 11, size = 1, signed = false, kind = "flags", decimals = {0, 0}, since = 1, hex = true,
-     unit = "", meaning = "validity flags of the carrier data and the control quantities", bits = {{mask = 0x0001, name = "ins_valid", meaning = "the carrier's INS data (bytes 12-29) is valid"}, {mask = 0x0004, name = "ctrl_valid", meaning = "the control quantities (bytes 5-10) are valid"}}},
+     unit = "", meaning = "validity flags of the carrier data and the control quantities", bits = {
+        {mask = 0x0001, name = "ins_valid", meaning = "the carrier's INS data (bytes 12-29) is valid"},
+        {mask = 0x0004, name = "ctrl_valid", meaning = "the control quantities (bytes 5-10) are valid"},
+     }},
     {name = "carrier_roll", offset = 12, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
      unit = "deg", meaning = "carrier's absolute roll, [-180, 180)"},
     {name = "carrier_pitch", offset = 14, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
@@ -103,7 +106,14 @@ local GCU_FIELDS = {
     {name = "gimbal_mode", offset = 5, size = 1, signed = false, kind = "enum", decimals = {0, 0}, since = 1, hex = true,
      unit = "", meaning = "the gimbal's mode"},
     {name = "pod_status", offset = 6, size = 2, signed = false, kind = "flags", decimals = {0, 0}, since = 1, hex = true,
-     unit = "", meaning = "pod status flags (their byte order: docs/protocol.md 11.7)", bits = {{mask = 0x0001, name = "tracking_ok", meaning = "tracking succeeds: the target offsets are valid"}, {mask = 0x0080, name = "target_valid", meaning = "the range and the target's coordinates are valid"}, {mask = 0x0100, name = "ranging_on", meaning = "laser ranging is on"}, {mask = 0x0200, name = "night_vision_on", meaning = "night vision is on"}, {mask = 0x0400, name = "lighting_on", meaning = "the fill light is on"}, {mask = 0x1000, name = "upward_mount", meaning = "powered on facing up (0: hanging, facing down)"}}},
+     unit = "", meaning = "pod status flags (their byte order: docs/protocol.md 11.7)", bits = {
+        {mask = 0x0001, name = "tracking_ok", meaning = "tracking succeeds: the target offsets are valid"},
+        {mask = 0x0080, name = "target_valid", meaning = "the range and the target's coordinates are valid"},
+        {mask = 0x0100, name = "ranging_on", meaning = "laser ranging is on"},
+        {mask = 0x0200, name = "night_vision_on", meaning = "night vision is on"},
+        {mask = 0x0400, name = "lighting_on", meaning = "the fill light is on"},
+        {mask = 0x1000, name = "upward_mount", meaning = "powered on facing up (0: hanging, facing down)"},
+     }},
     {name = "target_offset_x", offset = 8, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
      unit = "", meaning = "tracked target's offset from the image centre, [-1000, 1000], right positive"},
     {name = "target_offset_y", offset = 10, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
@@ -137,7 +147,12 @@ local GCU_FIELDS = {
     {name = "gimbal_code", offset = 40, size = 1, signed = false, kind = "enum", decimals = {0, 0}, since = 1, hex = false,
      unit = "", meaning = "the gimbal's model code"},
     {name = "error_code", offset = 41, size = 2, signed = false, kind = "flags", decimals = {0, 0}, since = 1, hex = true,
-     unit = "", meaning = "fault flags (V0.2; reserved in V0.1)", bits = {{mask = 0x0080, name = "pod_hw_fault", meaning = "pod hardware fault"}, {mask = 0x2000, name = "mavlink_rate_abnormal", meaning = "MAVLink message rate abnormal"}, {mask = 0x4000, name = "gnss_not_positioned", meaning = "GNSS has no position fix"}, {mask = 0x8000, name = "gcu_hw_fault", meaning = "GCU hardware fault"}}},
+     unit = "", meaning = "fault flags (V0.2; reserved in V0.1)", bits = {
+        {mask = 0x0080, name = "pod_hw_fault", meaning = "pod hardware fault"},
+        {mask = 0x2000, name = "mavlink_rate_abnormal", meaning = "MAVLink message rate abnormal"},
+        {mask = 0x4000, name = "gnss_not_positioned", meaning = "GNSS has no position fix"},
+        {mask = 0x8000, name = "gcu_hw_fault", meaning = "GCU hardware fault"},
+     }},
     {name = "target_distance", offset = 43, size = 4, signed = true, kind = "number", decimals = {1, 1}, since = 1, hex = false,
      unit = "m", meaning = "laser range to the target; 0 or less (-1 m, 0 m): no valid measurement"},
     {name = "target_longitude", offset = 47, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
@@ -151,9 +166,25 @@ local GCU_FIELDS = {
     {name = "zoom_cam2", offset = 61, size = 2, signed = false, kind = "number", decimals = {1, 1}, since = 1, hex = false,
      unit = "x", meaning = "camera 2's zoom (the thermal camera by default)"},
     {name = "thermal_status", offset = 63, size = 1, signed = false, kind = "flags", decimals = {0, 0}, since = 2, hex = true,
-     unit = "", meaning = "thermal camera status flags", bits = {{mask = 0x0001, name = "low_temp_alarm", meaning = "low-temperature alarm"}, {mask = 0x0002, name = "high_temp_alarm", meaning = "high-temperature alarm"}, {mask = 0x0008, name = "spot_temp_on", meaning = "spot temperature measurement on"}, {mask = 0x0010, name = "isotherm_on", meaning = "isotherm on"}, {mask = 0x0020, name = "temp_alarm_on", meaning = "temperature alarm on"}, {mask = 0x0040, name = "area_temp_on", meaning = "area temperature measurement on"}, {mask = 0x0080, name = "temp_measurement_available", meaning = "temperature measurement available"}}},
+     unit = "", meaning = "thermal camera status flags", bits = {
+        {mask = 0x0001, name = "low_temp_alarm", meaning = "low-temperature alarm"},
+        {mask = 0x0002, name = "high_temp_alarm", meaning = "high-temperature alarm"},
+        {mask = 0x0008, name = "spot_temp_on", meaning = "spot temperature measurement on"},
+        {mask = 0x0010, name = "isotherm_on", meaning = "isotherm on"},
+        {mask = 0x0020, name = "temp_alarm_on", meaning = "temperature alarm on"},
+        {mask = 0x0040, name = "area_temp_on", meaning = "area temperature measurement on"},
+        {mask = 0x0080, name = "temp_measurement_available", meaning = "temperature measurement available"},
+     }},
     {name = "camera_status", offset = 64, size = 2, signed = false, kind = "flags", decimals = {0, 0}, since = 2, hex = true,
-     unit = "", meaning = "camera status: picture-in-picture mode and flags", bits = {{mask = 0x0007, name = "pip_mode", meaning = "picture-in-picture mode, a number 0-7"}, {mask = 0x0010, name = "recording", meaning = "recording"}, {mask = 0x0800, name = "auto_flip_off", meaning = "image auto-flip off (0: on)"}, {mask = 0x1000, name = "osd_shows_target", meaning = "the OSD shows the target's coordinates (0: the carrier's)"}, {mask = 0x2000, name = "osd_on", meaning = "OSD on"}, {mask = 0x4000, name = "digital_zoom_on", meaning = "digital zoom on"}, {mask = 0x8000, name = "target_detection_on", meaning = "target detection on"}}},
+     unit = "", meaning = "camera status: picture-in-picture mode and flags", bits = {
+        {mask = 0x0007, name = "pip_mode", meaning = "picture-in-picture mode, a number 0-7"},
+        {mask = 0x0010, name = "recording", meaning = "recording"},
+        {mask = 0x0800, name = "auto_flip_off", meaning = "image auto-flip off (0: on)"},
+        {mask = 0x1000, name = "osd_shows_target", meaning = "the OSD shows the target's coordinates (0: the carrier's)"},
+        {mask = 0x2000, name = "osd_on", meaning = "OSD on"},
+        {mask = 0x4000, name = "digital_zoom_on", meaning = "digital zoom on"},
+        {mask = 0x8000, name = "target_detection_on", meaning = "target detection on"},
+     }},
     {name = "time_zone", offset = 66, size = 1, signed = true, kind = "number", decimals = {0, 0}, since = 2, hex = false,
      unit = "h", meaning = "the GCU's time zone, hours from UTC"},
     {name = "reserved_sub", offset = 67, size = 2, signed = false, kind = "reserved", decimals = {0, 0}, since = 1, hex = false,
@@ -313,11 +344,11 @@ local ORDERS = {
     [0x81] = {name = "ranging", since = 1, flags = 0, params = {"value"}},
 }
 
-local VERSION_NAMES = {[0] = "0, read as V0.1", [PROTOCOL_V1] = "V0.1", [PROTOCOL_V2] = "V0.2"}
+VALUE_NAMES.version = {[0] = "0, read as V0.1", [PROTOCOL_V1] = "V0.1", [PROTOCOL_V2] = "V0.2"}
 local ARROW = {host = "host→GCU", gcu = "GCU→host"}
 local DIRECTION_TEXT = {host = "host to GCU", gcu = "GCU to host"}
 -- the JSON key that names a code field's value (decode --json)
-local NAME_KEYS = {order = "order_name", gimbal_mode = "mode_name", gimbal_code = "gimbal_model"}
+local NAME_KEYS = {{"order", "order_name"}, {"gimbal_mode", "mode_name"}, {"gimbal_code", "gimbal_model"}}
 -- what the Info column shows of a GCU packet's fields, and of a host packet's control quantities
 local INFO_GCU = {{"cam_pitch", "pitch"}, {"cam_yaw", "yaw"}}
 local INFO_HOST_CTRL = {{"roll_ctrl", "roll"}, {"pitch_ctrl", "pitch"}, {"yaw_ctrl", "yaw"}}
@@ -433,9 +464,7 @@ for _, row in ipairs(PARAM_FIELDS) do
 end
 local PACKET = {}
 for _, row in ipairs(PACKET_FIELDS) do
-    PACKET[row.name] = {row = row, field = new_field("xfgcu." .. row.name, label(row, false),
-        INT_TYPES[false][row.size], row.name == "version" and VERSION_NAMES or VALUE_NAMES[row.name],
-        (row.name == "order") and base.HEX or base.DEC, nil, row.meaning)}
+    PACKET[row.name] = int_field("xfgcu." .. row.name, row, false)
 end
 
 local function string_field(abbr, text, blurb)
@@ -465,8 +494,8 @@ local pf = {
     noise = new_field("xfgcu.noise", "not a packet", ftypes.BYTES, nil, nil, nil, "bytes that are no part of a packet"),
 }
 local name_field = {}
-for row_name, key in pairs(NAME_KEYS) do
-    name_field[row_name] = string_field("xfgcu." .. key, key, "the name of " .. row_name .. "'s value")
+for _, pair in ipairs(NAME_KEYS) do
+    name_field[pair[1]] = string_field("xfgcu." .. pair[2], pair[2], "the name of " .. pair[1] .. "'s value")
 end
 proto.fields = all_fields
 
@@ -553,6 +582,18 @@ local function wire_int(range, row)
     return row.signed and range:le_int() or range:le_uint()
 end
 
+-- A field in engineering units, labelled "name (type) unit: value" with the decimals of its step;
+-- returns its item and its value's text.
+local function add_quantity(tree, field, range, row, raw, version)
+    if not scaled(row) then
+        return tree:add_le(field, range), int_text(row, raw)
+    end
+    local value, text = eng_value(row, raw, version)
+    local item = tree:add_le(field, range, value)
+    item:set_text(label(row, true) .. ": " .. text)
+    return item, text
+end
+
 -- A reserved block also holds the bytes of the fields before it that the version lacks; shown
 -- only when one of its bytes is not 0 (decode --json shows it then).
 local function add_reserved(tree, tvb, rows, i, version, field)
@@ -594,14 +635,7 @@ local function add_frame_field(tree, raws, tvb, f, version)
     local row = f.row
     local range = tvb(row.offset, row.size)
     local raw = wire_int(range, row)
-    local item
-    if scaled(row) then
-        local value, text = eng_value(row, raw, version)
-        item = tree:add_le(f.eng, range, value)
-        item:set_text(label(row, true) .. ": " .. text)
-    else
-        item = tree:add_le(f.eng, range)
-    end
+    local item = add_quantity(tree, f.eng, range, row, raw, version)
     raws[#raws + 1] = {f.raw, range, scaled(row) and string.format(" (step %g%s)", 10 ^ -decimals(row, version),
         row.unit ~= "" and " " .. row.unit or "")}
     local names = VALUE_NAMES[row.name]
@@ -655,15 +689,7 @@ local function add_command(tree, raws, tvb, order, plen, version)
     for _, m in ipairs(o.params) do
         local row = PARAM_ROW[m]
         local r = tvb(at, row.size)
-        local raw, text = wire_int(r, row), nil
-        if scaled(row) then
-            local value
-            value, text = eng_value(row, raw, version)
-            sub:add_le(COMMAND[m].eng, r, value):set_text(label(row, true) .. ": " .. text)
-        else
-            sub:add_le(COMMAND[m].eng, r)
-            text = int_text(row, raw)
-        end
+        local _, text = add_quantity(sub, COMMAND[m].eng, r, row, wire_int(r, row), version)
         rawsub[#rawsub + 1] = {COMMAND[m].raw, r}
         words[#words + 1] = m .. " " .. text
         at = at + row.size
@@ -767,11 +793,11 @@ local function dissect_packet(tvb, pinfo, root)
     local order_name = VALUE_NAMES.order[order] or string.format("order 0x%02X", order)
     local tree = root:add(proto, tvb())
     tree:add(pf.direction, tvb(0, 2), dir):append_text(" (" .. DIRECTION_TEXT[dir] .. ")")
-    tree:add_le(PACKET.length.field, tvb(OFF_LENGTH, 2))
-    tree:add(PACKET.version.field, tvb(OFF_VERSION, 1))
+    tree:add_le(PACKET.length, tvb(OFF_LENGTH, 2))
+    tree:add(PACKET.version, tvb(OFF_VERSION, 1))
     local raws = {}
     local values = add_frames(tree, raws, tvb, dir, version)
-    local order_item = tree:add(PACKET.order.field, tvb(OFF_ORDER, 1))
+    local order_item = tree:add(PACKET.order, tvb(OFF_ORDER, 1))
     if VALUE_NAMES.order[order] then
         order_item:add(name_field.order, tvb(OFF_ORDER, 1), order_name):set_generated()
     end
@@ -786,7 +812,7 @@ local function dissect_packet(tvb, pinfo, root)
     local bad = add_crc(tree, tvb, len)
     add_raw(tree, tvb, raws)
     tree:append_text(string.format(", %s, %s, %s%s, %u bytes", DIRECTION_TEXT[dir],
-        VERSION_NAMES[version] or ("version " .. version), order_name, state, len))
+        VALUE_NAMES.version[version] or ("version " .. version), order_name, state, len))
     add_info(pinfo, ARROW[dir] .. " " .. order_name .. state .. info_values(dir, values, version) .. bad)
 end
 
@@ -796,7 +822,7 @@ local function bad_packet(tvb, pinfo, root, off, n, why)
     local dir = header_dir(tvb, off)
     tree:add(pf.direction, tvb(off, 2), dir)
     if n >= 4 then
-        local item = tree:add_le(PACKET.length.field, tvb(off + OFF_LENGTH, 2))
+        local item = tree:add_le(PACKET.length, tvb(off + OFF_LENGTH, 2))
         item:add_proto_expert_info(ef.bad_length, why)
     else
         tree:add_proto_expert_info(ef.bad_length, why)
