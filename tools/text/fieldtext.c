@@ -11,6 +11,12 @@ void fieldtext_version(uint8_t raw, char *buf, size_t cap)
     snprintf(buf, cap, "%u.%u", (unsigned)raw / 10u, (unsigned)raw % 10u);
 }
 
+int fieldtext_hex(const xf_wire_field *f)
+{
+    return f->kind == XF_WIRE_BYTE || f->kind == XF_WIRE_FLAGS ||
+           (f->kind == XF_WIRE_ENUM && f->value_name != xf_gimbal_model); /* model codes are decimal */
+}
+
 void fieldtext_model(uint8_t code, char *buf, size_t cap)
 {
     const char *name = xf_gimbal_model(code);

@@ -26,6 +26,10 @@ typedef enum text_view {
  *  "-3000" in TEXT_RAW. Names, flags and hex are for the caller (table.c) to add. */
 void fieldtext_value(const xf_wire_field *f, int64_t raw, uint8_t version, text_view view, char *buf, size_t cap);
 
+/** Whether a field's integer is shown in hex: marker bytes, flag words and codes, except model
+ *  codes, which are decimal (gimbal_code 58). */
+int fieldtext_hex(const xf_wire_field *f);
+
 /** A version byte in tenths as "3.1" (hw_version, fw_version: docs/protocol.md §11.9). */
 void fieldtext_version(uint8_t raw, char *buf, size_t cap);
 

@@ -138,9 +138,7 @@ static void physical(const xf_wire_field *f, int64_t raw, const uint8_t *pkt, ui
 
 static void raw_text(const xf_wire_field *f, int64_t raw, char *buf, size_t cap)
 {
-    int hex = f->kind == XF_WIRE_BYTE || f->kind == XF_WIRE_FLAGS ||
-              (f->kind == XF_WIRE_ENUM && f->value_name != xf_gimbal_model); /* model codes are decimal */
-    if (hex) {
+    if (fieldtext_hex(f)) {
         snprintf(buf, cap, (f->width == 2u) ? "0x%04llX" : "0x%02llX", (long long)raw);
     } else {
         snprintf(buf, cap, "%lld", (long long)raw);

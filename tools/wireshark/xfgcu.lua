@@ -7,9 +7,18 @@
 --   captures written by `xfgcu capture --pcap` (LINKTYPE_USER0: a direction byte '>' or '<', then
 --   the bytes as the link moved them; reassembled per direction).
 --
--- Fields: xfgcu.<name> for every field of the frames, under the names of `xfgcu decode --json`,
--- xfgcu.version, xfgcu.length, xfgcu.order, xfgcu.params, xfgcu.crc, xfgcu.direction,
--- xfgcu.command.<member> (a host packet's parameters) and xfgcu.feedback.* (a GCU reply's state).
+-- Fields, as `xfgcu decode --json` names them (docs/protocol.md, "Units"):
+--   xfgcu.<name>             every field of the frames, in engineering units (degrees, deg/s by the
+--                            packet's version, m, m/s, m/s^2, x, ...); labelled "name (type) unit",
+--                            with the field's one line of meaning as its description
+--   xfgcu.raw.<name>         the same fields as wire integers (what `--raw` gives), in the "raw" subtree
+--   xfgcu.<word>.<bit>       the named bits of the status words (status, pod_status, error_code,
+--                            thermal_status, camera_status); pod_status's bits are read in the byte
+--                            order the word points to (xfgcu.pod_status_order, docs/protocol.md 11.7)
+--   xfgcu.direction ("host" or "gcu"), xfgcu.version, xfgcu.length, xfgcu.order (filter by name:
+--   xfgcu.order == "shutter"), xfgcu.order_name, xfgcu.mode_name, xfgcu.gimbal_model, xfgcu.params,
+--   xfgcu.command.<member> (a host packet's parameters), xfgcu.feedback.state / .result /
+--   .failed_cameras (a GCU reply's execution state), xfgcu.crc, xfgcu.noise.
 -- Expert info on a bad CRC, a bad length and bytes that are no packet.
 --
 -- Use: wireshark -X lua_script:xfgcu.lua, or copy it to ~/.local/lib/wireshark/plugins/.
@@ -17,226 +26,476 @@
 -- tools/wireshark/xfgcu.lua.in and regenerate, never the generated file.
 
 local proto = Proto("xfgcu", "XF gimbal control protocol")
-local serial = Proto("xfgcu_serial", "XF gimbal serial capture")
 
 local HOST_HEADER = {0xA8, 0xE5}
 local GCU_HEADER = {0x8A, 0x5E}
 local OFF_LENGTH, OFF_VERSION, OFF_ORDER, OFF_PARAMS = 2, 4, 69, 70
 local MIN_LEN, MAX_LEN = 72, 255
+local PROTOCOL_V1, PROTOCOL_V2 = 1, 2
 local ORDER_MASK_FAILURE, ORDER_OPERATING = 1, 2
 local STATE_SUCCESS, STATE_OPERATING = 0, 2
+local POD_RESERVED_MASK = 0xE87E
 local GCU_UDP_PORT, HOST_UDP_PORT, GCU_TCP_PORT = 2337, 2338, 2332
 
+-- the field table (include/xfgcu/xf_fields.h): the packet's own bytes, the host's and the GCU's
+-- frames in wire order, and the parameter members of the orders
+local PACKET_FIELDS = {
+    {name = "length", offset = 2, size = 2, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "the whole packet's length in bytes, header and CRC included"},
+    {name = "version", offset = 4, size = 1, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "protocol version: 1 (V0.1) or 2 (V0.2)"},
+    {name = "order", offset = 69, size = 1, signed = false, kind = "enum", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "the order (command) sent, or answered by the GCU's feedback"},
+}
+
 local HOST_FIELDS = {
-    {name = "roll_ctrl", offset = 5, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "pitch_ctrl", offset = 7, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "yaw_ctrl", offset = 9, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "status", offset = 11, size = 1, signed = false, since = 1, reserved = false, hex = false},
-    {name = "carrier_roll", offset = 12, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "carrier_pitch", offset = 14, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "carrier_yaw", offset = 16, size = 2, signed = false, since = 1, reserved = false, hex = false},
-    {name = "accel_north", offset = 18, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "accel_east", offset = 20, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "accel_up", offset = 22, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "vel_north", offset = 24, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "vel_east", offset = 26, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "vel_up", offset = 28, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "sub_request", offset = 30, size = 1, signed = false, since = 1, reserved = false, hex = true},
-    {name = "reserved_main", offset = 31, size = 6, signed = false, since = 1, reserved = true, hex = false},
-    {name = "sub_header", offset = 37, size = 1, signed = false, since = 1, reserved = false, hex = true},
-    {name = "longitude", offset = 38, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "latitude", offset = 42, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "altitude", offset = 46, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "satellites", offset = 50, size = 1, signed = false, since = 1, reserved = false, hex = false},
-    {name = "gnss_ms", offset = 51, size = 4, signed = false, since = 1, reserved = false, hex = false},
-    {name = "gnss_week", offset = 55, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "relative_height", offset = 57, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "reserved_sub", offset = 61, size = 8, signed = false, since = 1, reserved = true, hex = false},
+    {name = "roll_ctrl", offset = 5, size = 2, signed = true, kind = "context", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "roll control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode"},
+    {name = "pitch_ctrl", offset = 7, size = 2, signed = true, kind = "context", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "pitch control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode"},
+    {name = "yaw_ctrl", offset = 9, size = 2, signed = true, kind = "context", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "yaw control quantity: an angle (0.01 deg) or a rate (0.1 deg/s / zoom), by the mode"},
+    {name = "status", offset = 11, size = 1, signed = false, kind = "flags", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "validity flags of the carrier data and the control quantities", bits = {
+        {mask = 0x0001, name = "ins_valid", meaning = "the carrier's INS data (bytes 12-29) is valid"},
+        {mask = 0x0004, name = "ctrl_valid", meaning = "the control quantities (bytes 5-10) are valid"},
+     }},
+    {name = "carrier_roll", offset = 12, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "carrier's absolute roll, [-180, 180)"},
+    {name = "carrier_pitch", offset = 14, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "carrier's absolute pitch, [-90, 90]"},
+    {name = "carrier_yaw", offset = 16, size = 2, signed = false, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "carrier's absolute yaw, [0, 360)"},
+    {name = "accel_north", offset = 18, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "m/s^2", meaning = "carrier's acceleration, north positive, gravity excluded"},
+    {name = "accel_east", offset = 20, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "m/s^2", meaning = "carrier's acceleration, east positive"},
+    {name = "accel_up", offset = 22, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "m/s^2", meaning = "carrier's acceleration, up positive"},
+    {name = "vel_north", offset = 24, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "m/s", meaning = "carrier's velocity, north positive"},
+    {name = "vel_east", offset = 26, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "m/s", meaning = "carrier's velocity, east positive"},
+    {name = "vel_up", offset = 28, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "m/s", meaning = "carrier's velocity, up positive"},
+    {name = "sub_request", offset = 30, size = 1, signed = false, kind = "byte", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "header of the sub frame the GCU is asked to send back (0x01)"},
+    {name = "reserved_main", offset = 31, size = 6, signed = false, kind = "reserved", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "reserved (0)"},
+    {name = "sub_header", offset = 37, size = 1, signed = false, kind = "byte", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "sub frame header: 0x01, or 0x00 when the whole frame is empty"},
+    {name = "longitude", offset = 38, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
+     unit = "deg", meaning = "carrier's longitude"},
+    {name = "latitude", offset = 42, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
+     unit = "deg", meaning = "carrier's latitude"},
+    {name = "altitude", offset = 46, size = 4, signed = true, kind = "number", decimals = {3, 3}, since = 1, hex = false,
+     unit = "m", meaning = "carrier's altitude above sea level"},
+    {name = "satellites", offset = 50, size = 1, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "satellites in use"},
+    {name = "gnss_ms", offset = 51, size = 4, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "ms", meaning = "GNSS time of week, [0, 604800000)"},
+    {name = "gnss_week", offset = 55, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "week", meaning = "GNSS week number (weeks since 1980-01-06)"},
+    {name = "relative_height", offset = 57, size = 4, signed = true, kind = "number", decimals = {3, 3}, since = 1, hex = false,
+     unit = "m", meaning = "carrier's relative height (0 when not needed)"},
+    {name = "reserved_sub", offset = 61, size = 8, signed = false, kind = "reserved", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "reserved (0)"},
 }
 
 local GCU_FIELDS = {
-    {name = "gimbal_mode", offset = 5, size = 1, signed = false, since = 1, reserved = false, hex = false},
-    {name = "pod_status", offset = 6, size = 2, signed = false, since = 1, reserved = false, hex = false},
-    {name = "target_offset_x", offset = 8, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "target_offset_y", offset = 10, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "rel_angle_x", offset = 12, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "rel_angle_y", offset = 14, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "rel_angle_z", offset = 16, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "cam_roll", offset = 18, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "cam_pitch", offset = 20, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "cam_yaw", offset = 22, size = 2, signed = false, since = 1, reserved = false, hex = false},
-    {name = "rate_x", offset = 24, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "rate_y", offset = 26, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "rate_z", offset = 28, size = 2, signed = true, since = 1, reserved = false, hex = false},
-    {name = "reserved_main", offset = 30, size = 7, signed = false, since = 1, reserved = true, hex = false},
-    {name = "sub_header", offset = 37, size = 1, signed = false, since = 1, reserved = false, hex = true},
-    {name = "hw_version", offset = 38, size = 1, signed = false, since = 1, reserved = false, hex = false},
-    {name = "fw_version", offset = 39, size = 1, signed = false, since = 1, reserved = false, hex = false},
-    {name = "gimbal_code", offset = 40, size = 1, signed = false, since = 1, reserved = false, hex = false},
-    {name = "error_code", offset = 41, size = 2, signed = false, since = 1, reserved = false, hex = false},
-    {name = "target_distance", offset = 43, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "target_longitude", offset = 47, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "target_latitude", offset = 51, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "target_altitude", offset = 55, size = 4, signed = true, since = 1, reserved = false, hex = false},
-    {name = "zoom_cam1", offset = 59, size = 2, signed = false, since = 1, reserved = false, hex = false},
-    {name = "zoom_cam2", offset = 61, size = 2, signed = false, since = 1, reserved = false, hex = false},
-    {name = "thermal_status", offset = 63, size = 1, signed = false, since = 2, reserved = false, hex = false},
-    {name = "camera_status", offset = 64, size = 2, signed = false, since = 2, reserved = false, hex = false},
-    {name = "time_zone", offset = 66, size = 1, signed = true, since = 2, reserved = false, hex = false},
-    {name = "reserved_sub", offset = 67, size = 2, signed = false, since = 1, reserved = true, hex = false},
+    {name = "gimbal_mode", offset = 5, size = 1, signed = false, kind = "enum", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "the gimbal's mode"},
+    {name = "pod_status", offset = 6, size = 2, signed = false, kind = "flags", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "pod status flags (their byte order: docs/protocol.md 11.7)", bits = {
+        {mask = 0x0001, name = "tracking_ok", meaning = "tracking succeeds: the target offsets are valid"},
+        {mask = 0x0080, name = "target_valid", meaning = "the range and the target's coordinates are valid"},
+        {mask = 0x0100, name = "ranging_on", meaning = "laser ranging is on"},
+        {mask = 0x0200, name = "night_vision_on", meaning = "night vision is on"},
+        {mask = 0x0400, name = "lighting_on", meaning = "the fill light is on"},
+        {mask = 0x1000, name = "upward_mount", meaning = "powered on facing up (0: hanging, facing down)"},
+     }},
+    {name = "target_offset_x", offset = 8, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "tracked target's offset from the image centre, [-1000, 1000], right positive"},
+    {name = "target_offset_y", offset = 10, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "tracked target's offset from the image centre, [-1000, 1000], down positive"},
+    {name = "rel_angle_x", offset = 12, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "camera's X-axis angle relative to the carrier"},
+    {name = "rel_angle_y", offset = 14, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "camera's Y-axis angle relative to the carrier"},
+    {name = "rel_angle_z", offset = 16, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "camera's Z-axis angle relative to the carrier"},
+    {name = "cam_roll", offset = 18, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "camera's absolute roll"},
+    {name = "cam_pitch", offset = 20, size = 2, signed = true, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "camera's absolute pitch"},
+    {name = "cam_yaw", offset = 22, size = 2, signed = false, kind = "number", decimals = {2, 2}, since = 1, hex = false,
+     unit = "deg", meaning = "camera's absolute yaw, [0, 360)"},
+    {name = "rate_x", offset = 24, size = 2, signed = true, kind = "number", decimals = {2, 1}, since = 1, hex = false,
+     unit = "deg/s", meaning = "camera's absolute angular velocity about X"},
+    {name = "rate_y", offset = 26, size = 2, signed = true, kind = "number", decimals = {2, 1}, since = 1, hex = false,
+     unit = "deg/s", meaning = "camera's absolute angular velocity about Y"},
+    {name = "rate_z", offset = 28, size = 2, signed = true, kind = "number", decimals = {2, 1}, since = 1, hex = false,
+     unit = "deg/s", meaning = "camera's absolute angular velocity about Z"},
+    {name = "reserved_main", offset = 30, size = 7, signed = false, kind = "reserved", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "reserved"},
+    {name = "sub_header", offset = 37, size = 1, signed = false, kind = "byte", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "sub frame header: 0x01, or 0x00 when the host asked for an unknown one"},
+    {name = "hw_version", offset = 38, size = 1, signed = false, kind = "number", decimals = {1, 1}, since = 1, hex = false,
+     unit = "", meaning = "hardware version, in tenths (31: 3.1)"},
+    {name = "fw_version", offset = 39, size = 1, signed = false, kind = "number", decimals = {1, 1}, since = 1, hex = false,
+     unit = "", meaning = "firmware version, in tenths (50: 5.0)"},
+    {name = "gimbal_code", offset = 40, size = 1, signed = false, kind = "enum", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "the gimbal's model code"},
+    {name = "error_code", offset = 41, size = 2, signed = false, kind = "flags", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "fault flags (V0.2; reserved in V0.1)", bits = {
+        {mask = 0x0080, name = "pod_hw_fault", meaning = "pod hardware fault"},
+        {mask = 0x2000, name = "mavlink_rate_abnormal", meaning = "MAVLink message rate abnormal"},
+        {mask = 0x4000, name = "gnss_not_positioned", meaning = "GNSS has no position fix"},
+        {mask = 0x8000, name = "gcu_hw_fault", meaning = "GCU hardware fault"},
+     }},
+    {name = "target_distance", offset = 43, size = 4, signed = true, kind = "number", decimals = {1, 1}, since = 1, hex = false,
+     unit = "m", meaning = "laser range to the target; 0 or less (-1 m, 0 m): no valid measurement"},
+    {name = "target_longitude", offset = 47, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
+     unit = "deg", meaning = "target's longitude"},
+    {name = "target_latitude", offset = 51, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
+     unit = "deg", meaning = "target's latitude"},
+    {name = "target_altitude", offset = 55, size = 4, signed = true, kind = "number", decimals = {3, 3}, since = 1, hex = false,
+     unit = "m", meaning = "target's altitude"},
+    {name = "zoom_cam1", offset = 59, size = 2, signed = false, kind = "number", decimals = {1, 1}, since = 1, hex = false,
+     unit = "x", meaning = "camera 1's zoom (the visible-light zoom camera by default)"},
+    {name = "zoom_cam2", offset = 61, size = 2, signed = false, kind = "number", decimals = {1, 1}, since = 1, hex = false,
+     unit = "x", meaning = "camera 2's zoom (the thermal camera by default)"},
+    {name = "thermal_status", offset = 63, size = 1, signed = false, kind = "flags", decimals = {0, 0}, since = 2, hex = true,
+     unit = "", meaning = "thermal camera status flags", bits = {
+        {mask = 0x0001, name = "low_temp_alarm", meaning = "low-temperature alarm"},
+        {mask = 0x0002, name = "high_temp_alarm", meaning = "high-temperature alarm"},
+        {mask = 0x0008, name = "spot_temp_on", meaning = "spot temperature measurement on"},
+        {mask = 0x0010, name = "isotherm_on", meaning = "isotherm on"},
+        {mask = 0x0020, name = "temp_alarm_on", meaning = "temperature alarm on"},
+        {mask = 0x0040, name = "area_temp_on", meaning = "area temperature measurement on"},
+        {mask = 0x0080, name = "temp_measurement_available", meaning = "temperature measurement available"},
+     }},
+    {name = "camera_status", offset = 64, size = 2, signed = false, kind = "flags", decimals = {0, 0}, since = 2, hex = true,
+     unit = "", meaning = "camera status: picture-in-picture mode and flags", bits = {
+        {mask = 0x0007, name = "pip_mode", meaning = "picture-in-picture mode, a number 0-7"},
+        {mask = 0x0010, name = "recording", meaning = "recording"},
+        {mask = 0x0800, name = "auto_flip_off", meaning = "image auto-flip off (0: on)"},
+        {mask = 0x1000, name = "osd_shows_target", meaning = "the OSD shows the target's coordinates (0: the carrier's)"},
+        {mask = 0x2000, name = "osd_on", meaning = "OSD on"},
+        {mask = 0x4000, name = "digital_zoom_on", meaning = "digital zoom on"},
+        {mask = 0x8000, name = "target_detection_on", meaning = "target detection on"},
+     }},
+    {name = "time_zone", offset = 66, size = 1, signed = true, kind = "number", decimals = {0, 0}, since = 2, hex = false,
+     unit = "h", meaning = "the GCU's time zone, hours from UTC"},
+    {name = "reserved_sub", offset = 67, size = 2, signed = false, kind = "reserved", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "reserved"},
 }
 
--- order byte -> name, version that brought it, XF_ORDER_* flags, parameter layout
+local PARAM_FIELDS = {
+    {name = "cameras", offset = 0, size = 1, signed = false, kind = "byte", decimals = {0, 0}, since = 1, hex = true,
+     unit = "", meaning = "KK: camera mask, bit n = camera n+1"},
+    {name = "value", offset = 0, size = 1, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "TT: an action, mode, level or on/off, by order"},
+    {name = "hours", offset = 0, size = 1, signed = true, kind = "number", decimals = {0, 0}, since = 2, hex = false,
+     unit = "h", meaning = "time zone, hours from UTC, [-12, 14]"},
+    {name = "x0", offset = 0, size = 2, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "box left edge, or the point's x, on the [0, 10000] screen grid"},
+    {name = "y0", offset = 0, size = 2, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "box top edge, or the point's y, on the [0, 10000] screen grid"},
+    {name = "x1", offset = 0, size = 2, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "box right edge, [x0, 10000]"},
+    {name = "y1", offset = 0, size = 2, signed = false, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "box bottom edge, [y0, 10000]"},
+    {name = "dx", offset = 0, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "target's offset from the screen centre, [-1024, 1024]; both >= 3071: lost"},
+    {name = "dy", offset = 0, size = 2, signed = true, kind = "number", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "target's offset from the screen centre, [-1024, 1024]; both >= 3071: lost"},
+    {name = "zoom", offset = 0, size = 2, signed = true, kind = "context", decimals = {0, 0}, since = 1, hex = false,
+     unit = "", meaning = "ZZ: -(factor x 10) when negative; a fraction of the zoom range, 1-10000, when positive"},
+    {name = "temp_high", offset = 0, size = 2, signed = true, kind = "number", decimals = {1, 1}, since = 2, hex = false,
+     unit = "degC", meaning = "high temperature limit"},
+    {name = "temp_low", offset = 0, size = 2, signed = true, kind = "number", decimals = {1, 1}, since = 2, hex = false,
+     unit = "degC", meaning = "low temperature limit, not above temp_high when on"},
+    {name = "longitude", offset = 0, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
+     unit = "deg", meaning = "longitude to gaze at"},
+    {name = "latitude", offset = 0, size = 4, signed = true, kind = "number", decimals = {7, 7}, since = 1, hex = false,
+     unit = "deg", meaning = "latitude to gaze at"},
+    {name = "altitude", offset = 0, size = 4, signed = true, kind = "number", decimals = {3, 3}, since = 1, hex = false,
+     unit = "m", meaning = "altitude to gaze at"},
+}
+
+-- the names of the values of the code fields, by field
+local VALUE_NAMES = {
+    order = {
+        [0x00] = "null",
+        [0x01] = "calibration",
+        [0x03] = "neutral",
+        [0x06] = "osd_coordinate",
+        [0x07] = "auto_flip",
+        [0x08] = "time_zone",
+        [0x10] = "angle_control",
+        [0x11] = "head_lock",
+        [0x12] = "head_follow",
+        [0x13] = "orthoview",
+        [0x14] = "euler",
+        [0x15] = "gaze_geo",
+        [0x16] = "gaze_lock",
+        [0x17] = "track",
+        [0x1A] = "click_to_aim",
+        [0x1B] = "external_track",
+        [0x1C] = "fpv",
+        [0x20] = "shutter",
+        [0x21] = "record",
+        [0x22] = "zoom_in",
+        [0x23] = "zoom_out",
+        [0x24] = "zoom_stop",
+        [0x25] = "zoom_to",
+        [0x26] = "focus",
+        [0x2A] = "palette",
+        [0x2B] = "night_vision",
+        [0x30] = "area_temp",
+        [0x31] = "temp_alarm",
+        [0x32] = "isotherm",
+        [0x33] = "spot_temp",
+        [0x73] = "osd",
+        [0x74] = "pip",
+        [0x75] = "target_detection",
+        [0x76] = "digital_zoom",
+        [0x80] = "lighting",
+        [0x81] = "ranging",
+    },
+    gimbal_mode = {
+        [0x10] = "angle_control",
+        [0x11] = "head_lock",
+        [0x12] = "head_follow",
+        [0x13] = "orthoview",
+        [0x14] = "euler",
+        [0x16] = "gaze",
+        [0x17] = "track",
+        [0x1C] = "fpv",
+    },
+    gimbal_code = {
+        [0x00] = "Z-6A",
+        [0x02] = "Z-6C",
+        [0x03] = "M-2400G2",
+        [0x15] = "Z-8TA",
+        [0x16] = "Z-8TB",
+        [0x18] = "Z-8RA",
+        [0x19] = "Z-8RB",
+        [0x1A] = "Z-8RC",
+        [0x1B] = "Z-8LA",
+        [0x1E] = "Z-9A",
+        [0x1F] = "Z-9B_V3",
+        [0x28] = "D-80AI",
+        [0x29] = "D-90AI",
+        [0x2C] = "D-80Pro",
+        [0x2D] = "D-90Pro(TA)",
+        [0x31] = "Z-1Pro",
+        [0x32] = "Z-1Mini",
+        [0x34] = "Z-2Mini",
+        [0x35] = "D-125AI(T)",
+        [0x37] = "D-90DE",
+        [0x39] = "D-125AI(V)",
+        [0x3A] = "Z-9B_V4(T)",
+        [0x3B] = "Z-9B_V4(V)",
+        [0x3C] = "D-90Pro(VA)",
+        [0x3D] = "D-90Pro(T)",
+        [0x3E] = "D-90Pro(V)",
+    },
+}
+
+-- order byte -> name, version that brought it, XF_ORDER_* flags, its parameter members in order
 local ORDERS = {
     [0x00] = {name = "null", since = 1, flags = 0, params = {}},
     [0x01] = {name = "calibration", since = 1, flags = 2, params = {}},
     [0x03] = {name = "neutral", since = 1, flags = 0, params = {}},
-    [0x06] = {name = "osd_coordinate", since = 2, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x07] = {name = "auto_flip", since = 2, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x08] = {name = "time_zone", since = 2, flags = 0, params = {{name = "hours", size = 1, signed = true}}},
+    [0x06] = {name = "osd_coordinate", since = 2, flags = 0, params = {"value"}},
+    [0x07] = {name = "auto_flip", since = 2, flags = 0, params = {"value"}},
+    [0x08] = {name = "time_zone", since = 2, flags = 0, params = {"hours"}},
     [0x10] = {name = "angle_control", since = 1, flags = 8, params = {}},
     [0x11] = {name = "head_lock", since = 1, flags = 8, params = {}},
     [0x12] = {name = "head_follow", since = 1, flags = 8, params = {}},
     [0x13] = {name = "orthoview", since = 1, flags = 8, params = {}},
     [0x14] = {name = "euler", since = 1, flags = 8, params = {}},
-    [0x15] = {name = "gaze_geo", since = 1, flags = 8, params = {{name = "longitude", size = 4, signed = true}, {name = "latitude", size = 4, signed = true}, {name = "altitude", size = 4, signed = true}}},
+    [0x15] = {name = "gaze_geo", since = 1, flags = 8, params = {"longitude", "latitude", "altitude"}},
     [0x16] = {name = "gaze_lock", since = 1, flags = 8, params = {}},
-    [0x17] = {name = "track", since = 1, flags = 9, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}, {name = "x0", size = 2, signed = false}, {name = "y0", size = 2, signed = false}, {name = "x1", size = 2, signed = false}, {name = "y1", size = 2, signed = false}}},
-    [0x1A] = {name = "click_to_aim", since = 1, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "x0", size = 2, signed = false}, {name = "y0", size = 2, signed = false}}},
-    [0x1B] = {name = "external_track", since = 1, flags = 21, params = {{name = "cameras", size = 1, signed = false}, {name = "dx", size = 2, signed = true}, {name = "dy", size = 2, signed = true}, {name = "value", size = 1, signed = false}}},
+    [0x17] = {name = "track", since = 1, flags = 9, params = {"cameras", "value", "x0", "y0", "x1", "y1"}},
+    [0x1A] = {name = "click_to_aim", since = 1, flags = 1, params = {"cameras", "x0", "y0"}},
+    [0x1B] = {name = "external_track", since = 1, flags = 21, params = {"cameras", "dx", "dy", "value"}},
     [0x1C] = {name = "fpv", since = 2, flags = 8, params = {}},
-    [0x20] = {name = "shutter", since = 1, flags = 0, params = {{name = "cameras", size = 1, signed = false}}},
-    [0x21] = {name = "record", since = 1, flags = 0, params = {{name = "cameras", size = 1, signed = false}}},
-    [0x22] = {name = "zoom_in", since = 1, flags = 1, params = {{name = "cameras", size = 1, signed = false}}},
-    [0x23] = {name = "zoom_out", since = 1, flags = 1, params = {{name = "cameras", size = 1, signed = false}}},
-    [0x24] = {name = "zoom_stop", since = 1, flags = 1, params = {{name = "cameras", size = 1, signed = false}}},
-    [0x25] = {name = "zoom_to", since = 1, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "zoom", size = 2, signed = true}}},
-    [0x26] = {name = "focus", since = 1, flags = 0, params = {{name = "cameras", size = 1, signed = false}}},
-    [0x2A] = {name = "palette", since = 1, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}}},
-    [0x2B] = {name = "night_vision", since = 1, flags = 0, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}}},
-    [0x30] = {name = "area_temp", since = 2, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}, {name = "x0", size = 2, signed = false}, {name = "y0", size = 2, signed = false}, {name = "x1", size = 2, signed = false}, {name = "y1", size = 2, signed = false}}},
-    [0x31] = {name = "temp_alarm", since = 2, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}, {name = "temp_high", size = 2, signed = true}, {name = "temp_low", size = 2, signed = true}}},
-    [0x32] = {name = "isotherm", since = 2, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}, {name = "temp_high", size = 2, signed = true}, {name = "temp_low", size = 2, signed = true}}},
-    [0x33] = {name = "spot_temp", since = 2, flags = 1, params = {{name = "cameras", size = 1, signed = false}, {name = "value", size = 1, signed = false}, {name = "x0", size = 2, signed = false}, {name = "y0", size = 2, signed = false}}},
-    [0x73] = {name = "osd", since = 1, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x74] = {name = "pip", since = 1, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x75] = {name = "target_detection", since = 2, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x76] = {name = "digital_zoom", since = 2, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x80] = {name = "lighting", since = 1, flags = 0, params = {{name = "value", size = 1, signed = false}}},
-    [0x81] = {name = "ranging", since = 1, flags = 0, params = {{name = "value", size = 1, signed = false}}},
+    [0x20] = {name = "shutter", since = 1, flags = 0, params = {"cameras"}},
+    [0x21] = {name = "record", since = 1, flags = 0, params = {"cameras"}},
+    [0x22] = {name = "zoom_in", since = 1, flags = 1, params = {"cameras"}},
+    [0x23] = {name = "zoom_out", since = 1, flags = 1, params = {"cameras"}},
+    [0x24] = {name = "zoom_stop", since = 1, flags = 1, params = {"cameras"}},
+    [0x25] = {name = "zoom_to", since = 1, flags = 1, params = {"cameras", "zoom"}},
+    [0x26] = {name = "focus", since = 1, flags = 0, params = {"cameras"}},
+    [0x2A] = {name = "palette", since = 1, flags = 1, params = {"cameras", "value"}},
+    [0x2B] = {name = "night_vision", since = 1, flags = 0, params = {"cameras", "value"}},
+    [0x30] = {name = "area_temp", since = 2, flags = 1, params = {"cameras", "value", "x0", "y0", "x1", "y1"}},
+    [0x31] = {name = "temp_alarm", since = 2, flags = 1, params = {"cameras", "value", "temp_high", "temp_low"}},
+    [0x32] = {name = "isotherm", since = 2, flags = 1, params = {"cameras", "value", "temp_high", "temp_low"}},
+    [0x33] = {name = "spot_temp", since = 2, flags = 1, params = {"cameras", "value", "x0", "y0"}},
+    [0x73] = {name = "osd", since = 1, flags = 0, params = {"value"}},
+    [0x74] = {name = "pip", since = 1, flags = 0, params = {"value"}},
+    [0x75] = {name = "target_detection", since = 2, flags = 0, params = {"value"}},
+    [0x76] = {name = "digital_zoom", since = 2, flags = 0, params = {"value"}},
+    [0x80] = {name = "lighting", since = 1, flags = 0, params = {"value"}},
+    [0x81] = {name = "ranging", since = 1, flags = 0, params = {"value"}},
 }
 
-local MODE_NAMES = {
-    [0x10] = "angle_control",
-    [0x11] = "head_lock",
-    [0x12] = "head_follow",
-    [0x13] = "orthoview",
-    [0x14] = "euler",
-    [0x16] = "gaze",
-    [0x17] = "track",
-    [0x1C] = "fpv",
-}
+VALUE_NAMES.version = {[0] = "0, read as V0.1", [PROTOCOL_V1] = "V0.1", [PROTOCOL_V2] = "V0.2"}
+local ARROW = {host = "host→GCU", gcu = "GCU→host"}
+local DIRECTION_TEXT = {host = "host to GCU", gcu = "GCU to host"}
+-- the JSON key that names a code field's value (decode --json)
+local NAME_KEYS = {{"order", "order_name"}, {"gimbal_mode", "mode_name"}, {"gimbal_code", "gimbal_model"}}
+-- what the Info column shows of a GCU packet's fields, and of a host packet's control quantities
+local INFO_GCU = {{"cam_pitch", "pitch"}, {"cam_yaw", "yaw"}}
+local INFO_HOST_CTRL = {{"roll_ctrl", "roll"}, {"pitch_ctrl", "pitch"}, {"yaw_ctrl", "yaw"}}
+local UNIT_SYMBOL = {deg = "°"}
 
-local MODEL_NAMES = {
-    [0] = "Z-6A",
-    [2] = "Z-6C",
-    [3] = "M-2400G2",
-    [21] = "Z-8TA",
-    [22] = "Z-8TB",
-    [24] = "Z-8RA",
-    [25] = "Z-8RB",
-    [26] = "Z-8RC",
-    [27] = "Z-8LA",
-    [30] = "Z-9A",
-    [31] = "Z-9B_V3",
-    [40] = "D-80AI",
-    [41] = "D-90AI",
-    [44] = "D-80Pro",
-    [45] = "D-90Pro(TA)",
-    [49] = "Z-1Pro",
-    [50] = "Z-1Mini",
-    [52] = "Z-2Mini",
-    [53] = "D-125AI(T)",
-    [55] = "D-90DE",
-    [57] = "D-125AI(V)",
-    [58] = "Z-9B_V4(T)",
-    [59] = "Z-9B_V4(V)",
-    [60] = "D-90Pro(VA)",
-    [61] = "D-90Pro(T)",
-    [62] = "D-90Pro(V)",
-}
-
-local VERSION_NAMES = {[0] = "V0.1 (0)", [1] = "V0.1", [2] = "V0.2"}
-local ORDER_NAMES = {}
-for order, o in pairs(ORDERS) do
-    ORDER_NAMES[order] = o.name
-end
-local SIZE_INT = {[1] = "int8", [2] = "int16", [4] = "int32"}
-local SIZE_UINT = {[1] = "uint8", [2] = "uint16", [4] = "uint32"}
-
--- ---- fields -------------------------------------------------------------------------------
-
-local pf = {
-    direction = ProtoField.string("xfgcu.direction", "direction"),
-    length = ProtoField.uint16("xfgcu.length", "length", base.DEC),
-    version = ProtoField.uint8("xfgcu.version", "version", base.DEC, VERSION_NAMES),
-    order = ProtoField.uint8("xfgcu.order", "order", base.HEX, ORDER_NAMES),
-    params = ProtoField.bytes("xfgcu.params", "params"),
-    crc = ProtoField.uint16("xfgcu.crc", "crc", base.HEX),
-    command = ProtoField.none("xfgcu.command", "command"),
-    feedback = ProtoField.none("xfgcu.feedback", "feedback"),
-    feedback_state = ProtoField.uint8("xfgcu.feedback.state", "state", base.HEX),
-    feedback_result = ProtoField.string("xfgcu.feedback.result", "result"),
-    feedback_failed = ProtoField.uint8("xfgcu.feedback.failed_cameras", "failed_cameras", base.HEX),
-    noise = ProtoField.bytes("xfgcu.noise", "not a packet"),
-}
-local frame_field = {}   -- name -> ProtoField, shared by both directions where the names agree
-local command_field = {} -- member name -> ProtoField
-
-local function int_field(abbr, label, size, signed, hex, names)
-    local ctor = ProtoField[signed and SIZE_INT[size] or SIZE_UINT[size]]
-    return ctor(abbr, label, (hex and not signed) and base.HEX or base.DEC, names)
-end
-
-local function declare_frame_fields(rows)
-    for _, f in ipairs(rows) do
-        if not frame_field[f.name] then
-            local names = nil
-            if f.name == "gimbal_mode" then
-                names = MODE_NAMES
-            elseif f.name == "gimbal_code" then
-                names = MODEL_NAMES
-            end
-            if f.reserved then
-                frame_field[f.name] = ProtoField.bytes("xfgcu." .. f.name, f.name)
-            else
-                frame_field[f.name] = int_field("xfgcu." .. f.name, f.name, f.size, f.signed, f.hex, names)
-            end
-        end
+local function by_name(rows)
+    local out = {}
+    for _, row in ipairs(rows) do
+        out[row.name] = row
     end
+    return out
 end
-declare_frame_fields(HOST_FIELDS)
-declare_frame_fields(GCU_FIELDS)
+local PARAM_ROW, HOST_ROW, GCU_ROW = by_name(PARAM_FIELDS), by_name(HOST_FIELDS), by_name(GCU_FIELDS)
 
-local command_names = {}
-for _, o in pairs(ORDERS) do
-    for _, m in ipairs(o.params) do
-        if not command_field[m.name] then
-            command_field[m.name] = int_field("xfgcu.command." .. m.name, m.name, m.size, m.signed, false, nil)
-            command_names[#command_names + 1] = m.name
-        end
+-- ---- the fields, from the field table --------------------------------------------------------
+
+local function type_name(row)
+    if row.kind == "reserved" then
+        return "bytes"
     end
+    return (row.signed and "int" or "uint") .. (8 * row.size)
+end
+
+-- Whether a field's engineering value differs from its wire integer in some version.
+local function scaled(row)
+    return row.kind == "number" and (row.decimals[1] > 0 or row.decimals[2] > 0)
+end
+
+local function decimals(row, version)
+    return row.decimals[(version >= PROTOCOL_V2) and 2 or 1]
+end
+
+-- "cam_pitch (int16) deg": the name, the wire type and, for a quantity, its engineering unit.
+local function label(row, with_unit)
+    local text = row.name .. " (" .. type_name(row) .. ")"
+    if with_unit and row.kind == "number" and row.unit ~= "" then
+        text = text .. " " .. row.unit
+    end
+    return text
+end
+
+-- A field's description: its one line of meaning; both directions' when a name means two things
+-- (Wireshark lists one field per filter name).
+local function meaning(row)
+    local h, g = HOST_ROW[row.name], GCU_ROW[row.name]
+    if row.offset > 0 and h and g and h.meaning ~= g.meaning then
+        return "host: " .. h.meaning .. "; GCU: " .. g.meaning
+    end
+    return row.meaning
 end
 
 local all_fields = {}
-for _, f in pairs(pf) do
-    all_fields[#all_fields + 1] = f
+local field_cache = {} -- one ProtoField per abbreviation, label and description
+
+local function new_field(abbr, text, ftype, names, display, mask, blurb)
+    local key = table.concat({abbr, text, blurb or ""}, "\n")
+    if not field_cache[key] then
+        field_cache[key] = ProtoField.new(text, abbr, ftype, names, display, mask, blurb)
+        all_fields[#all_fields + 1] = field_cache[key]
+    end
+    return field_cache[key]
 end
-for _, f in pairs(frame_field) do
-    all_fields[#all_fields + 1] = f
+
+local INT_TYPES = {[false] = {ftypes.UINT8, ftypes.UINT16, nil, ftypes.UINT32},
+                   [true] = {ftypes.INT8, ftypes.INT16, nil, ftypes.INT32}}
+
+-- The wire integer of a row (`xfgcu.raw.<name>`, and the field itself when it is not scaled).
+local function int_field(abbr, row, with_unit)
+    return new_field(abbr, label(row, with_unit), INT_TYPES[row.signed][row.size], VALUE_NAMES[row.name],
+        row.hex and base.HEX or base.DEC, nil, meaning(row))
 end
-for _, f in pairs(command_field) do
-    all_fields[#all_fields + 1] = f
+
+-- The field in engineering units: a double for a scaled quantity, else its integer.
+local function eng_field(abbr, row)
+    if row.kind == "reserved" then
+        return new_field(abbr, label(row, false), ftypes.BYTES, nil, nil, nil, meaning(row))
+    elseif scaled(row) then
+        return new_field(abbr, label(row, true), ftypes.DOUBLE, nil, nil, nil, meaning(row))
+    end
+    return int_field(abbr, row, true)
+end
+
+-- The named bits of a flag word: a boolean per bit, a number for several adjacent bits.
+local function bit_fields(row)
+    local out = {}
+    for _, b in ipairs(row.bits or {}) do
+        local abbr = "xfgcu." .. row.name .. "." .. b.name
+        local single = bit.band(b.mask, b.mask - 1) == 0
+        out[#out + 1] = {row = b, field = single
+            and new_field(abbr, b.name, ftypes.BOOLEAN, nil, 8 * row.size, b.mask, b.meaning)
+            or new_field(abbr, b.name, INT_TYPES[false][row.size], nil, base.DEC, b.mask, b.meaning)}
+    end
+    return out
+end
+
+-- Per direction, per row name: {row, eng, raw, bits}.
+local FRAME = {host = {}, gcu = {}}
+for _, dir_rows in ipairs({{"host", HOST_FIELDS}, {"gcu", GCU_FIELDS}}) do
+    local dir, rows = dir_rows[1], dir_rows[2]
+    for _, row in ipairs(rows) do
+        FRAME[dir][row.name] = {
+            row = row,
+            eng = eng_field("xfgcu." .. row.name, row),
+            raw = row.kind ~= "reserved" and int_field("xfgcu.raw." .. row.name, row, false) or nil,
+            bits = bit_fields(row),
+        }
+    end
+end
+local COMMAND = {}
+for _, row in ipairs(PARAM_FIELDS) do
+    COMMAND[row.name] = {eng = eng_field("xfgcu.command." .. row.name, row),
+                         raw = int_field("xfgcu.raw.command." .. row.name, row, false)}
+end
+local PACKET = {}
+for _, row in ipairs(PACKET_FIELDS) do
+    PACKET[row.name] = int_field("xfgcu." .. row.name, row, false)
+end
+
+local function string_field(abbr, text, blurb)
+    return new_field(abbr, text, ftypes.STRING, nil, nil, nil, blurb)
+end
+local function none_field(abbr, text, blurb)
+    return new_field(abbr, text, ftypes.NONE, nil, nil, nil, blurb)
+end
+
+local pf = {
+    direction = string_field("xfgcu.direction", "direction", "\"host\" (host to GCU, header A8 E5) or \"gcu\" (GCU to host, 8A 5E)"),
+    params = new_field("xfgcu.params", "params", ftypes.BYTES, nil, nil, nil, "the order's parameter bytes (a GCU reply: its execution state)"),
+    crc = new_field("xfgcu.crc", "crc (uint16)", ftypes.UINT16, nil, base.HEX, nil, "CRC-16/XMODEM of the bytes before it, high byte first"),
+    command = none_field("xfgcu.command", "command", "a host packet's parameters, by member"),
+    feedback = none_field("xfgcu.feedback", "feedback", "a GCU reply's execution state"),
+    feedback_state = new_field("xfgcu.feedback.state", "state (uint8)", ftypes.UINT8, nil, base.HEX, nil,
+        "the execution state byte: 0x00 success, 0x02 operating (calibration), else failure (for camera orders, the mask of the failed cameras)"),
+    feedback_result = string_field("xfgcu.feedback.result", "result", "\"ok\", \"failed\" or \"operating\""),
+    feedback_failed = new_field("xfgcu.feedback.failed_cameras", "failed_cameras (uint8)", ftypes.UINT8, nil, base.HEX, nil,
+        "the cameras that failed (bit n: camera n+1), for the orders that report them"),
+    raw = none_field("xfgcu.raw", "raw", "the fields as wire integers, as `xfgcu decode --raw` gives them"),
+    raw_command = none_field("xfgcu.raw.command", "command", "a host packet's parameters as wire integers"),
+    pod_status_order = string_field("xfgcu.pod_status_order", "pod_status_order",
+        "the byte order pod_status's flags are read in: \"le\" or \"be\" (docs/protocol.md 11.7)"),
+    serial = none_field("xfgcu.serial", "serial chunk", "the bytes a serial link moved at once, after the capture's direction byte"),
+    serial_direction = string_field("xfgcu.serial.direction", "direction", "\"host\" ('>') or \"gcu\" ('<')"),
+    noise = new_field("xfgcu.noise", "not a packet", ftypes.BYTES, nil, nil, nil, "bytes that are no part of a packet"),
+}
+local name_field = {}
+for _, pair in ipairs(NAME_KEYS) do
+    name_field[pair[1]] = string_field("xfgcu." .. pair[2], pair[2], "the name of " .. pair[1] .. "'s value")
 end
 proto.fields = all_fields
 
@@ -247,9 +506,6 @@ local ef = {
         expert.severity.WARN),
 }
 proto.experts = {ef.bad_crc, ef.bad_length, ef.noise}
-
-local sf_direction = ProtoField.string("xfgcu_serial.direction", "direction")
-serial.fields = {sf_direction}
 
 -- ---- the packet ---------------------------------------------------------------------------
 
@@ -291,67 +547,167 @@ local function header_dir(tvb, off)
     return nil
 end
 
-local function present(f, version)
-    local v = (version == 0) and 1 or version
-    return v >= f.since
+local function present(row, version)
+    local v = (version == 0) and PROTOCOL_V1 or version
+    return v >= row.since
 end
 
--- A reserved block also holds the bytes of the fields before it that the version lacks.
-local function add_reserved(tree, tvb, rows, i, version)
+-- The byte order of pod_status's flags, as xf_pod_status_order() decides it (docs/protocol.md
+-- 11.7): the order whose reading has the reserved bits clear, when only one has; otherwise the
+-- documented little-endian. Returns "le" or "be", and whether the word decided it.
+local function swap16(w)
+    return bit.bor(bit.rshift(w, 8), bit.band(bit.lshift(w, 8), 0xFF00))
+end
+local function pod_order(word)
+    local le_clean = bit.band(word, POD_RESERVED_MASK) == 0
+    local be_clean = bit.band(swap16(word), POD_RESERVED_MASK) == 0
+    if be_clean and not le_clean then
+        return "be", true
+    end
+    return "le", le_clean and not be_clean
+end
+
+-- The engineering value of a wire integer and its text with the decimals of its step: -30.0, "-30.00".
+local function eng_value(row, raw, version)
+    local d = decimals(row, version)
+    local v = raw / 10 ^ d
+    return v, string.format("%." .. d .. "f", v)
+end
+
+local function int_text(row, raw)
+    return row.hex and string.format("0x%0" .. (2 * row.size) .. "X", raw) or tostring(raw)
+end
+
+local function wire_int(range, row)
+    return row.signed and range:le_int() or range:le_uint()
+end
+
+-- A field in engineering units, labelled "name (type) unit: value" with the decimals of its step;
+-- returns its item and its value's text.
+local function add_quantity(tree, field, range, row, raw, version)
+    if not scaled(row) then
+        return tree:add_le(field, range), int_text(row, raw)
+    end
+    local value, text = eng_value(row, raw, version)
+    local item = tree:add_le(field, range, value)
+    item:set_text(label(row, true) .. ": " .. text)
+    return item, text
+end
+
+-- A reserved block also holds the bytes of the fields before it that the version lacks; shown
+-- only when one of its bytes is not 0 (decode --json shows it then).
+local function add_reserved(tree, tvb, rows, i, version, field)
     local first = i
-    while first > 1 and not rows[first - 1].reserved and not present(rows[first - 1], version) do
+    while first > 1 and rows[first - 1].kind ~= "reserved" and not present(rows[first - 1], version) do
         first = first - 1
     end
     local at = rows[first].offset
-    local n = rows[i].offset + rows[i].size - at
-    local range = tvb(at, n)
+    local range = tvb(at, rows[i].offset + rows[i].size - at)
     local bytes = range:bytes()
-    for k = 0, n - 1 do
+    for k = 0, range:len() - 1 do
         if bytes:get_index(k) ~= 0 then
-            tree:add(frame_field[rows[i].name], range)
+            tree:add(field, range)
             return
         end
     end
 end
 
-local function add_frames(tree, tvb, dir, version)
-    local rows = (dir == "host") and HOST_FIELDS or GCU_FIELDS
-    for i, f in ipairs(rows) do
-        if f.reserved then
-            add_reserved(tree, tvb, rows, i, version)
-        elseif present(f, version) then
-            tree:add_le(frame_field[f.name], tvb(f.offset, f.size))
-        end
+local function add_bits(item, range, f, value)
+    for _, b in ipairs(f.bits) do
+        item:add(b.field, range, value)
     end
 end
 
-local function add_command(tree, tvb, order, plen)
+-- pod_status: its bits in the order the word points to, and which order that is.
+local function add_pod_bits(item, range, f, word)
+    local order, decided = pod_order(word)
+    local why = decided and ((order == "be") and "little-endian would set reserved bits" or "big-endian would set reserved bits")
+        or "the word does not tell: the documented order"
+    local o = item:add(pf.pod_status_order, range, order)
+    o:set_text(string.format("pod_status_order: %s (%s)", order, why))
+    o:set_generated()
+    add_bits(item, range, f, order == "be" and swap16(word) or word)
+end
+
+-- One field of the frames in engineering units (its wire integer goes to the list `raws`, for
+-- the raw subtree); returns its wire integer.
+local function add_frame_field(tree, raws, tvb, f, version)
+    local row = f.row
+    local range = tvb(row.offset, row.size)
+    local raw = wire_int(range, row)
+    local item = add_quantity(tree, f.eng, range, row, raw, version)
+    raws[#raws + 1] = {f.raw, range, scaled(row) and string.format(" (step %g%s)", 10 ^ -decimals(row, version),
+        row.unit ~= "" and " " .. row.unit or "")}
+    local names = VALUE_NAMES[row.name]
+    if names and names[raw] then
+        local n = item:add(name_field[row.name], range, names[raw])
+        n:set_generated()
+        if row.name == "gimbal_code" then -- the one way models are shown: "Z-9B_V4(T) (code 58)"
+            item:set_text(string.format("%s: %s (code %u)", label(row, false), names[raw], raw))
+        end
+    end
+    if row.name == "pod_status" then
+        add_pod_bits(item, range, f, raw)
+    elseif #f.bits > 0 then
+        add_bits(item, range, f, raw)
+    end
+    return raw
+end
+
+-- Every field of the frames; returns name -> wire integer.
+local function add_frames(tree, raws, tvb, dir, version)
+    local rows = (dir == "host") and HOST_FIELDS or GCU_FIELDS
+    local values = {}
+    for i, row in ipairs(rows) do
+        local f = FRAME[dir][row.name]
+        if row.kind == "reserved" then
+            add_reserved(tree, tvb, rows, i, version, f.eng)
+        elseif present(row, version) then
+            values[row.name] = add_frame_field(tree, raws, tvb, f, version)
+        end
+    end
+    return values
+end
+
+-- A host packet's parameters by member, when they fit its order; returns their text for the
+-- Info column ("cameras 0x01 zoom -55").
+local function add_command(tree, raws, tvb, order, plen, version)
     local o = ORDERS[order]
     if not o or #o.params == 0 then
-        return
+        return ""
     end
     local n = 0
     for _, m in ipairs(o.params) do
-        n = n + m.size
+        n = n + PARAM_ROW[m].size
     end
     if n ~= plen then
-        return -- the parameters do not fit the order: params shows them raw
+        return " (parameters do not fit)" -- params shows them as bytes
     end
-    local sub = tree:add(pf.command, tvb(OFF_PARAMS, plen))
-    local at = OFF_PARAMS
+    local range = tvb(OFF_PARAMS, plen)
+    local sub, rawsub = tree:add(pf.command, range), {}
+    local at, words = OFF_PARAMS, {}
     for _, m in ipairs(o.params) do
-        sub:add_le(command_field[m.name], tvb(at, m.size))
-        at = at + m.size
+        local row = PARAM_ROW[m]
+        local r = tvb(at, row.size)
+        local _, text = add_quantity(sub, COMMAND[m].eng, r, row, wire_int(r, row), version)
+        rawsub[#rawsub + 1] = {COMMAND[m].raw, r}
+        words[#words + 1] = m .. " " .. text
+        at = at + row.size
     end
+    raws.command = {range, rawsub}
+    return " " .. table.concat(words, " ")
 end
 
+-- A GCU reply's execution state, as xf_feedback_decode() reads it; returns it for the Info column.
 local function add_feedback(tree, tvb, order, plen)
     if plen < 1 then
-        return -- no execution state in this reply
+        local t = tree:add(tvb(OFF_PARAMS, 0), "No execution state: telemetry only")
+        t:set_generated()
+        return ""
     end
-    local o = ORDERS[order]
-    local flags = o and o.flags or 0
-    local state = tvb(OFF_PARAMS, 1):uint()
+    local flags = ORDERS[order] and ORDERS[order].flags or 0
+    local range = tvb(OFF_PARAMS, 1)
+    local state = range:uint()
     local result, failed = "failed", 0
     if state == STATE_SUCCESS then
         result = "ok"
@@ -360,70 +716,118 @@ local function add_feedback(tree, tvb, order, plen)
     elseif bit.band(flags, ORDER_MASK_FAILURE) ~= 0 then
         failed = state
     end
-    local sub = tree:add(pf.feedback, tvb(OFF_PARAMS, 1))
-    sub:add(pf.feedback_state, tvb(OFF_PARAMS, 1))
-    sub:add(pf.feedback_result, tvb(OFF_PARAMS, 1), result)
-    sub:add(pf.feedback_failed, tvb(OFF_PARAMS, 1), failed)
+    local sub = tree:add(pf.feedback, range)
+    sub:add(pf.feedback_state, range):append_text(" (" .. result .. ")")
+    sub:add(pf.feedback_result, range, result)
+    sub:add(pf.feedback_failed, range, failed)
     sub:append_text(": " .. result)
+    return " " .. result .. ((failed ~= 0) and string.format(" (cameras 0x%02X)", failed) or "")
 end
 
-local function set_info(pinfo, dir, order)
-    local name = ORDER_NAMES[order] or string.format("order 0x%02X", order)
-    local text = (dir == "host") and ("host > GCU " .. name) or ("GCU > host " .. name)
+-- The raw subtree: every field's wire integer, as `xfgcu decode --raw` gives it.
+local function add_raw(tree, tvb, raws)
+    local rawtree = tree:add(pf.raw, tvb(OFF_VERSION + 1, tvb:len() - OFF_VERSION - 3))
+    for _, r in ipairs(raws) do
+        rawtree:add_le(r[1], r[2]):append_text(r[3] or "")
+    end
+    if raws.command then
+        local sub = rawtree:add(pf.raw_command, raws.command[1])
+        for _, r in ipairs(raws.command[2]) do
+            sub:add_le(r[1], r[2])
+        end
+    end
+end
+
+-- The Info column's key values: the camera's angles of a GCU packet, the control quantities of a
+-- host packet that says they are valid (wire integers: their unit depends on the mode).
+local function info_values(dir, values, version)
+    local words = {}
+    if dir == "gcu" then
+        for _, pair in ipairs(INFO_GCU) do
+            local row = FRAME.gcu[pair[1]].row
+            local _, text = eng_value(row, values[pair[1]], version)
+            words[#words + 1] = pair[2] .. " " .. text .. (UNIT_SYMBOL[row.unit] or row.unit)
+        end
+        return " " .. table.concat(words, " ")
+    end
+    local ctrl_valid = false
+    for _, b in ipairs(FRAME.host.status.row.bits) do
+        ctrl_valid = ctrl_valid or (b.name == "ctrl_valid" and bit.band(values.status, b.mask) ~= 0)
+    end
+    if not ctrl_valid then
+        return ""
+    end
+    for _, pair in ipairs(INFO_HOST_CTRL) do
+        words[#words + 1] = pair[2] .. " " .. values[pair[1]]
+    end
+    return " ctrl " .. table.concat(words, " ")
+end
+
+-- The Info column: one packet's text, after the others ending in the same frame.
+local function add_info(pinfo, text)
     pinfo.cols.protocol = "XFGCU"
     local old = tostring(pinfo.cols.info)
-    if old:sub(1, 4) == "host" or old:sub(1, 3) == "GCU" then
-        pinfo.cols.info:append(", " .. text)
+    if old:sub(1, #ARROW.host) == ARROW.host or old:sub(1, #ARROW.gcu) == ARROW.gcu then
+        pinfo.cols.info:append("; " .. text)
     else
         pinfo.cols.info = text
     end
 end
 
+local function add_crc(tree, tvb, len)
+    local item = tree:add(pf.crc, tvb(len - 2, 2))
+    local got, want = tvb(len - 2, 2):uint(), crc16(tvb(0, len - 2):bytes(), len - 2)
+    if want ~= got then
+        item:add_proto_expert_info(ef.bad_crc,
+            string.format("Bad CRC: the packet says 0x%04X, its bytes give 0x%04X", got, want))
+        return " [bad CRC]"
+    end
+    return ""
+end
+
 -- One whole packet: tvb holds exactly its bytes (the length field's number).
 local function dissect_packet(tvb, pinfo, root)
-    local dir = header_dir(tvb, 0)
-    local len = tvb:len()
-    local version = tvb(OFF_VERSION, 1):uint()
-    local order = tvb(OFF_ORDER, 1):uint()
+    local dir, len = header_dir(tvb, 0), tvb:len()
+    local version, order = tvb(OFF_VERSION, 1):uint(), tvb(OFF_ORDER, 1):uint()
     local plen = len - MIN_LEN
+    local order_name = VALUE_NAMES.order[order] or string.format("order 0x%02X", order)
     local tree = root:add(proto, tvb())
-    tree:append_text(string.format(", %s, %s, %u bytes", dir == "host" and "host to GCU" or "GCU to host",
-        ORDER_NAMES[order] or string.format("order 0x%02X", order), len))
-    tree:add(pf.direction, tvb(0, 2), dir)
-    tree:add_le(pf.length, tvb(OFF_LENGTH, 2))
-    tree:add(pf.version, tvb(OFF_VERSION, 1))
-    add_frames(tree, tvb, dir, version)
-    tree:add(pf.order, tvb(OFF_ORDER, 1))
+    tree:add(pf.direction, tvb(0, 2), dir):append_text(" (" .. DIRECTION_TEXT[dir] .. ")")
+    tree:add_le(PACKET.length, tvb(OFF_LENGTH, 2))
+    tree:add(PACKET.version, tvb(OFF_VERSION, 1))
+    local raws = {}
+    local values = add_frames(tree, raws, tvb, dir, version)
+    local order_item = tree:add(PACKET.order, tvb(OFF_ORDER, 1))
+    if VALUE_NAMES.order[order] then
+        order_item:add(name_field.order, tvb(OFF_ORDER, 1), order_name):set_generated()
+    end
     if plen > 0 then
         tree:add(pf.params, tvb(OFF_PARAMS, plen))
-    else
-        tree:add(pf.params, tvb(OFF_PARAMS, 0))
+    elseif dir == "host" then
+        tree:add(tvb(OFF_PARAMS, 0), "No parameters" .. (order == 0 and ": no command, the host's frames only" or ""))
+            :set_generated()
     end
-    if dir == "host" then
-        add_command(tree, tvb, order, plen)
-    else
-        add_feedback(tree, tvb, order, plen)
-    end
-    local crc_item = tree:add(pf.crc, tvb(len - 2, 2))
-    local want = crc16(tvb(0, len - 2):bytes(), len - 2)
-    if want ~= tvb(len - 2, 2):uint() then
-        crc_item:add_proto_expert_info(ef.bad_crc, string.format("Bad CRC: the packet says 0x%04X, its bytes give 0x%04X",
-            tvb(len - 2, 2):uint(), want))
-    end
-    set_info(pinfo, dir, order)
+    local state = (dir == "host") and add_command(tree, raws, tvb, order, plen, version)
+        or add_feedback(tree, tvb, order, plen)
+    local bad = add_crc(tree, tvb, len)
+    add_raw(tree, tvb, raws)
+    tree:append_text(string.format(", %s, %s, %s%s, %u bytes", DIRECTION_TEXT[dir],
+        VALUE_NAMES.version[version] or ("version " .. version), order_name, state, len))
+    add_info(pinfo, ARROW[dir] .. " " .. order_name .. state .. info_values(dir, values, version) .. bad)
 end
 
 -- A header whose length field is out of range, or whose packet the data cuts short.
 local function bad_packet(tvb, pinfo, root, off, n, why)
     local tree = root:add(proto, tvb(off, n))
-    tree:add(pf.direction, tvb(off, 2), header_dir(tvb, off))
+    local dir = header_dir(tvb, off)
+    tree:add(pf.direction, tvb(off, 2), dir)
     if n >= 4 then
-        local item = tree:add_le(pf.length, tvb(off + OFF_LENGTH, 2))
+        local item = tree:add_le(PACKET.length, tvb(off + OFF_LENGTH, 2))
         item:add_proto_expert_info(ef.bad_length, why)
     else
         tree:add_proto_expert_info(ef.bad_length, why)
     end
-    pinfo.cols.protocol = "XFGCU"
+    add_info(pinfo, ARROW[dir] .. " " .. why)
 end
 
 local function add_noise(tvb, root, off, n)
@@ -522,26 +926,6 @@ local function dissect_bytes(tvb, pinfo, root, stream)
     return n
 end
 
-local PT_TCP = 2 -- enum port_type
-
-function proto.dissector(tvb, pinfo, root)
-    return dissect_bytes(tvb, pinfo, root, pinfo.port_type == PT_TCP)
-end
-
--- Other ports: a header and a length in range, then the whole conversation is ours.
-local function heuristic(tvb, pinfo, root)
-    if tvb:len() < 4 or not header_dir(tvb, 0) then
-        return false
-    end
-    local len = tvb(OFF_LENGTH, 2):le_uint()
-    if len < MIN_LEN or len > MAX_LEN then
-        return false
-    end
-    pinfo.conversation = proto
-    proto.dissector(tvb, pinfo, root)
-    return true
-end
-
 -- ---- serial captures (LINKTYPE_USER0) -------------------------------------------------------
 
 local serial_pending -- per direction: bytes waiting for the rest of their packet
@@ -552,7 +936,7 @@ local function serial_reset()
     serial_found = {}
 end
 serial_reset()
-serial.init = serial_reset -- a new capture file
+proto.init = serial_reset -- a new capture file
 
 -- Whether a header inside the first len bytes of buf begins an intact packet held whole.
 local function serial_inner(buf, len, head)
@@ -598,26 +982,31 @@ local function serial_packets(buf, dir)
     end
 end
 
-function serial.dissector(tvb, pinfo, root)
+-- A record of a serial capture: the direction byte, then the chunk; the packets that end in it.
+local function dissect_serial(tvb, pinfo, root)
     if tvb:len() < 1 then
         return 0
     end
     local mark = tvb(0, 1):uint()
     local dir = (mark == 0x3E) and "host" or ((mark == 0x3C) and "gcu" or nil)
-    local tree = root:add(serial, tvb())
     pinfo.cols.protocol = "XFGCU"
+    local chunk = root:add(pf.serial, tvb())
     if not dir then
-        tree:add_proto_expert_info(ef.noise, "No direction byte ('>' or '<')")
+        chunk:add_proto_expert_info(ef.noise, "No direction byte ('>' or '<')")
         return tvb:len()
     end
-    tree:add(sf_direction, tvb(0, 1), dir)
+    chunk:add(pf.serial_direction, tvb(0, 1), dir)
+    chunk:append_text(string.format(": %s, %u bytes", DIRECTION_TEXT[dir], tvb:len() - 1))
     if not pinfo.visited then
         local found
         found, serial_pending[dir] = serial_packets(serial_pending[dir] .. tvb:raw(1), dir)
         serial_found[pinfo.number] = found
     end
-    pinfo.cols.info = string.format("%s, %u bytes", dir == "host" and "host > GCU" or "GCU > host", tvb:len() - 1)
-    for _, bytes in ipairs(serial_found[pinfo.number] or {}) do
+    local packets = serial_found[pinfo.number] or {}
+    if #packets == 0 then
+        pinfo.cols.info = string.format("%s %u bytes, part of a packet", ARROW[dir], tvb:len() - 1)
+    end
+    for _, bytes in ipairs(packets) do
         dissect_packet(ByteArray.new(bytes, true):tvb("XFGCU packet"), pinfo, root)
     end
     return tvb:len()
@@ -625,9 +1014,36 @@ end
 
 -- ---- registration -----------------------------------------------------------------------------
 
+local PT_TCP, PT_UDP = 2, 3 -- enum port_type
+
+-- One protocol for every link: a UDP datagram or TCP segment is bytes of packets; anything else
+-- here is a record of a serial capture (the wtap_encap table gives no port).
+local function dissect(tvb, pinfo, root)
+    if pinfo.port_type == PT_TCP or pinfo.port_type == PT_UDP then
+        return dissect_bytes(tvb, pinfo, root, pinfo.port_type == PT_TCP)
+    end
+    return dissect_serial(tvb, pinfo, root)
+end
+proto.dissector = dissect
+
+-- Other ports: a header and a length in range, then the whole conversation is ours. It calls
+-- the Lua function, not proto.dissector (a handle: a second protocol layer in the frame).
+local function heuristic(tvb, pinfo, root)
+    if tvb:len() < 4 or not header_dir(tvb, 0) then
+        return false
+    end
+    local len = tvb(OFF_LENGTH, 2):le_uint()
+    if len < MIN_LEN or len > MAX_LEN then
+        return false
+    end
+    pinfo.conversation = proto
+    dissect(tvb, pinfo, root)
+    return true
+end
+
 DissectorTable.get("udp.port"):add(GCU_UDP_PORT, proto)
 DissectorTable.get("udp.port"):add(HOST_UDP_PORT, proto)
 DissectorTable.get("tcp.port"):add(GCU_TCP_PORT, proto)
-DissectorTable.get("wtap_encap"):add(wtap_encaps.USER0, serial)
+DissectorTable.get("wtap_encap"):add(wtap_encaps.USER0, proto)
 proto:register_heuristic("udp", heuristic)
 proto:register_heuristic("tcp", heuristic)
