@@ -572,6 +572,13 @@ int xfpy_client_open(void *p, const char *spec, char *msgs, size_t msgs_cap)
     if (err == XF_OK) {
         err = xf_client_init(&h->client, &h->hal, &h->cfg);
     }
+    if (err > XF_OK) { /* a warning: the client runs */
+        text_err e;
+        text_err_init(&e);
+        text_note(&e, "rate_hz=%u: %s", (unsigned)h->cfg.rate_hz, xf_strerror(err));
+        put_messages(&e, msgs, msgs_cap);
+        return 0;
+    }
     if (err != XF_OK) {
         return fail((int)err, msgs, msgs_cap, "%s: %s", h->desc, xf_strerror(err));
     }

@@ -205,10 +205,9 @@ def pythonic(message: str, given: str, shown: str, values: Mapping[bytes, Option
     """A message of the library's text layer in Python's words: the command as Python names it
     (``shown``), ``factor=5.5`` for ``--factor 5.5`` (``values``: what each argument was given
     as), ``start=True`` for the switch ``--start``, a bare name where no value follows."""
-    for prefix in (given + ":", given.replace("_", "-") + ":", given.replace("-", "_") + ":"):
-        if message.startswith(prefix):
-            message = shown + ":" + message[len(prefix) :]
-            break
+    dashed = re.escape(given.replace("_", "-"))
+    message = re.sub(rf"(?<![\w-])({dashed}|{re.escape(given)})(?![\w-])", shown, message)  # the command's name
+    message = re.sub(r"--protocol (\d)", r"protocol=\1", message)
     options = _native.command_options(given) or {}
 
     def word(m: "re.Match[str]") -> str:

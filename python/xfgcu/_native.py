@@ -15,7 +15,7 @@ import functools
 import os
 import warnings
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Tuple, TypeVar
+from typing import Any, Callable, Dict, List, Optional, Tuple, TypeVar
 
 __all__ = [
     "lib",
@@ -153,15 +153,21 @@ def messages() -> "ctypes.Array[ctypes.c_char]":
     return ctypes.create_string_buffer(MESSAGES_MAX)
 
 
-def report(buf: "ctypes.Array[ctypes.c_char]", stacklevel: int = 3) -> str:
+def report(
+    buf: "ctypes.Array[ctypes.c_char]", stacklevel: int = 3, words: Optional[Callable[[str], str]] = None
+) -> str:
     """The failure of a call's messages ("" when none), after issuing its notes as warnings
-    (``stacklevel``: the caller's, as warnings.warn counts)."""
+    (``stacklevel``: the caller's, as warnings.warn counts), each message put in Python's
+    ``words`` first."""
     error = ""
     for line in buf.value.decode("utf-8", "replace").splitlines():
+        text = line.split(": ", 1)[1] if ": " in line else line
+        if words is not None:
+            text = words(text)
         if line.startswith("note: "):
-            warnings.warn(line[len("note: ") :], stacklevel=stacklevel)
+            warnings.warn(text, stacklevel=stacklevel)
         elif line.startswith("error: "):
-            error = line[len("error: ") :]
+            error = text
     return error
 
 

@@ -85,8 +85,10 @@ class Gimbal(Owned):
             timeout_ms = values.get("command_timeout_ms", 1000)
             self._settle_s = (2 * timeout_ms + settings(0)["reorder_ms"][1]) / 1000.0
             msgs = messages()
-            if lib.xfpy_client_open(handle, spec.encode(), msgs, len(msgs)) != 0:
-                raise LinkError(report(msgs))
+            rc = lib.xfpy_client_open(handle, spec.encode(), msgs, len(msgs))
+            message = report(msgs, stacklevel=4)  # a note (a rate outside 30-50 Hz) is a warning
+            if rc != 0:
+                raise LinkError(message)
         except BaseException:
             lib.xfpy_client_free(handle)
             raise
@@ -216,7 +218,7 @@ class Gimbal(Owned):
                 self._handle, given.encode(), count, c_names, c_values, int(forced), ctypes.byref(ident), msgs,
                 len(msgs),
             )  # fmt: skip
-        message = _check.pythonic(report(msgs, stacklevel=5), given, shown, dict(zip(names, values)))
+        message = report(msgs, 5, lambda m: _check.pythonic(m, given, shown, dict(zip(names, values))))
         if rc == 1:
             raise UnsupportedCommandError(message)
         if rc != 0:

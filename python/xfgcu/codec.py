@@ -126,7 +126,7 @@ def encode_command(name: str, protocol: int = 1, **args: Any) -> bytes:
     rc = lib.xfpy_command(
         given.encode(), count, c_names, c_values, version, out, len(out), ctypes.byref(n), msgs, len(msgs)
     )
-    message = _check.pythonic(report(msgs), given, shown, dict(zip(names, values)))
+    message = report(msgs, 3, lambda m: _check.pythonic(m, given, shown, dict(zip(names, values))))
     if rc != 0:
         raise CommandError(message)
     return out.raw[: n.value]
