@@ -8,16 +8,7 @@ import time
 import pytest
 
 import xfgcu
-from conftest import run
-
-
-def wait_until(predicate, timeout: float = 3.0) -> bool:  # type: ignore[no-untyped-def]
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return predicate()
+from conftest import run, wait_until
 
 
 def test_photo_and_results(sim: xfgcu.Simulator) -> None:

@@ -12,7 +12,7 @@ import ctypes
 import math
 import time
 from dataclasses import dataclass
-from typing import Any, Callable, Dict, Iterator, List, Optional
+from typing import Any, Callable, Dict, Iterator
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -352,32 +352,23 @@ AXES = ("roll", "pitch", "yaw")
 
 
 @FAST
-@given(st.sampled_from(AXES), HOSTILE)
-def test_set_rates(rig: Rig, axis: str, value: Any) -> None:
-    g = rig.rates
+@given(st.sampled_from(["set_rates", "set_angles"]), st.sampled_from(AXES), HOSTILE)
+def test_set_rates_and_angles(rig: Rig, setter: str, axis: str, value: Any) -> None:
+    """Rates go on the wire in 0.1 deg/s at zoom 1 (head lock), angles in 0.01 deg (euler),
+    roll and yaw wrapped."""
+    g = rig.rates if setter == "set_rates" else rig.angles
     args = {a: 0.0 for a in AXES}
     args[axis] = value
 
     def taken(status: xfgcu.ControlStatus) -> None:
         assert status == "sent"
-        assert close(sent_after(g)[f"{axis}_ctrl"] / 10.0, value, 0.1)  # at zoom 1: 0.1 deg/s a step
+        if setter == "set_rates":
+            assert close(sent_after(g)[f"{axis}_ctrl"] / 10.0, value, 0.1)
+        else:
+            got = sent_after(g)[f"{axis}_ctrl"] / 100.0
+            assert close(got, value, 0.01) if axis == "pitch" else close_wrapped(got, value, 0.01)
 
-    refused_or(lambda: g.set_rates(**args), taken)
-
-
-@FAST
-@given(st.sampled_from(AXES), HOSTILE)
-def test_set_angles(rig: Rig, axis: str, value: Any) -> None:
-    g = rig.angles
-    args = {a: 0.0 for a in AXES}
-    args[axis] = value
-
-    def taken(status: xfgcu.ControlStatus) -> None:
-        assert status == "sent"
-        got = sent_after(g)[f"{axis}_ctrl"] / 100.0
-        assert close(got, value, 0.01) if axis == "pitch" else close_wrapped(got, value, 0.01)
-
-    refused_or(lambda: g.set_angles(**args), taken)
+    refused_or(lambda: getattr(g, setter)(**args), taken)
 
 
 CARRIER = ("roll", "pitch", "yaw", "accel_north", "accel_east", "accel_up", "vel_north", "vel_east", "vel_up")

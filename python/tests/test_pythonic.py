@@ -17,7 +17,7 @@ import pytest
 import xfgcu
 import xfgcu.aio
 from xfgcu import _native
-from conftest import run
+from conftest import run, wait_until
 
 
 def monitor_line(program: str, sim: xfgcu.Simulator, *extra: str) -> Dict[str, Any]:
@@ -44,8 +44,8 @@ def test_telemetry_reads_as_monitor_json(program: str, protocol: int) -> None:
     with xfgcu.Simulator(protocol=protocol, fw_version=51) as sim:
         with xfgcu.connect(sim.spec) as g:
             assert g.send("zoom_to", factor=5.5).ok and g.send("euler").ok
-            assert wait(lambda: g.set_angles(0.0, -30.0, 45.0) == "sent" and abs(g.telemetry().cam_yaw - 45.0) < 0.01)  # type: ignore[union-attr]
-            assert wait(lambda: g.telemetry().zoom_cam1 == 5.5)  # type: ignore[union-attr]
+            assert wait_until(lambda: g.set_angles(0.0, -30.0, 45.0) == "sent" and abs(g.telemetry().cam_yaw - 45.0) < 0.01)  # type: ignore[union-attr]
+            assert wait_until(lambda: g.telemetry().zoom_cam1 == 5.5)  # type: ignore[union-attr]
             g.clear_control()
             time.sleep(0.2)  # the gimbal at rest: the next client reads the same values
             t = g.telemetry()
@@ -70,15 +70,6 @@ def test_units_come_from_the_field_table() -> None:
         if row.kind != 5:  # reserved blocks: hex, under reserved_main / reserved_sub
             assert row.name in names
             assert f"    {row.name}" + (f" ({row.unit})" if row.unit else "") in (xfgcu.Telemetry.__doc__ or "")
-
-
-def wait(predicate: Callable[[], bool], timeout: float = 5.0) -> bool:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return predicate()
 
 
 def test_sync_telemetry_stream_and_its_timeout(udp_sim: xfgcu.Simulator) -> None:
@@ -135,7 +126,7 @@ def test_command_failed_raises_when_asked() -> None:
 def test_clamped_rates_are_reported(udp_sim: xfgcu.Simulator) -> None:
     with xfgcu.connect(udp_sim.spec) as g:
         assert g.send("zoom_to", factor=10.0).ok and g.send("head_lock").ok
-        assert wait(lambda: g.telemetry().zoom_cam1 == 10.0)  # type: ignore[union-attr]
+        assert wait_until(lambda: g.telemetry().zoom_cam1 == 10.0)  # type: ignore[union-attr]
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             g.set_rates(0.0, 0.0, 10.0)  # within 15 deg/s, what the wire carries at 10x
@@ -214,10 +205,14 @@ def test_errors_speak_python() -> None:
         lambda: xfgcu.encode_command("track", start=True),
         lambda: xfgcu.encode_command("zoom_in", cameras="9"),
         lambda: xfgcu.encode_command("palette", protocol=2, mode=50),
+        lambda: xfgcu.encode_command("track"),
+        lambda: xfgcu.encode_command("temp_alarm", on=True, high=5.0, low=10.0),
+        lambda: xfgcu.encode_command("gaze_geo", lat=1),
     ):
         with pytest.raises((TypeError, ValueError)) as info:
             call()
         messages.append(str(info.value))
     assert messages[0] == "zoom_to: factor=300000.0 is out of range 1.0..3276.8"
+    assert messages[7] == "track: give start=True box=X0,Y0,X1,Y1 or stop=True"
     for m in messages:
         assert "--" not in m and "xfgcu " not in m and "help" not in m, m

@@ -10,15 +10,7 @@ from typing import List
 import pytest
 
 import xfgcu
-
-
-def wait_until(predicate, timeout: float = 5.0) -> bool:  # type: ignore[no-untyped-def]
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return True
-        time.sleep(0.02)
-    return predicate()
+from conftest import wait_until
 
 
 @pytest.mark.parametrize("version", [1, 2])

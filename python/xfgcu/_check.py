@@ -4,12 +4,13 @@ function and the parameter: ``zoom_to: factor=300 is out of range 1.0..3276.8``.
 
 from __future__ import annotations
 
+import ctypes
 import math
 import numbers
 import operator
 import re
 import threading
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 from . import _native
 from .errors import CommandError
@@ -24,6 +25,7 @@ __all__ = [
     "limited",
     "payload",
     "command_args",
+    "native_args",
     "pythonic",
 ]
 
@@ -169,7 +171,7 @@ def command_args(
 ) -> Tuple[str, str, List[bytes], List[Optional[bytes]]]:
     """A command and its keyword arguments, checked for ``where`` (the function: "send"): (the
     name given, the name as Python says it ("zoom_to"), the argument names and their values as
-    the library takes them). An argument of None or False is left out."""
+    the library takes them). An argument of None, or a switch of False, is left out."""
     shown, options = _command(where, name)
     names: List[bytes] = []
     values: List[Optional[bytes]] = []
@@ -179,7 +181,7 @@ def command_args(
         if option is None:
             known = ", ".join(options) if options else "none"
             raise TypeError(f"{shown}: unexpected argument {key!r} (it takes: {known})")
-        if value is None or value is False:
+        if value is None or (value is False and option.values == 0):
             continue
         given = _value(shown, key, value, option)
         names.append(key.encode())
@@ -191,13 +193,11 @@ def native_args(
     names: Sequence[bytes], values: Sequence[Optional[bytes]]
 ) -> Tuple[int, "Any", "Any"]:
     """The argument lists as ctypes arrays."""
-    import ctypes
-
     n = len(names)
     return n, (ctypes.c_char_p * max(1, n))(*names), (ctypes.c_char_p * max(1, n))(*values)
 
 
-_OPTION = re.compile(r"--([a-z][a-z0-9-]*)(?: ([^\s:;]+))?")
+_OPTION = re.compile(r"--([a-z][a-z0-9-]*)(?: (?!--)([^\s:;]+))?")
 _META = re.compile(r"^[A-Z][A-Z0-9]*(,[A-Z][A-Z0-9]*)*$")  # a value's placeholder: X, N, X0,Y0,X1,Y1
 
 
