@@ -128,10 +128,10 @@ class Telemetry:
     thermal_status: Optional[int] = None  #: V0.2 on
     camera_status: Optional[int] = None  #: V0.2 on
     time_zone: Optional[float] = None  #: V0.2 on
-    feedback: Optional[Dict[str, Any]] = None  #: a reply that carries an execution state
+    feedback: Optional[Dict[str, Any]] = field(default=None, hash=False)  #: a reply that carries an execution state
     reserved_main: Optional[str] = None
     reserved_sub: Optional[str] = None
-    extra: Dict[str, Any] = field(default_factory=dict)
+    extra: Dict[str, Any] = field(default_factory=dict, hash=False)
     _raw: Optional["Telemetry"] = field(default=None, repr=False, compare=False)
     _source: Dict[str, Any] = field(default_factory=dict, repr=False, compare=False)
 
