@@ -98,10 +98,9 @@ class Gimbal(Owned):
         self._thread.start()
         if wait_ms > 0 and not self.wait_reply(wait_ms / 1000.0):
             self.close()
-            raise LinkError(
-                f"no reply from the GCU on {self.description} within {wait_ms} ms"
-                + ("" if version is not None else " (in protocol version 1 or 2)")
-            )
+            tried = "in protocol version 1 or 2" if version is None else f"in protocol version {version} only"
+            hint = "check the link spec and that the GCU is on" + ("" if version is None else "; protocol=None tries both")
+            raise LinkError(f"no reply from the GCU on {self.description} within {wait_ms} ms, {tried}: {hint}")
 
     @staticmethod
     def _checked(config: Mapping[str, object]) -> Dict[str, int]:
