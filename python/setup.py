@@ -48,4 +48,20 @@ class BinaryDistribution(Distribution):
         return True
 
 
-setup(cmdclass={"build_py": BuildWithNative}, distclass=BinaryDistribution)
+COMMANDS = {"build_py": BuildWithNative}
+try:  # wheel's command, where the wheel package is there (Debian's python3-wheel)
+    from wheel.bdist_wheel import bdist_wheel
+
+    class PlatformWheel(bdist_wheel):
+        """The native library is loaded by ctypes, not built against CPython: one wheel for any
+        Python 3 on this platform (py3-none-linux_x86_64)."""
+
+        def get_tag(self) -> tuple:
+            plat = super().get_tag()[2]
+            return "py3", "none", plat
+
+    COMMANDS["bdist_wheel"] = PlatformWheel
+except ImportError:
+    pass
+
+setup(cmdclass=COMMANDS, distclass=BinaryDistribution)

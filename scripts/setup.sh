@@ -5,13 +5,13 @@
 #                               big-endian s390x toolchain with its libraries for qemu-user)
 set -euo pipefail
 
-pkgs=(build-essential cmake pkg-config libjansson-dev libserialport-dev libpcap-dev python3 python3-venv python3-pip python3-setuptools)
+pkgs=(build-essential cmake pkg-config libjansson-dev libserialport-dev libpcap-dev python3 python3-venv python3-pip python3-setuptools python3-wheel)
 dev=0
 if [ "${1:-}" = "--dev" ]; then
   dev=1
   pkgs+=(libcmocka-dev doxygen groff-base clang clang-tidy clang-format cppcheck libclang-rt-14-dev valgrind g++
          gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf socat
-         python3-pytest python3-hypothesis tshark
+         python3-pytest python3-hypothesis mypy tshark
          gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user libcmocka-dev:s390x libserialport-dev:s390x)
 fi
 

@@ -17,24 +17,24 @@ import xfgcu
 def point_and_photo(spec: str, pitch: float, yaw: float) -> int:
     with xfgcu.connect(spec) as gimbal:
         t = gimbal.telemetry()
-        print(f"connected to {gimbal.description}: mode {t['units']['mode'] if t else '?'}")
-        result = gimbal.send("euler")  # Euler angles: set_angles() gives absolute pitch and yaw
-        if not result.ok:
-            print(f"euler: {result.status}", file=sys.stderr)
+        print(f"connected to {gimbal.description}, protocol {gimbal.protocol}: mode {t.mode_name if t else '?'}")
+        try:
+            gimbal.send("euler", check=True)  # Euler angles: set_angles() gives absolute pitch and yaw
+        except xfgcu.CommandFailed as failed:
+            print(f"euler: {failed.result.status}", file=sys.stderr)
             return 1
         deadline = time.monotonic() + 10.0
-        while time.monotonic() < deadline:
-            gimbal.set_angles(0.0, pitch, yaw)  # refreshed: the client sends the latest each packet
-            u = gimbal.telemetry()["units"]  # type: ignore[index]
-            if abs(u["cam_pitch_deg"] - pitch) < 0.5 and abs((u["cam_yaw_deg"] - yaw + 180) % 360 - 180) < 0.5:
+        for t in gimbal.telemetry_stream(timeout=1.0):  # every reply, as it comes
+            gimbal.set_angles(0.0, pitch, yaw)  # refreshed: a mode change drops a setpoint
+            if abs(t.cam_pitch - pitch) < 0.5 and abs((t.cam_yaw - yaw + 180) % 360 - 180) < 0.5:
                 break
-            time.sleep(0.05)
-        else:
-            print("the gimbal did not reach the angles", file=sys.stderr)
-            return 1
-        print(f"pointing at pitch {u['cam_pitch_deg']:.2f} yaw {u['cam_yaw_deg']:.2f} deg")
+            if time.monotonic() > deadline:
+                print("the gimbal did not reach the angles", file=sys.stderr)
+                return 1
+        print(f"pointing at pitch {t.cam_pitch:.2f} yaw {t.cam_yaw:.2f} {xfgcu.Telemetry.unit('cam_yaw')}")
         result = gimbal.send("shutter")
-        print(f"photo: {result.status} ({result.packets} packets, {result.elapsed_ms} ms)")
+        packets = f"{result.packets} packet{'s' if result.packets != 1 else ''}"
+        print(f"photo: {result.status} ({packets}, {result.elapsed_ms} ms)")
         return 0 if result.ok else 1
 
 

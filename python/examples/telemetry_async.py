@@ -18,8 +18,8 @@ import xfgcu.aio
 
 async def drive(gimbal: xfgcu.aio.AsyncGimbal) -> None:
     """Commands and control from a task of their own, while the stream runs."""
-    print(f"zoom-to: {(await gimbal.send('zoom-to', rate=5.0)).status}")
-    print(f"head-lock: {(await gimbal.send('head-lock')).status}")
+    print(f"zoom-to: {(await gimbal.send('zoom_to', factor=5.0)).status}")
+    print(f"head-lock: {(await gimbal.send('head_lock')).status}")
     for _ in range(20):
         await gimbal.set_rates(0.0, 0.0, 30.0)  # deg/s; refreshed within the rate watchdog
         await asyncio.sleep(0.05)
@@ -31,17 +31,16 @@ async def stream(spec: str, count: int) -> int:
         task = asyncio.create_task(drive(gimbal))
         n = 0
         async for t in gimbal.telemetry_stream():
-            u = t["units"]
             print(
-                f"{n:4d} {u['mode']:<12} roll {u['cam_roll_deg']:7.2f} pitch {u['cam_pitch_deg']:7.2f} "
-                f"yaw {u['cam_yaw_deg']:7.2f} deg  zoom {u['zoom_cam1']:.1f}x"
+                f"{n:4d} {t.mode_name or t.gimbal_mode:<12} roll {t.cam_roll:7.2f} pitch {t.cam_pitch:7.2f} "
+                f"yaw {t.cam_yaw:7.2f} deg  zoom {t.zoom_cam1:.1f}x"
             )
             n += 1
             if n >= count:
                 break
         await task
         health = await gimbal.health()
-        print(f"link {health['link']}, {health['replies']} replies, {health['replies_missing']} missing/s")
+        print(f"link {health.link}, {health.replies} replies, {health.replies_missing} missing/s")
     return 0
 
 

@@ -9,6 +9,7 @@
 
 #include <jansson.h>
 #include <poll.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -147,12 +148,18 @@ int xfpy_command(const char *name, int n, const char *const *names, const char *
     text_err e;
     int rc;
     text_err_init(&e);
-    rc = build_command(name, n, names, values, (uint8_t)version, "encode", &spec, &cmd, &e);
+    rc = build_command(name, n, names, values, (uint8_t)version, NULL, &spec, &cmd, &e);
     if (rc == TEXT_OK) {
         rc = encode_command(&spec, &cmd, (uint8_t)version, out, cap, len, &e);
     }
     put_messages(&e, msgs, msgs_cap);
     return (rc == TEXT_OK) ? 0 : 2;
+}
+
+int xfpy_order_code(const char *name)
+{
+    uint8_t order = 0;
+    return (xf_order_from_name(name, &order) == XF_OK) ? (int)order : -1;
 }
 
 const char *xfpy_model_name(int code)
@@ -176,6 +183,236 @@ int xfpy_command_names(char *out, size_t cap)
         used += n;
     }
     return (used < cap) ? 0 : (int)used + 1;
+}
+
+int xfpy_command_option(const char *name, size_t i, const char **arg, unsigned *values, int *real, const char **words,
+                        int *cameras, double *lo, double *hi, const char **field, const char **help)
+{
+    cmd_spec spec;
+    cmdargs_info info;
+    if (!cmdargs_find(name, &spec)) {
+        return -1;
+    }
+    if (!cmdargs_option_info(&spec, i, &info)) {
+        return 0;
+    }
+    *arg = info.name;
+    *values = info.values;
+    *real = info.real;
+    *words = info.words;
+    *cameras = info.cameras;
+    *lo = info.lo;
+    *hi = info.hi;
+    *field = info.field;
+    *help = info.help;
+    return 1;
+}
+
+int xfpy_field_at(int group, size_t i, const char **name, const char **unit, const char **meaning, int *kind,
+                  int *since)
+{
+    size_t count = 0;
+    const xf_wire_field *rows = xf_wire_fields((xf_wire_group)group, &count);
+    if (rows == NULL || i >= count) {
+        return 0;
+    }
+    *name = rows[i].name;
+    *unit = rows[i].unit;
+    *meaning = rows[i].meaning;
+    *kind = rows[i].kind;
+    *since = rows[i].since;
+    return 1;
+}
+
+/* ---- settings: one table per struct, the one place of each range ---------------------- */
+
+typedef struct setting {
+    const char *name;
+    size_t offset; /* of the member in its struct */
+    size_t size;   /* 1, 2 or 4 bytes, unsigned */
+    long long lo, hi;
+} setting;
+
+#define XFPY_ROW(type, key, member, lo, hi)                                                                            \
+    {                                                                                                                  \
+        key, offsetof(type, member), sizeof(((type *)0)->member), lo, hi                                               \
+    }
+
+/* The limits are the library's own (xf_client_config_problem() still judges the combination). */
+static const setting client_settings[] = {
+    XFPY_ROW(xf_client_config, "command_timeout_ms", command_timeout_ms, 1, 3600000),
+    XFPY_ROW(xf_client_config, "operating_timeout_ms", operating_timeout_ms, 1, 3600000),
+    XFPY_ROW(xf_client_config, "rate_hz", rate_hz, 1, 200),
+    XFPY_ROW(xf_client_config, "carrier_max_age_ms", carrier_max_age_ms, 0, UINT16_MAX),
+    XFPY_ROW(xf_client_config, "gnss_max_age_ms", gnss_max_age_ms, 0, UINT16_MAX),
+    XFPY_ROW(xf_client_config, "stale_ms", stale_ms, 1, UINT16_MAX),
+    XFPY_ROW(xf_client_config, "down_ms", down_ms, 1, UINT16_MAX),
+    XFPY_ROW(xf_client_config, "rate_watchdog_ms", rate_watchdog_ms, 0, UINT16_MAX),
+    XFPY_ROW(xf_client_config, "protocol_version", protocol_version, 1, 2),
+    XFPY_ROW(xf_client_config, "version_auto", version_auto, 0, 1),
+    XFPY_ROW(xf_client_config, "reorder_ms", reorder_ms, 0, 1000),
+    XFPY_ROW(xf_client_config, "reorder_fixed", reorder_fixed, 0, 1),
+};
+
+static const setting sim_settings[] = {
+    XFPY_ROW(xf_sim_config, "version", version, 1, 2),
+    XFPY_ROW(xf_sim_config, "model", gimbal_code, 0, 255),
+    XFPY_ROW(xf_sim_config, "hw_version", hw_version, 0, 255),
+    XFPY_ROW(xf_sim_config, "fw_version", fw_version, 0, 255),
+    XFPY_ROW(xf_sim_config, "calibration_ms", calibration_ms, 0, 600000),
+    XFPY_ROW(xf_sim_config, "feedback_after", feedback_after, 0, UINT16_MAX),
+    XFPY_ROW(xf_sim_config, "state_once", state_once, 0, 1),
+    XFPY_ROW(xf_sim_config, "main_camera", main_camera, 1, 2),
+    XFPY_ROW(xf_sim_config, "answer_only", answer_only, 0, 2),
+    XFPY_ROW(xf_sim_config, "seed", seed, 0, 0x7FFFFFFF),
+};
+
+static const setting fault_settings[] = {
+    XFPY_ROW(xf_sim_faults, "drop_next", drop_next, 0, UINT16_MAX),
+    XFPY_ROW(xf_sim_faults, "drop_permille", drop_permille, 0, 1000),
+    XFPY_ROW(xf_sim_faults, "corrupt_next", corrupt_next, 0, UINT16_MAX),
+    XFPY_ROW(xf_sim_faults, "corrupt_permille", corrupt_permille, 0, 1000),
+    XFPY_ROW(xf_sim_faults, "delay_ms", delay_ms, 0, 10000),
+    XFPY_ROW(xf_sim_faults, "jitter_ms", jitter_ms, 0, 10000),
+    XFPY_ROW(xf_sim_faults, "dup_permille", dup_permille, 0, 1000),
+    XFPY_ROW(xf_sim_faults, "silent", silent, 0, 1),
+};
+#undef XFPY_ROW
+
+/* Table @p table's rows into *@p rows. @return how many (0 for no table). */
+static size_t settings(int table, const setting **rows)
+{
+    static const struct {
+        const setting *rows;
+        size_t n;
+    } tables[] = {{client_settings, sizeof(client_settings) / sizeof(client_settings[0])},
+                  {sim_settings, sizeof(sim_settings) / sizeof(sim_settings[0])},
+                  {fault_settings, sizeof(fault_settings) / sizeof(fault_settings[0])}};
+    if (table < 0 || table > 2) {
+        return 0;
+    }
+    *rows = tables[table].rows;
+    return tables[table].n;
+}
+
+int xfpy_setting_at(int table, size_t i, const char **name, long long *lo, long long *hi)
+{
+    const setting *rows = NULL;
+    if (i >= settings(table, &rows)) {
+        return 0;
+    }
+    *name = rows[i].name;
+    *lo = rows[i].lo;
+    *hi = rows[i].hi;
+    return 1;
+}
+
+static const setting *find_setting(int table, const char *name)
+{
+    const setting *rows = NULL;
+    size_t i, n = settings(table, &rows);
+    for (i = 0; name != NULL && i < n; i++) {
+        if (strcmp(rows[i].name, name) == 0) {
+            return &rows[i];
+        }
+    }
+    return NULL;
+}
+
+/* Setting @p name of @p table in the struct at @p base to @p v: 0, or -1 (unknown, out of range: never cut). */
+static int put_setting(int table, void *base, const char *name, long long v)
+{
+    const setting *s = find_setting(table, name);
+    uint8_t *at;
+    if (s == NULL || v < s->lo || v > s->hi) {
+        return -1;
+    }
+    at = (uint8_t *)base + s->offset;
+    if (s->size == 1u) {
+        *at = (uint8_t)v;
+    } else if (s->size == 2u) {
+        uint16_t u = (uint16_t)v;
+        memcpy(at, &u, sizeof(u));
+    } else {
+        uint32_t u = (uint32_t)v;
+        memcpy(at, &u, sizeof(u));
+    }
+    return 0;
+}
+
+static long long get_setting(int table, const void *base, const char *name)
+{
+    const setting *s = find_setting(table, name);
+    const uint8_t *at;
+    uint16_t u16;
+    uint32_t u32;
+    if (s == NULL) {
+        return -1;
+    }
+    at = (const uint8_t *)base + s->offset;
+    if (s->size == 1u) {
+        return *at;
+    }
+    if (s->size == 2u) {
+        memcpy(&u16, at, sizeof(u16));
+        return u16;
+    }
+    memcpy(&u32, at, sizeof(u32));
+    return u32;
+}
+
+/* ---- the setters' limits: where the library's conversions are exact ------------------- */
+
+typedef struct limit {
+    const char *name;
+    double lo, hi;
+    int wraps;
+} limit;
+
+int xfpy_limit_at(size_t i, const char **name, double *lo, double *hi, int *wraps)
+{
+    /* Each bound is where the library's converter stops: beyond it, it clamps. An angle that the
+     * library wraps is taken over one turn either way (a float beyond that loses the degree). */
+    const double angle = xf_ctrl_angle_raw(1e9f) / 100.0;    /* set_angles' pitch: 180 deg */
+    const double rate = xf_ctrl_rate_raw(1e9f, 1.0f) / 10.0; /* at zoom 1: 150 deg/s */
+    const double pitch = xf_carrier_pitch_raw(1e9f) / 100.0; /* the carrier's: 90 deg */
+    const double accel_lo = xf_accel_raw(-1e9f) / 100.0, accel_hi = xf_accel_raw(1e9f) / 100.0;
+    const double vel_lo = xf_velocity_raw(-1e9f) / 100.0, vel_hi = xf_velocity_raw(1e9f) / 100.0;
+    const double mm_lo = xf_mm_raw(-1e18) / 1000.0, mm_hi = xf_mm_raw(1e18) / 1000.0;
+    const limit rows[] = {
+        {"set_angles.roll", -360.0, 360.0, 1},
+        {"set_angles.pitch", -angle, angle, 0},
+        {"set_angles.yaw", -360.0, 360.0, 1},
+        {"set_rates.roll", -rate, rate, 0},
+        {"set_rates.pitch", -rate, rate, 0},
+        {"set_rates.yaw", -rate, rate, 0},
+        {"set_carrier.roll", -360.0, 360.0, 1},
+        {"set_carrier.pitch", -pitch, pitch, 0},
+        {"set_carrier.yaw", -360.0, 360.0, 1},
+        {"set_carrier.accel_north", accel_lo, accel_hi, 0},
+        {"set_carrier.accel_east", accel_lo, accel_hi, 0},
+        {"set_carrier.accel_up", accel_lo, accel_hi, 0},
+        {"set_carrier.vel_north", vel_lo, vel_hi, 0},
+        {"set_carrier.vel_east", vel_lo, vel_hi, 0},
+        {"set_carrier.vel_up", vel_lo, vel_hi, 0},
+        {"set_gnss.latitude", -90.0, 90.0, 0}, /* a latitude's own range */
+        {"set_gnss.longitude", xf_deg7_raw(-1e3) / 1e7, xf_deg7_raw(1e3) / 1e7, 0},
+        {"set_gnss.altitude", mm_lo, mm_hi, 0},
+        {"set_gnss.relative_height", mm_lo, mm_hi, 0},
+        {"set_gnss.satellites", 0.0, UINT8_MAX, 0},              /* xf_gnss.satellites */
+        {"set_gnss.week", 0.0, INT16_MAX, 0},                    /* xf_gnss.week: no week before 1980 */
+        {"set_gnss.ms_of_week", 0.0, 7.0 * 86400000.0 - 1.0, 0}, /* within one week */
+        {"disconnect.ms", 0.0, 3600000.0, 0},                    /* an hour: a test's longest outage */
+        {"set_main_camera.camera", 1.0, 2.0, 0},                 /* xf_client_set_main_camera() */
+    };
+    if (i >= sizeof(rows) / sizeof(rows[0])) {
+        return 0;
+    }
+    *name = rows[i].name;
+    *lo = rows[i].lo;
+    *hi = rows[i].hi;
+    *wraps = rows[i].wraps;
+    return 1;
 }
 
 /* ---- stream parser ------------------------------------------------------------------- */
@@ -255,7 +492,6 @@ void xfpy_wait(int fd, int ms)
 typedef struct reply {
     uint8_t bytes[XF_PACKET_MAX_LEN];
     uint8_t len;
-    xf_telemetry tele;
     struct timespec mono, wall; /* when it came: monitor --json's time_mono and time_utc */
 } reply;
 
@@ -266,6 +502,9 @@ typedef struct xfpy_client {
     xf_client client;
     uint8_t last[XF_PACKET_MAX_LEN]; /* the last GCU packet (on_bytes), until its telemetry comes */
     size_t last_len;
+    uint8_t sent[XF_PACKET_MAX_LEN]; /* the last packet the link accepted */
+    size_t sent_len;
+    uint8_t main_camera; /* whose zoom scales the rates: 1 or 2 */
     reply ring[RING];
     uint32_t replies;
     int opened;
@@ -279,6 +518,9 @@ static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t l
     if (dir == XF_DIR_GCU && len <= sizeof(h->last)) {
         memcpy(h->last, data, len);
         h->last_len = len;
+    } else if (dir == XF_DIR_HOST && len <= sizeof(h->sent)) {
+        memcpy(h->sent, data, len);
+        h->sent_len = len;
     }
 }
 
@@ -288,7 +530,7 @@ static void on_telemetry(void *user, const xf_telemetry *t)
     reply *r = &h->ring[h->replies % RING];
     memcpy(r->bytes, h->last, h->last_len);
     r->len = (uint8_t)h->last_len;
-    r->tele = *t;
+    (void)t; /* its packet is kept instead: the JSON of the two views comes from the bytes */
     clock_gettime(CLOCK_MONOTONIC, &r->mono);
     clock_gettime(CLOCK_REALTIME, &r->wall);
     h->replies++;
@@ -299,38 +541,17 @@ void *xfpy_client_new(void)
     xfpy_client *h = (xfpy_client *)calloc(1, sizeof(*h));
     if (h != NULL) {
         xf_client_config_init(&h->cfg);
+        h->main_camera = 1u;
     }
     return h;
 }
 
-int xfpy_client_config(void *p, const char *name, long v)
+int xfpy_client_config(void *p, const char *name, long long v)
 {
-    xf_client_config *c = &((xfpy_client *)p)->cfg;
-    if (v < 0) {
-        return -1;
-    }
-    /* each member's own limit: a value cut to its type would be another value */
-#define XFPY_SET(member, type, max)                                                                                    \
-    if (strcmp(name, #member) == 0) {                                                                                  \
-        if (v > (long)(max)) {                                                                                         \
-            return -1;                                                                                                 \
-        }                                                                                                              \
-        c->member = (type)v;                                                                                           \
-        return 0;                                                                                                      \
-    }
-    XFPY_SET(command_timeout_ms, uint32_t, 3600000L)
-    XFPY_SET(operating_timeout_ms, uint32_t, 3600000L)
-    XFPY_SET(rate_hz, uint16_t, 200)
-    XFPY_SET(carrier_max_age_ms, uint16_t, UINT16_MAX)
-    XFPY_SET(gnss_max_age_ms, uint16_t, UINT16_MAX)
-    XFPY_SET(stale_ms, uint16_t, UINT16_MAX)
-    XFPY_SET(down_ms, uint16_t, UINT16_MAX)
-    XFPY_SET(rate_watchdog_ms, uint16_t, UINT16_MAX)
-    XFPY_SET(protocol_version, uint8_t, 2)
-    XFPY_SET(reorder_ms, uint16_t, 1000)
-#undef XFPY_SET
-    return -1;
+    return put_setting(0, &((xfpy_client *)p)->cfg, name, v);
 }
+
+long long xfpy_client_config_get(void *p, const char *name) { return get_setting(0, &((xfpy_client *)p)->cfg, name); }
 
 const char *xfpy_client_config_problem(void *p) { return xf_client_config_problem(&((xfpy_client *)p)->cfg); }
 
@@ -350,6 +571,13 @@ int xfpy_client_open(void *p, const char *spec, char *msgs, size_t msgs_cap)
     h->cfg.user = h;
     if (err == XF_OK) {
         err = xf_client_init(&h->client, &h->hal, &h->cfg);
+    }
+    if (err > XF_OK) { /* a warning: the client runs */
+        text_err e;
+        text_err_init(&e);
+        text_note(&e, "rate_hz=%u: %s", (unsigned)h->cfg.rate_hz, xf_strerror(err));
+        put_messages(&e, msgs, msgs_cap);
+        return 0;
     }
     if (err != XF_OK) {
         return fail((int)err, msgs, msgs_cap, "%s: %s", h->desc, xf_strerror(err));
@@ -376,40 +604,6 @@ int xfpy_client_settled(void *p)
     return xf_client_settled(c) || xf_client_link(c) == XF_LINK_DOWN;
 }
 
-/* The "units" object of the telemetry: a few fields under names with their unit, each value the
- * field table's engineering value (the unit rule: xf_wire_field_value()). */
-static json_t *units_json(const xf_telemetry *t, const uint8_t *pkt)
-{
-    static const char *const keys[][2] = {{"cam_roll_deg", "cam_roll"},
-                                          {"cam_pitch_deg", "cam_pitch"},
-                                          {"cam_yaw_deg", "cam_yaw"},
-                                          {"rel_x_deg", "rel_angle_x"},
-                                          {"rel_y_deg", "rel_angle_y"},
-                                          {"rel_z_deg", "rel_angle_z"},
-                                          {"rate_x_dps", "rate_x"},
-                                          {"rate_y_dps", "rate_y"},
-                                          {"rate_z_dps", "rate_z"},
-                                          {"zoom_cam1", "zoom_cam1"},
-                                          {"zoom_cam2", "zoom_cam2"},
-                                          {"target_distance_m", "target_distance"},
-                                          {"target_latitude_deg", "target_latitude"},
-                                          {"target_longitude_deg", "target_longitude"},
-                                          {"target_altitude_m", "target_altitude"}};
-    json_t *u = json_object();
-    size_t i;
-    for (i = 0; u != NULL && i < sizeof(keys) / sizeof(keys[0]); i++) {
-        const xf_wire_field *f = xf_wire_field_find(XF_WIRE_GCU, keys[i][1]);
-        int64_t raw = xf_wire_field_get(f, pkt);
-        int none = strcmp(keys[i][1], "target_distance") == 0 && raw <= 0; /* no valid measurement */
-        json_object_set_new(u, keys[i][0], none ? json_null() : jsonpkt_value(f, raw, t->version, TEXT_ENGINEERING));
-    }
-    if (u != NULL) {
-        json_object_set_new(u, "mode",
-                            json_string(xf_mode_name(t->gimbal_mode) ? xf_mode_name(t->gimbal_mode) : "unknown"));
-    }
-    return u;
-}
-
 int xfpy_client_telemetry(void *p, uint32_t seq, int raw, char *out, size_t cap)
 {
     xfpy_client *h = (xfpy_client *)p;
@@ -433,7 +627,6 @@ int xfpy_client_telemetry(void *p, uint32_t seq, int raw, char *out, size_t cap)
     (void)jsonpkt_times(obj, &r->mono, &r->wall); /* first, as monitor --json has them */
     json_object_update(obj, pkt);
     json_decref(pkt);
-    json_object_set_new(obj, "units", units_json(&r->tele, r->bytes));
     rc = dump_json(obj, out, cap);
     json_decref(obj);
     return rc;
@@ -441,6 +634,9 @@ int xfpy_client_telemetry(void *p, uint32_t seq, int raw, char *out, size_t cap)
 
 /* xf_ctrl_status, as health's "control" says it */
 static const char *const ctrl_names[] = {"sent", "not_set", "no_mode", "wrong_kind", "not_read", "command", "dropped"};
+
+/* The version bytes as health says them: 0 (none yet) is null. */
+static json_t *version_json(uint8_t v) { return (v != 0u) ? json_integer(v) : json_null(); }
 
 int xfpy_client_health(void *p, char *out, size_t cap)
 {
@@ -460,9 +656,43 @@ int xfpy_client_health(void *p, char *out, size_t cap)
     if (o == NULL) {
         return -1;
     }
+    json_object_set_new(o, "version_sent", version_json(he->version_sent));
+    json_object_set_new(o, "version_answered", version_json(he->version_answered));
+    json_object_set_new(
+        o, "version_gcu",
+        version_json(xf_client_telemetry(&h->client)->have_main ? xf_client_gcu_version(&h->client) : 0u));
+    json_object_set_new(o, "in_order", json_boolean(he->in_order != 0u));
+    json_object_set_new(o, "out_of_turn", json_integer(he->out_of_turn));
+    json_object_set_new(o, "reorder_ms", json_integer(he->reorder_ms));
     rc = dump_json(o, out, cap);
     json_decref(o);
     return rc;
+}
+
+int xfpy_client_last_sent(void *p, uint8_t *out, size_t cap)
+{
+    xfpy_client *h = (xfpy_client *)p;
+    if (h->sent_len > cap) {
+        return 0;
+    }
+    memcpy(out, h->sent, h->sent_len);
+    return (int)h->sent_len;
+}
+
+double xfpy_client_rate_limit(void *p)
+{
+    xfpy_client *h = (xfpy_client *)p;
+    const xf_telemetry *t = xf_client_telemetry(&h->client);
+    float zoom = xf_zoom_x((h->main_camera == 2u) ? t->zoom_cam2 : t->zoom_cam1);
+    zoom = (zoom >= 1.0f) ? zoom : 1.0f; /* as xf_ctrl_rate_raw() reads it */
+    return (double)xf_ctrl_rate_raw(1e9f, zoom) / (10.0 * (double)zoom);
+}
+
+void xfpy_client_set_main_camera(void *p, int camera)
+{
+    xfpy_client *h = (xfpy_client *)p;
+    h->main_camera = (camera == 2) ? 2u : 1u;
+    xf_client_set_main_camera(&h->client, h->main_camera);
 }
 
 int xfpy_client_submit(void *p, const char *name, int n, const char *const *names, const char *const *values, int force,
@@ -477,7 +707,7 @@ int xfpy_client_submit(void *p, const char *name, int n, const char *const *name
     xf_err err;
     int rc = 0;
     text_err_init(&e);
-    if (build_command(name, n, names, values, version, "send", &spec, &cmd, &e) != TEXT_OK) {
+    if (build_command(name, n, names, values, version, NULL, &spec, &cmd, &e) != TEXT_OK) {
         rc = 2;
     }
     if (rc == 0) {
@@ -486,13 +716,13 @@ int xfpy_client_submit(void *p, const char *name, int n, const char *const *name
         if (err == XF_ERR_UNSUPPORTED) {
             char model[64];
             fieldtext_model(xf_client_telemetry(&h->client)->gimbal_code, model, sizeof(model));
-            (void)text_fail(&e, "send",
+            (void)text_fail(&e, NULL,
                             "%s: the GCU's model %s does not support it, by V2.0.6's support list; "
                             "send it with force=True all the same",
                             spec.name, model);
             rc = 1;
         } else if (err != XF_OK) {
-            (void)text_fail(&e, "send", "%s: %s%s%s", spec.name, xf_strerror(err), bad != XF_F_NONE ? ": " : "",
+            (void)text_fail(&e, NULL, "%s: %s%s%s", spec.name, xf_strerror(err), bad != XF_F_NONE ? ": " : "",
                             bad != XF_F_NONE ? xf_field_name(bad) : "");
             rc = 2;
         }
@@ -580,6 +810,8 @@ void xfpy_client_free(void *p)
 
 /* ---- simulator ------------------------------------------------------------------------------ */
 
+#define NOTES 16u /* the simulator's notes kept */
+
 typedef struct xfpy_sim {
     xf_sim_config cfg;
     xf_simlink link;
@@ -587,62 +819,40 @@ typedef struct xfpy_sim {
     uint8_t fail[256];
     int opened;
     char spec[XF_LINK_SPEC_MAX + 1u];
+    char notes[NOTES][200];
+    uint32_t nnotes;
 } xfpy_sim;
+
+static void on_note(void *user, const xf_sim_note *n)
+{
+    xfpy_sim *h = (xfpy_sim *)user;
+    const char *order = xf_order_name(n->order);
+    (void)snprintf(h->notes[h->nnotes % NOTES], sizeof(h->notes[0]), "%s (0x%02X): %s; answered state 0x%02X",
+                   order != NULL ? order : "unknown order", n->order, n->text, n->state);
+    h->nnotes++;
+}
 
 void *xfpy_sim_new(void)
 {
     xfpy_sim *h = (xfpy_sim *)calloc(1, sizeof(*h));
     if (h != NULL) {
         xf_sim_config_init(&h->cfg);
+        h->cfg.on_note = on_note;
+        h->cfg.user = h;
     }
     return h;
 }
 
-int xfpy_sim_config(void *p, const char *name, long v)
+int xfpy_sim_config(void *p, const char *name, long long v) { return put_setting(1, &((xfpy_sim *)p)->cfg, name, v); }
+
+long long xfpy_sim_config_get(void *p, const char *name) { return get_setting(1, &((xfpy_sim *)p)->cfg, name); }
+
+int xfpy_sim_fault(void *p, const char *name, long long v)
 {
-    xf_sim_config *c = &((xfpy_sim *)p)->cfg;
-    if (v < 0) {
-        return -1;
-    }
-#define XFPY_SET(key, member, type, max)                                                                               \
-    if (strcmp(name, key) == 0 && v <= (long)(max)) {                                                                  \
-        c->member = (type)v;                                                                                           \
-        return 0;                                                                                                      \
-    }
-    XFPY_SET("version", version, uint8_t, 2)
-    XFPY_SET("model", gimbal_code, uint8_t, 255)
-    XFPY_SET("hw_version", hw_version, uint8_t, 255)
-    XFPY_SET("fw_version", fw_version, uint8_t, 255)
-    XFPY_SET("calibration_ms", calibration_ms, uint32_t, 600000)
-    XFPY_SET("feedback_after", feedback_after, uint16_t, 65535)
-    XFPY_SET("state_once", state_once, uint8_t, 1)
-    XFPY_SET("seed", seed, uint32_t, 0x7FFFFFFF)
-#undef XFPY_SET
-    return -1;
+    return put_setting(2, &((xfpy_sim *)p)->sim.fault, name, v);
 }
 
-int xfpy_sim_fault(void *p, const char *name, long v)
-{
-    xf_sim_faults *f = &((xfpy_sim *)p)->sim.fault;
-    if (v < 0) {
-        return -1;
-    }
-#define XFPY_SET(member, type, max)                                                                                    \
-    if (strcmp(name, #member) == 0 && v <= (long)(max)) {                                                              \
-        f->member = (type)v;                                                                                           \
-        return 0;                                                                                                      \
-    }
-    XFPY_SET(drop_next, uint16_t, 65535)
-    XFPY_SET(drop_permille, uint16_t, 1000)
-    XFPY_SET(corrupt_next, uint16_t, 65535)
-    XFPY_SET(corrupt_permille, uint16_t, 1000)
-    XFPY_SET(delay_ms, uint32_t, 10000)
-    XFPY_SET(jitter_ms, uint16_t, 10000)
-    XFPY_SET(dup_permille, uint16_t, 1000)
-    XFPY_SET(silent, uint8_t, 1)
-#undef XFPY_SET
-    return -1;
-}
+long long xfpy_sim_fault_get(void *p, const char *name) { return get_setting(2, &((xfpy_sim *)p)->sim.fault, name); }
 
 void xfpy_sim_fail(void *p, int order, int state)
 {
@@ -727,8 +937,28 @@ int xfpy_sim_stats(void *p, char *out, size_t cap)
     if (o == NULL) {
         return -1;
     }
+    json_object_set_new(o, "ignored", json_integer(s->ignored));
+    json_object_set_new(o, "strict", json_integer(s->strict));
+    json_object_set_new(o, "write_errors", json_integer(s->write_errors));
     rc = dump_json(o, out, cap);
     json_decref(o);
+    return rc;
+}
+
+int xfpy_sim_notes(void *p, char *out, size_t cap)
+{
+    xfpy_sim *h = (xfpy_sim *)p;
+    json_t *a = json_array();
+    uint32_t i = (h->nnotes > NOTES) ? h->nnotes - NOTES : 0u;
+    int rc;
+    if (a == NULL) {
+        return -1;
+    }
+    for (; i < h->nnotes; i++) {
+        json_array_append_new(a, json_string(h->notes[i % NOTES]));
+    }
+    rc = dump_json(a, out, cap);
+    json_decref(a);
     return rc;
 }
 

@@ -44,10 +44,43 @@ int xfpy_encode(const char *json, int version, int raw, uint8_t *out, size_t cap
  */
 int xfpy_command(const char *name, int n, const char *const *names, const char *const *values, int version,
                  uint8_t *out, size_t cap, size_t *len, char *msgs, size_t msgs_cap);
+/** The code of order @p name ("zoom_to" or "zoom-to", xf_order_from_name()), or -1 when there is none. */
+int xfpy_order_code(const char *name);
 /** The name of gimbal model @p code ("" when unknown). */
 const char *xfpy_model_name(int code);
 /** The command names, one per line, into @p out. @return 0, or the size needed. */
 int xfpy_command_names(char *out, size_t cap);
+/**
+ * Argument @p i of command @p name, as the text layer takes it (cmdargs_option_info()): its name,
+ * how many values (0: a switch), whether a real number, its words, whether the cameras, each
+ * value's range, the xf_command member it sets and a line of help.
+ * @return 1; 0 past the last; -1 for a command that does not exist
+ */
+int xfpy_command_option(const char *name, size_t i, const char **arg, unsigned *values, int *real, const char **words,
+                        int *cameras, double *lo, double *hi, const char **field, const char **help);
+/**
+ * Row @p i of a group of the field table (xf_wire_fields(); xf_wire_group @p group): its name,
+ * unit, one line of meaning, kind (xf_wire_kind) and the first version that has it.
+ * @return 1, or 0 past the last
+ */
+int xfpy_field_at(int group, size_t i, const char **name, const char **unit, const char **meaning, int *kind,
+                  int *since);
+
+/* ---- what the package checks arguments against ------------------------------------- */
+
+/**
+ * Setting @p i of a table (0: the client's configuration, xf_client_config; 1: the simulator's,
+ * xf_sim_config; 2: the simulator's faults, xf_sim_faults): its name and the range it takes.
+ * The setters below take exactly these names and ranges. @return 1, or 0 past the last.
+ */
+int xfpy_setting_at(int table, size_t i, const char **name, long long *lo, long long *hi);
+/**
+ * Limit @p i of the arguments of the setters ("set_angles.pitch", "set_gnss.week", ...): the
+ * range in which the library's conversion is exact (beyond it, it would clamp or wrap), and
+ * whether the value goes round (1: an angle wrapped into its range by the library, accepted
+ * over one turn either way). @return 1, or 0 past the last.
+ */
+int xfpy_limit_at(size_t i, const char **name, double *lo, double *hi, int *wraps);
 
 /* ---- stream parser ------------------------------------------------------------- */
 
@@ -68,8 +101,10 @@ void xfpy_wait(int fd, int ms);
 
 /** A client handle with the default configuration; NULL when out of memory. */
 void *xfpy_client_new(void);
-/** Set configuration @p name (an xf_client_config member) before open. @return 0, or -1 (unknown name). */
-int xfpy_client_config(void *h, const char *name, long value);
+/** Set configuration @p name (setting table 0) before open. @return 0, or -1 (unknown name, out of range). */
+int xfpy_client_config(void *h, const char *name, long long value);
+/** Configuration @p name as it is set (setting table 0). @return it, or -1 (unknown name). */
+long long xfpy_client_config_get(void *h, const char *name);
 /** Why the configuration set so far cannot work (xf_client_config_problem()), or NULL. */
 const char *xfpy_client_config_problem(void *h);
 /** Open the link @p spec and start the client. @return 0, or an xf_err (messages). */
@@ -82,12 +117,18 @@ uint32_t xfpy_client_replies(void *h);
 int xfpy_client_settled(void *h);
 /**
  * Telemetry JSON of reply number @p seq (1-based; 0: the latest) while among the last ones
- * kept: the keys of `xfgcu monitor --json` (wire integers with @p raw, as monitor --raw) plus
- * "units". @return 0, -1 (gone or none), or the size needed.
+ * kept: the object of `xfgcu monitor --json` (engineering units; wire integers with @p raw, as
+ * monitor --raw). @return 0, -1 (gone or none), or the size needed.
  */
 int xfpy_client_telemetry(void *h, uint32_t seq, int raw, char *out, size_t cap);
-/** Health JSON. @return 0 or the size needed. */
+/** Health JSON (xf_health, the parser's counters, the versions). @return 0 or the size needed. */
 int xfpy_client_health(void *h, char *out, size_t cap);
+/** The last packet the link accepted (on_bytes) into @p out. @return its length, 0 before the first. */
+int xfpy_client_last_sent(void *h, uint8_t *out, size_t cap);
+/** The largest rate, deg/s, that set_rates() carries unclamped at the main camera's zoom now. */
+double xfpy_client_rate_limit(void *h);
+/** The camera on the GCU's main screen, whose zoom scales the rates: 1 or 2 (xf_client_set_main_camera()). */
+void xfpy_client_set_main_camera(void *h, int camera);
 /**
  * Submit a named command (@p name and its named arguments, as for xfpy_command), built for the
  * version the GCU speaks. @p force: even if the model lacks it.
@@ -104,7 +145,7 @@ int xfpy_client_set_rates(void *h, double roll, double pitch, double yaw);
 int xfpy_client_set_angles(void *h, double roll, double pitch, double yaw);
 void xfpy_client_clear_control(void *h);
 void xfpy_client_set_carrier(void *h, const double *values9);
-/** GNSS in degrees and metres; @p week < 0: the time now. */
+/** GNSS in degrees and metres, within the limits of xfpy_limit_at(); @p week < 0: the time now. */
 void xfpy_client_set_gnss(void *h, double lat, double lon, double alt_m, int satellites, int week, long ms_of_week,
                           double relative_height_m);
 /** Where the link goes ("tcp 127.0.0.1:2332"). */
@@ -114,10 +155,14 @@ void xfpy_client_free(void *h);
 /* ---- simulator --------------------------------------------------------------------- */
 
 void *xfpy_sim_new(void);
-/** Set configuration @p name before open (version, model, ...). @return 0 or -1. */
-int xfpy_sim_config(void *h, const char *name, long value);
-/** Set a fault (drop_next, drop_permille, corrupt_next, corrupt_permille, delay_ms, silent). @return 0 or -1. */
-int xfpy_sim_fault(void *h, const char *name, long value);
+/** Set configuration @p name (setting table 1) before open. @return 0 or -1 (unknown name, out of range). */
+int xfpy_sim_config(void *h, const char *name, long long value);
+/** Configuration @p name as it is set. @return it, or -1 (unknown name). */
+long long xfpy_sim_config_get(void *h, const char *name);
+/** Set a fault (setting table 2) at any time after open. @return 0 or -1 (unknown name, out of range). */
+int xfpy_sim_fault(void *h, const char *name, long long value);
+/** Fault @p name as it is set. @return it, or -1 (unknown name). */
+long long xfpy_sim_fault_get(void *h, const char *name);
 /** Executions of @p order answer @p state. */
 void xfpy_sim_fail(void *h, int order, int state);
 /** Open the simulator's end: @p kind "tcp", "udp" or "pty"; @p where the address or the pty's link.
@@ -128,6 +173,11 @@ const char *xfpy_sim_spec(void *h);
 int xfpy_sim_step(void *h, int *fd);
 /** Counters and state, JSON. @return 0 or the size needed. */
 int xfpy_sim_stats(void *h, char *out, size_t cap);
+/**
+ * What the simulator read strictly where V2.0.6 leaves a GCU's behaviour open (xf_sim_config.on_note),
+ * the last ones kept, oldest first: a JSON array of one-line texts. @return 0 or the size needed.
+ */
+int xfpy_sim_notes(void *h, char *out, size_t cap);
 void xfpy_sim_disconnect(void *h, long ms);
 void xfpy_sim_free(void *h);
 

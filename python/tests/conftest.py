@@ -5,14 +5,19 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
-from typing import Iterator, List
+import tempfile
+import time
+from typing import Callable, Iterator, List
 
 import pytest
 from hypothesis import HealthCheck, settings
+from hypothesis.configuration import set_hypothesis_home_dir
 
 import xfgcu
 
-# No example database in the source tree; a fixed budget so the suite stays fast.
+# Nothing written into the source tree: no example database, and hypothesis's own cache (the
+# characters of text strategies) in the temporary directory. A fixed budget so the suite stays fast.
+set_hypothesis_home_dir(os.environ.get("HYPOTHESIS_STORAGE_DIRECTORY") or os.path.join(tempfile.gettempdir(), "xfgcu-hypothesis"))
 settings.register_profile(
     "xfgcu", database=None, max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow]
 )
@@ -23,6 +28,17 @@ def pytest_report_header() -> str:
 
 
 LINKS = ["udp:127.0.0.1:0", "tcp:127.0.0.1:0", "pty"]
+
+
+def wait_until(predicate: Callable[[], bool], timeout: float = 5.0) -> bool:
+    """Whether ``predicate`` holds within ``timeout`` seconds (a bound that holds on a loaded
+    machine: the tests wait for an event, never assert how soon it comes)."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.02)
+    return predicate()
 
 
 @pytest.fixture(scope="session")

@@ -19,8 +19,8 @@ def test_async_send_and_stream(sim: xfgcu.Simulator) -> None:
                 got.append(t)
                 if len(got) == 5:
                     break
-            assert all(t["direction"] == "gcu" and "units" in t for t in got)
-            assert (await g.health())["link"] == "up"
+            assert all(isinstance(t, xfgcu.Telemetry) and t.direction == "gcu" for t in got)
+            assert (await g.health()).link == "up"
             assert (await g.telemetry()) is not None
 
     asyncio.run(asyncio.wait_for(main(), 20))

@@ -1,6 +1,17 @@
-"""The package's exceptions."""
+"""The package's exceptions and warnings.
+
+Arguments are checked before anything reaches the library: a value of the wrong type is a
+``TypeError``, a value out of range (of the C type or of the protocol), NaN, an infinity or a
+string with a NUL character a ``ValueError`` (``CommandError`` for a command's arguments), each
+naming the function and the parameter; nothing is sent and nothing changes.
+"""
 
 from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .results import Result
 
 __all__ = [
     "Error",
@@ -12,7 +23,11 @@ __all__ = [
     "EncodeError",
     "CommandError",
     "UnsupportedCommandError",
+    "CommandFailed",
     "LinkError",
+    "ClosedError",
+    "TelemetryTimeout",
+    "ClampedWarning",
 ]
 
 
@@ -41,12 +56,12 @@ class TruncatedError(DecodeError):
 
 
 class EncodeError(Error, ValueError):
-    """An object (encode) or a command's arguments (encode_command, send) that make no packet;
-    the message is the xfgcu program's."""
+    """An object (encode) or a command's arguments (encode_command, send) that make no packet."""
 
 
 class CommandError(EncodeError):
-    """A command that cannot be sent (bad arguments, a full queue)."""
+    """A command that cannot be sent: an argument out of range, arguments that do not go
+    together, a full queue."""
 
 
 class UnsupportedCommandError(CommandError):
@@ -54,5 +69,29 @@ class UnsupportedCommandError(CommandError):
     sends it all the same."""
 
 
+class CommandFailed(Error):
+    """A command that did not end "ok" (the GCU failed it, or it timed out, lost its link or was
+    cancelled), raised by ``send(..., check=True)`` or on a gimbal connected with
+    ``raise_on_failure=True``. ``result`` is its Result."""
+
+    def __init__(self, result: "Result") -> None:
+        detail = f" (cameras 0x{result.failed_cameras:02X})" if result.failed_cameras else ""
+        super().__init__(f"{result.name}: {result.status}{detail}")
+        self.result = result
+
+
 class LinkError(Error, ConnectionError):
     """The link cannot be opened, or the GCU did not answer in time."""
+
+
+class ClosedError(LinkError):
+    """A call on a Gimbal or a Simulator after its close(): every call but close() raises it."""
+
+
+class TelemetryTimeout(LinkError, TimeoutError):
+    """No telemetry came within the timeout a telemetry stream was given."""
+
+
+class ClampedWarning(UserWarning):
+    """A setpoint the library sends clamped, where it documents that it clamps: a rate beyond
+    what the wire carries at the main camera's zoom (set_rates)."""

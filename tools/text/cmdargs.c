@@ -68,8 +68,9 @@ typedef struct cmd_extra {
 #define OPTS(a) (uint8_t)(sizeof(a) / sizeof((a)[0])), a
 #define NO_OPTS 0, NULL
 
-#define GRID_BOX   "box corners on the 0..10000 screen grid, X0 <= X1 and Y0 <= Y1"
-#define GRID_POINT "a point on the 0..10000 screen grid"
+#define GRID_BOX     "box corners on the 0..10000 screen grid, X0 <= X1 and Y0 <= Y1"
+#define GRID_POINT   "a point on the 0..10000 screen grid"
+#define CAMERAS_HELP "cameras: numbers (1, or 1,2 = 0x03), a hex mask (0x03) or all"
 
 static const opt_spec gaze_geo_opts[] = {
     {"--lat", K_DEG, XF_F_LATITUDE, OPT_REQUIRED, 0, -90, 90, "DEG", "latitude, -90..90 degrees"},
@@ -212,6 +213,8 @@ static const struct cmd_alias {
 
 /* ---- the commands, from the codec's table --------------------------------- */
 
+static int option_index(const cmd_spec *spec, const char *name);
+
 static int takes_cameras(const cmd_spec *spec)
 {
     size_t i;
@@ -265,25 +268,66 @@ size_t cmdargs_option_count(const cmd_spec *spec)
     return n;
 }
 
-const char *cmdargs_option(const cmd_spec *spec, size_t i, int *takes_value)
+/* The argument row @p o described into @p info, under @p name. */
+static void describe(const opt_spec *o, const char *name, cmdargs_info *info)
+{
+    memset(info, 0, sizeof(*info));
+    info->name = name;
+    switch ((opt_kind)o->kind) {
+    case K_SWITCH: info->values = 0u; break;
+    case K_BOX: info->values = 4u; break;
+    case K_POINT:
+    case K_OFFSET: info->values = 2u; break;
+    default: info->values = 1u; break;
+    }
+    info->real = o->kind == K_DEG || o->kind == K_METRES || o->kind == K_ZOOM_RATE || o->kind == K_TENTHS;
+    info->words = (o->kind == K_WORD) ? o->meta : NULL;
+    info->lo = o->lo;
+    info->hi = o->hi;
+    info->field = xf_field_name((xf_field)o->field);
+    info->help = o->help;
+}
+
+int cmdargs_option_info(const cmd_spec *spec, size_t i, cmdargs_info *info)
 {
     size_t k;
     if (i < spec->extra->nopts) {
-        *takes_value = spec->extra->opts[i].kind != K_SWITCH;
-        return spec->extra->opts[i].name + 2; /* after "--" */
+        describe(&spec->extra->opts[i], spec->extra->opts[i].name + 2 /* after "--" */, info);
+        return 1;
     }
     i -= spec->extra->nopts;
     if (takes_cameras(spec) && i-- == 0u) {
-        *takes_value = 1;
-        return "cameras";
+        memset(info, 0, sizeof(*info));
+        info->name = "cameras";
+        info->values = 1u;
+        info->cameras = 1;
+        info->lo = 1;
+        info->hi = 255; /* a mask; the text's own syntax is checked by cmdargs_build */
+        info->field = xf_field_name(XF_F_CAMERAS);
+        info->help = CAMERAS_HELP;
+        return 1;
     }
     for (k = 0; k < sizeof(aliases) / sizeof(aliases[0]); k++) {
         if (aliases[k].order == spec->info->order && i-- == 0u) {
-            *takes_value = 1;
-            return aliases[k].alias;
+            int at = option_index(spec, aliases[k].name);
+            if (at < 0) {
+                return 0; /* an alias of no argument: the table's own fault */
+            }
+            describe(&spec->extra->opts[at], aliases[k].alias, info);
+            return 1;
         }
     }
-    return NULL;
+    return 0;
+}
+
+const char *cmdargs_option(const cmd_spec *spec, size_t i, int *takes_value)
+{
+    cmdargs_info info;
+    if (!cmdargs_option_info(spec, i, &info)) {
+        return NULL;
+    }
+    *takes_value = info.values != 0u;
+    return info.name;
 }
 
 /* ---- usage text --------------------------------------------------------- */
@@ -374,8 +418,7 @@ void cmdargs_help(const cmd_spec *spec, const char *context, FILE *out)
         fprintf(out, "  %-22s %s\n", left, spec->extra->opts[i].help);
     }
     if (takes_cameras(spec)) {
-        fprintf(out, "  %-22s cameras: numbers (1, or 1,2 = 0x03), a hex mask (0x03) or all; default 0x%02X\n",
-                "--cameras CAMS", info->default_cameras);
+        fprintf(out, "  %-22s " CAMERAS_HELP "; default 0x%02X\n", "--cameras CAMS", info->default_cameras);
     }
 }
 

@@ -41,6 +41,21 @@ size_t cmdargs_option_count(const cmd_spec *spec);
 /** The @p i-th of them ("box"), and whether it takes a value (*@p takes_value); NULL past the last. */
 const char *cmdargs_option(const cmd_spec *spec, size_t i, int *takes_value);
 
+/** What one argument takes, for a binding that checks its values before it builds (cmdargs_option_info()). */
+typedef struct cmdargs_info {
+    const char *name;  /**< without "--" ("factor"); an old spelling ("rate") is an entry of its own */
+    unsigned values;   /**< 0: a switch; 1: one value; 2 or 4: that many integers, comma-separated */
+    int real;          /**< 1: a decimal number; 0: integers, a word or cameras */
+    const char *words; /**< the '|'-separated words it takes ("off|on|auto"), or NULL */
+    int cameras;       /**< 1: the cameras (numbers, a hex mask or "all": cmdargs_build checks the text) */
+    double lo, hi;     /**< each value's range; the codec may narrow it by version (palette, pip) */
+    const char *field; /**< the xf_command member it sets (the first of several): xf_field_name() */
+    const char *help;  /**< what it means and accepts, one line */
+} cmdargs_info;
+
+/** The @p i-th argument of cmdargs_option(), described into @p info. @return 1, or 0 past the last. */
+int cmdargs_option_info(const cmd_spec *spec, size_t i, cmdargs_info *info);
+
 /**
  * Build @p cmd from @p n named arguments, checked for protocol @p version: each argument against
  * what it accepts, their combination (--start needs --box), then the codec's own ranges. An
