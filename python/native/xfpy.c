@@ -566,6 +566,9 @@ int xfpy_client_open(void *p, const char *spec, char *msgs, size_t msgs_cap)
     h->opened = 1;
     (void)xf_link_describe(&h->link, h->desc, sizeof(h->desc));
     err = xf_link_hal(&h->link, &h->hal);
+    if (xf_link_keeps_order(&h->link.spec)) {
+        h->cfg.reorder_fixed = 1; /* serial and TCP keep order: no need to judge the link first */
+    }
     h->cfg.on_bytes = on_bytes;
     h->cfg.on_telemetry = on_telemetry;
     h->cfg.user = h;

@@ -10,6 +10,7 @@ from __future__ import annotations
 import asyncio
 import ctypes
 import math
+import re
 import time
 from dataclasses import dataclass
 from typing import Any, Callable, Dict, Iterator
@@ -87,7 +88,10 @@ def refused_or(call: Callable[[], Any], accepted: Callable[[Any], None]) -> None
         result = call()
     except (TypeError, ValueError) as exc:
         text = str(exc)
-        assert text and "\n" not in text and "--" not in text, text  # one line, in Python's words
+        # one line, in Python's words: no "--option" of the program's (a hostile string quoted
+        # in the message may hold "--" itself)
+        words = re.sub(r"'[^']*'", "", re.sub(r'"[^"]*"', "", text))
+        assert text and "\n" not in text and "--" not in words, text
         return
     accepted(result)
 
