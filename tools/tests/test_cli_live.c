@@ -29,27 +29,13 @@
 #include <cmocka.h>
 #include <jansson.h>
 
+#include "bg_proc.h"
 #include "run_tool.h"
 #include "sim_proc.h"
 
 extern char **environ;
 
 /* ---- helpers ---------------------------------------------------------------------------- */
-
-static double now_s(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec / 1e9;
-}
-
-static void sleep_ms(long ms)
-{
-    struct timespec t;
-    t.tv_sec = ms / 1000;
-    t.tv_nsec = (ms % 1000) * 1000000L;
-    nanosleep(&t, NULL);
-}
 
 /* A port nobody uses now (bound, read, released), for a program started before its peer. */
 static void free_port(int type, char *buf, size_t cap)
@@ -65,84 +51,6 @@ static void free_port(int type, char *buf, size_t cap)
     assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
     snprintf(buf, cap, "%u", (unsigned)ntohs(a.sin_port));
     close(fd);
-}
-
-/* A program in the background, its stdout and stderr to files. */
-typedef struct bg {
-    pid_t pid;
-    char out[96], err[96];
-} bg;
-
-static void bg_start(bg *b, const char *tag, ...)
-{
-    char *argv[40];
-    int argc = 0;
-    posix_spawn_file_actions_t fa;
-    va_list ap;
-    const char *a;
-    snprintf(b->out, sizeof(b->out), "/tmp/xfgcu-live-%ld-%s.out", (long)getpid(), tag);
-    snprintf(b->err, sizeof(b->err), "/tmp/xfgcu-live-%ld-%s.err", (long)getpid(), tag);
-    argv[argc++] = (char *)XFGCU_EXE;
-    va_start(ap, tag);
-    while ((a = va_arg(ap, const char *)) != NULL && argc < 38) {
-        argv[argc++] = (char *)a;
-    }
-    va_end(ap);
-    argv[argc] = NULL;
-    assert_int_equal(posix_spawn_file_actions_init(&fa), 0);
-    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 1, b->out, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    posix_spawn_file_actions_addopen(&fa, 2, b->err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    assert_int_equal(posix_spawn(&b->pid, XFGCU_EXE, &fa, NULL, argv, environ), 0);
-    posix_spawn_file_actions_destroy(&fa);
-}
-
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    char *text = calloc(1, 1 << 20);
-    size_t n;
-    assert_non_null(f);
-    assert_non_null(text);
-    n = fread(text, 1, (1 << 20) - 1, f);
-    text[n] = '\0';
-    fclose(f);
-    return text;
-}
-
-/* Wait for it (SIGKILL after @p limit_ms), read what it wrote, remove the files. */
-static tool_result bg_finish(bg *b, long limit_ms)
-{
-    tool_result r;
-    int wstatus = 0;
-    double end = now_s() + (double)limit_ms / 1000.0;
-    pid_t got;
-    while ((got = waitpid(b->pid, &wstatus, WNOHANG)) == 0 && now_s() < end) {
-        sleep_ms(10);
-    }
-    if (got == 0) {
-        kill(b->pid, SIGKILL);
-        waitpid(b->pid, &wstatus, 0);
-        print_error("%s did not end in %ld ms\n", b->out, limit_ms);
-    }
-    r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
-    r.out = slurp(b->out);
-    r.err = slurp(b->err);
-    r.out_len = strlen(r.out);
-    r.err_len = strlen(r.err);
-    unlink(b->out);
-    unlink(b->err);
-    b->pid = 0;
-    assert_int_not_equal(got, 0);
-    return r;
-}
-
-static void bg_stop(bg *b)
-{
-    tool_result r;
-    kill(b->pid, SIGTERM);
-    r = bg_finish(b, 5000);
-    tool_result_free(&r);
 }
 
 /* The JSON object on line @p i (0-based) of @p text; NULL past the end. */

@@ -297,7 +297,7 @@ static void test_encode_takes_timed_lines(void **state)
 }
 
 /* The second review's cases: record --force keeps FILE when the link fails (its capture stays
- * under the temporary name, named in a note); --protocol after record's COMMAND is the one the
+ * under the temporary name, named in a note after the failure's line); --protocol after record's COMMAND is the one the
  * command is checked for; settings that
  * cannot work are refused before any link is opened, for every command. */
 static void test_review_cases(void **state)
@@ -316,7 +316,8 @@ static void test_review_cases(void **state)
     r = run_tool(NULL, "--udp", "127.0.0.1", "--gcu-port", "9", "--local-port", "0", "--timeout", "300", "record",
                  "--force", file, "--duration", "1", NULL);
     assert_int_equal(r.status, 3);
-    assert_non_null(strstr(r.err, "is kept as it was; this run's capture is"));
+    assert_non_null(strstr(r.err, "xfgcu: note: capture: what was captured ("));
+    assert_non_null(strstr(r.err, "ex.cap is as it was\n"));
     tool_result_free(&r);
     f = fopen(file, "r");
     assert_non_null(f);

@@ -43,12 +43,18 @@ typedef struct pcap_writer {
     uint32_t start_ms;     /* the monotonic time of the first chunk */
     int started;
     uint32_t chunks, bytes;
-    int error; /* errno of the first failure, 0 if none */
+    int error;    /* errno of the first failure, 0 if none: nothing is written after it */
+    int64_t kept; /* the file's size up to its last whole record; -1: unknown, or could not be cut back to it */
 } pcap_writer;
 
-/** Start writing to @p f (the writer then owns it: pcap_writer_close() closes it). 0, or -1 with w->error. */
+/**
+ * Start writing to @p f, made unbuffered (call it before any other use of @p f): each record
+ * reaches the file at once. The writer then owns @p f (pcap_writer_close() closes it) unless
+ * this fails with w->dumper NULL. 0, or -1 with w->error.
+ */
 int pcap_writer_open(pcap_writer *w, FILE *f, pcap_kind kind, const pcap_ends *ends);
-/** Append one chunk: an xf_tap_fn with the writer as user. Errors are kept in w->error. */
+/** Append one chunk: an xf_tap_fn with the writer as user. The first failed write's errno is
+ *  kept in w->error, the file is cut back to its last whole record, and nothing more is written. */
 void pcap_writer_chunk(void *writer, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
 /** Flush and close (the FILE too). @return 0, or the errno of the first failure. */
 int pcap_writer_close(pcap_writer *w);

@@ -1,0 +1,133 @@
+/*
+ * bg_proc.c - the program in the background (see bg_proc.h).
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include "bg_proc.h"
+
+#include <fcntl.h>
+#include <setjmp.h>
+#include <signal.h>
+#include <spawn.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+extern char **environ;
+
+double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec / 1e9;
+}
+
+void sleep_ms(long ms)
+{
+    struct timespec t;
+    t.tv_sec = ms / 1000;
+    t.tv_nsec = (ms % 1000) * 1000000L;
+    nanosleep(&t, NULL);
+}
+
+/* Spawn with the arguments of @p ap; @p max_file_bytes > 0: the child's RLIMIT_FSIZE, set in this
+ * process only around the spawn (the child inherits it; the test's own files are not limited). */
+static void bg_spawn(bg *b, long max_file_bytes, const char *tag, va_list ap)
+{
+    char *argv[40];
+    int argc = 0;
+    posix_spawn_file_actions_t fa;
+    struct rlimit was, lim;
+    const char *a;
+    int rc;
+    snprintf(b->out, sizeof(b->out), "/tmp/xfgcu-bg-%ld-%s.out", (long)getpid(), tag);
+    snprintf(b->err, sizeof(b->err), "/tmp/xfgcu-bg-%ld-%s.err", (long)getpid(), tag);
+    argv[argc++] = (char *)XFGCU_EXE;
+    while ((a = va_arg(ap, const char *)) != NULL && argc < 38) {
+        argv[argc++] = (char *)a;
+    }
+    argv[argc] = NULL;
+    assert_int_equal(posix_spawn_file_actions_init(&fa), 0);
+    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 1, b->out, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    posix_spawn_file_actions_addopen(&fa, 2, b->err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    assert_int_equal(getrlimit(RLIMIT_FSIZE, &was), 0);
+    lim = was;
+    if (max_file_bytes > 0) {
+        lim.rlim_cur = (rlim_t)max_file_bytes;
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+    }
+    rc = posix_spawn(&b->pid, XFGCU_EXE, &fa, NULL, argv, environ);
+    assert_int_equal(setrlimit(RLIMIT_FSIZE, &was), 0);
+    posix_spawn_file_actions_destroy(&fa);
+    assert_int_equal(rc, 0);
+}
+
+void bg_start(bg *b, const char *tag, ...)
+{
+    va_list ap;
+    va_start(ap, tag);
+    bg_spawn(b, 0, tag, ap);
+    va_end(ap);
+}
+
+void bg_start_limited(bg *b, long max_file_bytes, const char *tag, ...)
+{
+    va_list ap;
+    va_start(ap, tag);
+    bg_spawn(b, max_file_bytes, tag, ap);
+    va_end(ap);
+}
+
+char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *text = calloc(1, 1 << 20);
+    size_t n;
+    assert_non_null(f);
+    assert_non_null(text);
+    n = fread(text, 1, (1 << 20) - 1, f);
+    text[n] = '\0';
+    fclose(f);
+    return text;
+}
+
+tool_result bg_finish(bg *b, long limit_ms)
+{
+    tool_result r;
+    int wstatus = 0;
+    double end = now_s() + (double)limit_ms / 1000.0;
+    pid_t got;
+    while ((got = waitpid(b->pid, &wstatus, WNOHANG)) == 0 && now_s() < end) {
+        sleep_ms(10);
+    }
+    if (got == 0) {
+        kill(b->pid, SIGKILL);
+        waitpid(b->pid, &wstatus, 0);
+        print_error("%s did not end in %ld ms\n", b->out, limit_ms);
+    }
+    r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
+    r.out = slurp(b->out);
+    r.err = slurp(b->err);
+    r.out_len = strlen(r.out);
+    r.err_len = strlen(r.err);
+    unlink(b->out);
+    unlink(b->err);
+    b->pid = 0;
+    assert_int_not_equal(got, 0);
+    return r;
+}
+
+void bg_stop(bg *b)
+{
+    tool_result r;
+    kill(b->pid, SIGTERM);
+    r = bg_finish(b, 5000);
+    tool_result_free(&r);
+}

@@ -1,0 +1,38 @@
+/*
+ * bg_proc.h - the program in the background for the tests that act while it runs (stop a
+ * simulator under it, watch what it writes): started with posix_spawn, stdout and stderr to
+ * files, waited for with a limit; and the clock and sleep those tests use.
+ */
+#ifndef XFGCU_BG_PROC_H
+#define XFGCU_BG_PROC_H
+
+#include <stddef.h>
+#include <sys/types.h>
+
+#include "run_tool.h"
+
+/** A program in the background, its stdout and stderr to files. */
+typedef struct bg {
+    pid_t pid;
+    char out[96], err[96];
+} bg;
+
+/** Start xfgcu with the arguments (NULL-terminated); @p tag names its output files. */
+void bg_start(bg *b, const char *tag, ...);
+/**
+ * The same, with a limit on the size of the files it writes (RLIMIT_FSIZE, bytes): a write
+ * beyond it fails with EFBIG, as on a full disk, on any machine and without privileges.
+ */
+void bg_start_limited(bg *b, long max_file_bytes, const char *tag, ...);
+/** Wait for it (SIGKILL after @p limit_ms, which fails the test), read what it wrote, remove the files. */
+tool_result bg_finish(bg *b, long limit_ms);
+/** SIGTERM, then bg_finish() with 5 s; its output is dropped. */
+void bg_stop(bg *b);
+
+/** The whole file at @p path (at most 1 MiB), NUL-terminated; free() it. */
+char *slurp(const char *path);
+/** Seconds on the monotonic clock. */
+double now_s(void);
+void sleep_ms(long ms);
+
+#endif /* XFGCU_BG_PROC_H */

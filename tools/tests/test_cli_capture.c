@@ -1,0 +1,316 @@
+/*
+ * test_cli_capture.c - capture keeps what it captured, always (issue 30): a write that fails (a
+ * file size limit, RLIMIT_FSIZE, which fails a write with EFBIG as a full disk fails it with
+ * ENOSPC, on any machine and without privileges) stops the capture at once, with exit 2, one
+ * line naming the part file, the part file a valid capture cut at its last whole line or
+ * record, and FILE as it was even with --force; a GCU killed during the capture (TCP, a pty,
+ * UDP) ends it with exit 3, the same way. Text and pcap.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include <glob.h>
+#include <setjmp.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "bg_proc.h"
+#include "run_tool.h"
+#include "sim_proc.h"
+
+#define LONG_S     "30"  /* a --duration the capture must not reach: it ends on the failure */
+#define LONG_LIMIT 30.0  /* ... in seconds, for the time it says it captured */
+#define WAIT_MS    20000 /* for the program to end: far more than it takes, far less than LONG_S */
+
+/* ---- helpers ---------------------------------------------------------------------------- */
+
+typedef struct place {
+    char dir[64];
+    char file[128]; /* FILE: in dir */
+} place;
+
+static void place_make(place *p, int existing)
+{
+    FILE *f;
+    snprintf(p->dir, sizeof(p->dir), "/tmp/xfgcu-capture-XXXXXX");
+    assert_non_null(mkdtemp(p->dir));
+    snprintf(p->file, sizeof(p->file), "%s/run.cap", p->dir);
+    if (existing) {
+        f = fopen(p->file, "w");
+        assert_non_null(f);
+        fputs("precious\n", f);
+        assert_int_equal(fclose(f), 0);
+    }
+}
+
+static void place_remove(const place *p)
+{
+    char cmd[128];
+    snprintf(cmd, sizeof(cmd), "rm -rf '%s'", p->dir); /* ours: made by place_make() */
+    assert_int_equal(system(cmd), 0);
+}
+
+/* The one FILE.partXXXXXX there is, into @p part; 0 when there is none. */
+static int part_of(const place *p, char *part, size_t cap)
+{
+    char pattern[160];
+    glob_t g;
+    int n;
+    snprintf(pattern, sizeof(pattern), "%s.part*", p->file);
+    if (glob(pattern, 0, NULL, &g) != 0) {
+        return 0;
+    }
+    n = (int)g.gl_pathc;
+    assert_int_equal(n, 1);
+    snprintf(part, cap, "%s", g.gl_pathv[0]);
+    globfree(&g);
+    return 1;
+}
+
+static long file_size(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 ? (long)st.st_size : -1;
+}
+
+/* FILE as the test left it: "precious" (@p existing), or not there at all. */
+static void assert_file_untouched(const place *p, int existing)
+{
+    if (existing) {
+        char *text = slurp(p->file);
+        assert_string_equal(text, "precious\n");
+        free(text);
+    } else {
+        assert_int_equal(access(p->file, F_OK), -1);
+    }
+}
+
+/*
+ * The one failure line: exit @p status, nothing more on stderr, holding every needle, naming
+ * the part file as where the capture is kept and saying it captured less than LONG_S seconds
+ * (it stopped at the failure); FILE as it was. Returns the part file's path in @p part.
+ */
+static void assert_kept(const tool_result *r, int status, const place *p, int existing, char *part, size_t cap, ...)
+{
+    char named[256] = "";
+    double took = -1.0;
+    const char *at = strstr(r->err, "what was captured (");
+    va_list ap;
+    const char *needle;
+    if (r->status != status || count_lines(r->err) != 1u || strncmp(r->err, "xfgcu: capture: ", 16) != 0 ||
+        at == NULL) {
+        print_error("status %d (want %d)\nstdout: %s\nstderr: %s\n", r->status, status, r->out, r->err);
+        fail();
+    }
+    va_start(ap, cap);
+    while ((needle = va_arg(ap, const char *)) != NULL) {
+        if (strstr(r->err, needle) == NULL) {
+            print_error("stderr lacks \"%s\": %s", needle, r->err);
+            fail();
+        }
+    }
+    va_end(ap);
+    assert_non_null(strstr(r->err, existing ? "run.cap is as it was\n" : "run.cap is not written\n"));
+    assert_int_equal(sscanf(at, "what was captured (%lf s, ", &took), 1);
+    assert_true(took >= 0.0 && took < LONG_LIMIT);
+    at = strstr(at, " is kept as ");
+    assert_non_null(at);
+    assert_int_equal(sscanf(at, " is kept as %255[^;]", named), 1);
+    assert_true(part_of(p, part, cap));
+    assert_string_equal(named, part);
+    assert_file_untouched(p, existing);
+}
+
+/* The part file is a whole capture: replay reads it to its end, and it holds packets both
+ * ways; a text one ends with a whole line. */
+static void assert_valid_capture(const char *part, int pcap)
+{
+    tool_result r = run_tool(NULL, "replay", part, "--brief", NULL);
+    unsigned host = 0, gcu = 0;
+    const char *sum;
+    if (r.status != 0 || r.err_len != 0u) {
+        print_error("replay %s: status %d\nstderr: %s\n", part, r.status, r.err);
+        fail();
+    }
+    sum = strstr(r.out, " packets: ");
+    assert_non_null(sum);
+    assert_int_equal(sscanf(sum, " packets: %u host to GCU, %u GCU to host", &host, &gcu), 2);
+    assert_true(host >= 1u && gcu >= 1u);
+    tool_result_free(&r);
+    if (!pcap) {
+        char *text = slurp(part);
+        size_t n = strlen(text);
+        assert_true(n > 0u && text[n - 1u] == '\n');
+        free(text);
+    }
+}
+
+/* The link options of @p s, then "capture", [--pcap], [--force] */
+static int capture_args(const sim_proc *s, int pcap, int force, const char **args)
+{
+    int n = sim_link_args(s, args);
+    args[n++] = "capture";
+    if (pcap) {
+        args[n++] = "--pcap";
+    }
+    if (force) {
+        args[n++] = "--force";
+    }
+    return n;
+}
+
+/* bg_start_limited() with the link options of @p s, "capture" and its arguments. */
+static void start_capture(bg *b, long limit, const sim_proc *s, int pcap, int force, const char *file, const char *a1,
+                          const char *a2)
+{
+    const char *args[16];
+    int n = capture_args(s, pcap, force, args);
+    assert_true(n <= 9);
+    args[n++] = file;
+    args[n++] = a1;
+    args[n++] = a2;
+    while (n < 12) {
+        args[n++] = NULL;
+    }
+    bg_start_limited(b, limit, "capture", args[0], args[1], args[2], args[3], args[4], args[5], args[6], args[7],
+                     args[8], args[9], args[10], args[11], NULL);
+}
+
+/* ---- a write that fails ----------------------------------------------------------------- */
+
+#define LIMIT 4096L /* bytes: a few dozen chunks */
+
+/* Capture for LONG_S seconds into a file that may not grow past LIMIT: it stops at the first
+ * failed write, exit 2, the part kept with what fit, FILE as it was (@p existing, with --force). */
+static void full_case(sim_proc *s, int pcap, int existing)
+{
+    place p;
+    char part[256];
+    bg b;
+    tool_result r;
+    place_make(&p, existing);
+    start_capture(&b, LIMIT, s, pcap, existing, p.file, "--duration", LONG_S);
+    r = bg_finish(&b, WAIT_MS);
+    assert_kept(&r, 2, &p, existing, part, sizeof(part), "capture: cannot write ", "File too large", NULL);
+    assert_int_equal(r.out_len, 0u);
+    assert_true(file_size(part) <= LIMIT && file_size(part) >= LIMIT / 2); /* what fit is there */
+    assert_valid_capture(part, pcap);
+    tool_result_free(&r);
+    place_remove(&p);
+}
+
+static void test_full_text(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    full_case(s, 0, 1);
+    full_case(s, 0, 0);
+}
+
+static void test_full_pcap(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    full_case(s, 1, 1);
+    full_case(s, 1, 0);
+}
+
+/* The write fails while COMMAND runs: the command, sent, is let finish and its result printed;
+ * then the capture ends the same way. */
+static void test_full_during_command(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    static const long limits[2] = {600L, 300L}; /* text, pcap: a header and a chunk or two */
+    int pcap;
+    for (pcap = 0; pcap < 2; pcap++) {
+        place p;
+        char part[256];
+        bg b;
+        tool_result r;
+        place_make(&p, 1);
+        start_capture(&b, limits[pcap], s, pcap, 1, p.file, "shutter", NULL);
+        r = bg_finish(&b, WAIT_MS);
+        assert_string_equal(r.out, "ok\n");
+        assert_kept(&r, 2, &p, 1, part, sizeof(part), "capture: cannot write ", "File too large", NULL);
+        assert_true(file_size(part) <= limits[pcap] && file_size(part) > 0);
+        tool_result_free(&r);
+        place_remove(&p);
+    }
+}
+
+/* ---- a GCU that dies ---------------------------------------------------------------------- */
+
+/* Wait until the capture has written @p bytes to its part file (it is running, with chunks). */
+static void wait_for_part(const place *p, long bytes)
+{
+    char part[256];
+    double end = now_s() + 10.0;
+    while (now_s() < end) {
+        if (part_of(p, part, sizeof(part)) && file_size(part) >= bytes) {
+            return;
+        }
+        sleep_ms(20);
+    }
+    fail_msg("the capture wrote no %ld bytes to %s.part* within 10 s", bytes, p->file);
+}
+
+/* Start a simulator on @p link, capture it for LONG_S seconds (--force over an existing FILE), kill
+ * the simulator once chunks are in the file: exit 3, the part kept, FILE as it was. */
+static void killed_case(sim_proc *s, sim_link link, int pcap, const char *why)
+{
+    place p;
+    char part[256];
+    bg b;
+    tool_result r;
+    place_make(&p, 1);
+    sim_start(s, link, NULL);
+    start_capture(&b, 0, s, pcap, 1, p.file, "--duration", LONG_S);
+    wait_for_part(&p, 1000);
+    assert_int_equal(kill(s->pid, SIGKILL), 0);
+    (void)sim_stop(s); /* reaps it */
+    r = bg_finish(&b, WAIT_MS);
+    assert_kept(&r, 3, &p, 1, part, sizeof(part), "capture: link lost on ", why, NULL);
+    assert_int_equal(r.out_len, 0u);
+    assert_valid_capture(part, pcap);
+    tool_result_free(&r);
+    place_remove(&p);
+}
+
+static void test_killed_tcp(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    killed_case(s, SIM_TCP, 0, "the GCU closed the connection");
+    killed_case(s, SIM_TCP, 1, "the GCU closed the connection");
+}
+
+static void test_killed_pty(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    killed_case(s, SIM_PTY, 0, "hung up");
+    killed_case(s, SIM_PTY, 1, "hung up");
+}
+
+/* UDP has no connection: a GCU gone is a GCU that stopped answering (the client's link down). */
+static void test_killed_udp(void **state)
+{
+    killed_case((sim_proc *)*state, SIM_UDP, 0, "the GCU stopped answering");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup_teardown(test_full_text, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_full_pcap, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_full_during_command, sim_setup_tcp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_killed_tcp, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_killed_pty, sim_setup_none, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_killed_udp, sim_setup_none, sim_teardown),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
