@@ -36,31 +36,42 @@ void sleep_ms(long ms)
     nanosleep(&t, NULL);
 }
 
-/* Spawn with the arguments of @p ap; @p max_file_bytes > 0: the child's RLIMIT_FSIZE, set in this
- * process only around the spawn (the child inherits it; the test's own files are not limited). */
-static void bg_spawn(bg *b, long max_file_bytes, const char *tag, va_list ap)
+/* Spawn with the arguments of @p ap. A file size limit is set in this process only around the
+ * spawn (the child inherits it; the test's own files are not limited). */
+static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
 {
     char *argv[40];
-    int argc = 0;
+    int argc = 0, rc;
     posix_spawn_file_actions_t fa;
     struct rlimit was, lim;
     const char *a;
-    int rc;
+    FILE *f;
     snprintf(b->out, sizeof(b->out), "/tmp/xfgcu-bg-%ld-%s.out", (long)getpid(), tag);
     snprintf(b->err, sizeof(b->err), "/tmp/xfgcu-bg-%ld-%s.err", (long)getpid(), tag);
+    f = fopen(b->out, "w"); /* there for bg_finish() even when stdout goes elsewhere */
+    assert_non_null(f);
+    fclose(f);
     argv[argc++] = (char *)XFGCU_EXE;
     while ((a = va_arg(ap, const char *)) != NULL && argc < 38) {
         argv[argc++] = (char *)a;
     }
     argv[argc] = NULL;
     assert_int_equal(posix_spawn_file_actions_init(&fa), 0);
-    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 1, b->out, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (o->stdin_fd >= 0) {
+        posix_spawn_file_actions_adddup2(&fa, o->stdin_fd, 0);
+    } else {
+        posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+    }
+    if (o->stdout_fd >= 0) {
+        posix_spawn_file_actions_adddup2(&fa, o->stdout_fd, 1);
+    } else {
+        posix_spawn_file_actions_addopen(&fa, 1, b->out, O_WRONLY, 0);
+    }
     posix_spawn_file_actions_addopen(&fa, 2, b->err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
     assert_int_equal(getrlimit(RLIMIT_FSIZE, &was), 0);
     lim = was;
-    if (max_file_bytes > 0) {
-        lim.rlim_cur = (rlim_t)max_file_bytes;
+    if (o->max_file_bytes > 0) {
+        lim.rlim_cur = (rlim_t)o->max_file_bytes;
         assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
     }
     rc = posix_spawn(&b->pid, XFGCU_EXE, &fa, NULL, argv, environ);
@@ -71,17 +82,19 @@ static void bg_spawn(bg *b, long max_file_bytes, const char *tag, va_list ap)
 
 void bg_start(bg *b, const char *tag, ...)
 {
+    static const bg_opts plain = {0, -1, -1};
     va_list ap;
     va_start(ap, tag);
-    bg_spawn(b, 0, tag, ap);
+    bg_spawn(b, &plain, tag, ap);
     va_end(ap);
 }
 
-void bg_start_limited(bg *b, long max_file_bytes, const char *tag, ...)
+void bg_start_with(bg *b, const bg_opts *o, const char *tag, ...)
 {
+    static const bg_opts plain = {0, -1, -1};
     va_list ap;
     va_start(ap, tag);
-    bg_spawn(b, max_file_bytes, tag, ap);
+    bg_spawn(b, o != NULL ? o : &plain, tag, ap);
     va_end(ap);
 }
 

@@ -19,11 +19,18 @@ typedef struct bg {
 
 /** Start xfgcu with the arguments (NULL-terminated); @p tag names its output files. */
 void bg_start(bg *b, const char *tag, ...);
-/**
- * The same, with a limit on the size of the files it writes (RLIMIT_FSIZE, bytes): a write
- * beyond it fails with EFBIG, as on a full disk, on any machine and without privileges.
- */
-void bg_start_limited(bg *b, long max_file_bytes, const char *tag, ...);
+
+/** What bg_start_with() changes. */
+typedef struct bg_opts {
+    long max_file_bytes; /**< > 0: a limit on the size of the files it writes (RLIMIT_FSIZE): a write beyond
+                              it fails with EFBIG, as on a full disk with ENOSPC, on any machine and without
+                              privileges */
+    int stdin_fd;  /**< >= 0: its stdin (else /dev/null) */
+    int stdout_fd; /**< >= 0: its stdout, such as a pipe or /dev/full (else a file bg_finish() reads) */
+} bg_opts;
+
+/** bg_start() with @p o (NULL: as bg_start()). */
+void bg_start_with(bg *b, const bg_opts *o, const char *tag, ...);
 /** Wait for it (SIGKILL after @p limit_ms, which fails the test), read what it wrote, remove the files. */
 tool_result bg_finish(bg *b, long limit_ms);
 /** SIGTERM, then bg_finish() with 5 s; its output is dropped. */

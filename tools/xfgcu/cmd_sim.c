@@ -405,7 +405,8 @@ static void run_sim(sim_run *s, const sim_args *a)
     xf_sim *sims[1];
     uint32_t start = xf_posix_now_ms(), elapsed = 0;
     sims[0] = &s->sim;
-    while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration)) {
+    /* a log (stdout) that cannot be written ends the simulator: main() says so */
+    while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration) && !ferror(stdout)) {
         (void)xf_posix_poll(NULL, 0, sims, 1, 50);
         elapsed = xf_ms_since(xf_posix_now_ms(), start);
         if (a->verbose) {
