@@ -139,56 +139,137 @@ static void test_reordering_link(void **state)
     assert_int_equal(shutters_executed(s, log, sizeof(log), &len), 12);
 }
 
-/* send --json: one object with the documented keys and both times; --trace: on an idle link a
- * send is two packets, a null and the command (it returns as soon as the result is in), each
- * on one stderr line, and the replies too. */
+/* Run `XFGCU_EXE ARGS` through the shell with stdin redirected as @p redirect; returns the exit
+ * status, the output (stdout and stderr) in @p out. */
+static int shell_run(const char *args, const char *redirect, char *out, size_t cap)
+{
+    char cmd[512];
+    FILE *p;
+    size_t n;
+    int st;
+    snprintf(cmd, sizeof(cmd), "'%s' %s %s 2>&1", XFGCU_EXE, args, redirect);
+    p = popen(cmd, "r");
+    assert_non_null(p);
+    n = fread(out, 1, cap - 1u, p);
+    out[n] = '\0';
+    st = pclose(p);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* Count the lines of a --trace that start with "trace " and hold @p what. */
+static unsigned trace_lines(const char *out, const char *what)
+{
+    unsigned n = 0;
+    const char *at = out;
+    char line[512];
+    while (*at != '\0') {
+        size_t len = strcspn(at, "\n");
+        snprintf(line, sizeof(line), "%.*s", (int)len, at);
+        at += len + (at[len] == '\n');
+        n += (strncmp(line, "trace ", 6) == 0 && strstr(line, what) != NULL);
+    }
+    return n;
+}
+
+/* The state of a send's trace, line by line (check_trace_line()). */
+typedef struct send_trace {
+    unsigned cmd_sent, null_replies;
+    int result;      /* the reply with the command's state has come */
+    int just_result; /* ... on the line before */
+    json_t *json;    /* send --json's line */
+} send_trace;
+
+static void check_trace_line(send_trace *t, const char *line, const char *all)
+{
+    int was_result = t->just_result;
+    t->just_result = 0;
+    if (line[0] == '{') {
+        if (!was_result || t->json != NULL) {
+            fail_msg("the result printed other than at once after the reply with its state:\n%s", all);
+        }
+        t->json = parse_line(line);
+    } else if (strncmp(line, "xfgcu: note: ", 13) == 0) {
+        return; /* settling that takes long on a loaded machine says so */
+    } else if (strncmp(line, "trace ", 6) != 0) {
+        fail_msg("a line that is neither the trace nor the result: %s\n%s", line, all);
+    } else if (strstr(line, " > shutter ") != NULL) {
+        if (t->null_replies == 0 || t->result) {
+            fail_msg("the command sent before a null was answered, or after its result:\n%s", all);
+        }
+        t->cmd_sent++;
+    } else if (strstr(line, " > null ") != NULL && t->cmd_sent > 0 && !t->result) {
+        fail_msg("a null between the command's packets, before its result:\n%s", all);
+    } else if (strstr(line, " < shutter (0x20)") != NULL && strstr(line, ", state 0x00") != NULL) {
+        t->just_result = !t->result;
+        t->result = 1;
+    } else if (strstr(line, " < null (0x00)") != NULL) {
+        t->null_replies++;
+    }
+}
+
+/*
+ * `xfgcu LINK send shutter --json --trace [--raw]` (the link options after COMMAND), stdout and
+ * stderr in one stream, checked in the protocol's order whatever the machine's load (a slow reply
+ * only adds packets): nulls until one is answered, then the command in every packet until a reply
+ * carries its state, the result printed at once after that reply (nothing sent in between), then
+ * no command again. Returns the output; *json the result's object, its packets the trace's.
+ */
+static char *send_traced(const sim_proc *s, int raw, json_t **json)
+{
+    static char out[1 << 16];
+    char args[256];
+    send_trace t;
+    const char *at = out;
+    char line[512];
+    snprintf(args, sizeof(args), "send shutter --json --tcp 127.0.0.1:%s --trace%s", s->port, raw ? " --raw" : "");
+    assert_int_equal(shell_run(args, "</dev/null", out, sizeof(out)), 0);
+    memset(&t, 0, sizeof(t));
+    while (*at != '\0') {
+        size_t len = strcspn(at, "\n");
+        snprintf(line, sizeof(line), "%.*s", (int)len, at);
+        at += len + (at[len] == '\n');
+        check_trace_line(&t, line, out);
+    }
+    assert_true(t.result && t.json != NULL);
+    assert_int_equal(int_key(t.json, "packets"), t.cmd_sent);
+    *json = t.json;
+    return out;
+}
+
+/* send --json: one object with the documented keys and both times; --trace: every packet sent
+ * and received on one stderr line each, in the protocol's order (send_traced()), the packets
+ * counted in the JSON the ones the trace shows; a reply's attitude in degrees, or with --raw in
+ * the wire's integers (the unit rule). */
 static void test_send_json_and_trace(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
-    const char *link[8];
     const char *keys[] = {"time_mono",      "time_utc", "status",     "order",   "order_name", "state",
                           "failed_cameras", "packets",  "elapsed_ms", "command", "link"};
-    const char *args[16];
     tool_result r;
     json_t *o;
+    const char *out;
     size_t i;
-    int n;
     sim_start(s, SIM_TCP, NULL);
-    n = sim_link_args(s, link);
-    /* the link options after COMMAND, too */
-    args[0] = "send";
-    args[1] = "shutter";
-    args[2] = "--json";
-    for (i = 0; i < (size_t)n; i++) {
-        args[3 + i] = link[i];
-    }
-    args[3 + n] = "--trace";
-    r = run_tool_argv(4 + n, args, NULL);
+    r = sim_run_on(s, "point", "--pitch", "-30", "--yaw", "45", NULL); /* angles that show their unit */
     assert_int_equal(r.status, 0);
-    assert_int_equal(count_lines(r.out), 1);
-    o = parse_line(r.out);
+    tool_result_free(&r);
+    out = send_traced(s, 0, &o);
     for (i = 0; i < sizeof(keys) / sizeof(keys[0]); i++) {
         assert_non_null(json_object_get(o, keys[i]));
     }
     assert_string_equal(str_key(o, "status"), "ok");
     assert_string_equal(str_key(o, "order_name"), "shutter");
-    assert_int_equal(int_key(o, "packets"), 1);
     assert_int_equal(strlen(str_key(o, "time_utc")), 24); /* 2026-11-26T10:00:00.123Z */
     json_decref(o);
-    assert_non_null(strstr(r.err, "trace 0.0"));
-    assert_non_null(strstr(r.err, " > null (0x00), 72 bytes\n"));
-    assert_non_null(strstr(r.err, " > shutter (0x20), 73 bytes\n"));
-    assert_non_null(strstr(r.err, " < shutter (0x20), 73 bytes, mode"));
-    {
-        unsigned sent = 0;
-        const char *at = r.err;
-        while ((at = strstr(at, " > ")) != NULL) {
-            sent++;
-            at++;
-        }
-        assert_int_equal(sent, 2);
-    }
-    tool_result_free(&r);
+    assert_true(strncmp(out, "trace 0.0", 9) == 0);
+    assert_non_null(strstr(out, " > null (0x00), 72 bytes\n"));
+    assert_non_null(strstr(out, " > shutter (0x20), 73 bytes\n"));
+    assert_non_null(strstr(out, " < shutter (0x20), 73 bytes, mode 0x14, roll 0.00 pitch -30.00 yaw 45.00 deg, "));
+    assert_int_equal(trace_lines(out, "cam_pitch"), 0);
+    out = send_traced(s, 1, &o);
+    json_decref(o);
+    assert_non_null(strstr(out, " < shutter (0x20), 73 bytes, mode 0x14, cam_roll 0 cam_pitch -3000 cam_yaw 4500, "));
+    assert_int_equal(trace_lines(out, " deg"), 0);
 }
 
 /* A usage error: exit 2, nothing on stdout, one line on stderr holding every needle. */
@@ -243,23 +324,6 @@ static void test_impossible_settings(void **state)
     r = run_tool(NULL, "encode", "zoom-to", "--rate", "5.5", NULL);
     assert_int_equal(r.status, 0);
     tool_result_free(&r);
-}
-
-/* Run `XFGCU_EXE ARGS` through the shell with stdin redirected as @p redirect; returns the exit
- * status, the output (stdout and stderr) in @p out. */
-static int shell_run(const char *args, const char *redirect, char *out, size_t cap)
-{
-    char cmd[512];
-    FILE *p;
-    size_t n;
-    int st;
-    snprintf(cmd, sizeof(cmd), "'%s' %s %s 2>&1", XFGCU_EXE, args, redirect);
-    p = popen(cmd, "r");
-    assert_non_null(p);
-    n = fread(out, 1, cap - 1u, p);
-    out[n] = '\0';
-    st = pclose(p);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
 /* Read errors on stdin are errors, not an empty input (encode --json - exited 0, silent). */
