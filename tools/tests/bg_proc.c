@@ -111,6 +111,30 @@ char *slurp(const char *path)
     return text;
 }
 
+int bg_wait_output(const bg *b, const char *needle, unsigned count, double seconds)
+{
+    double end = now_s() + seconds;
+    for (;;) {
+        char *text = slurp(b->out);
+        const char *at = text;
+        unsigned n = 0;
+        while ((at = strstr(at, needle)) != NULL) {
+            n++;
+            at++;
+        }
+        free(text);
+        if (n >= count) {
+            return 1;
+        }
+        if (now_s() >= end) {
+            print_error("%s: no %u times \"%s\" within %.0f s (%u)\n", b->out, count, needle, seconds, n);
+            fail();
+            return 0;
+        }
+        sleep_ms(20);
+    }
+}
+
 tool_result bg_finish(bg *b, long limit_ms)
 {
     tool_result r;

@@ -36,6 +36,13 @@ tool_result bg_finish(bg *b, long limit_ms);
 /** SIGTERM, then bg_finish() with 5 s; its output is dropped. */
 void bg_stop(bg *b);
 
+/**
+ * Wait until the program's stdout (its file) holds @p needle at least @p count times, for at most
+ * @p seconds: the tests act on what a program has done, not on how long it usually takes.
+ * @return 1, or 0 when it did not come in time (which fails the test).
+ */
+int bg_wait_output(const bg *b, const char *needle, unsigned count, double seconds);
+
 /** The whole file at @p path (at most 1 MiB), NUL-terminated; free() it. */
 char *slurp(const char *path);
 /** Seconds on the monotonic clock. */

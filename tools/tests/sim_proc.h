@@ -26,11 +26,11 @@ typedef struct sim_proc {
 /**
  * Start `xfgcu sim` on @p link (port 0: any free one) with @p extra
  * arguments (NULL-terminated list, may be empty) and wait for its ready
- * line (5 s at most; a failure fails the test).
+ * line (20 s at most: far more than it takes on any load; a failure fails the test).
  */
 void sim_start(sim_proc *s, sim_link link, ...);
 
-/** Stop it (SIGTERM, then SIGKILL after 5 s) and reap it; returns its exit status (128 + signal if killed). */
+/** Stop it (SIGTERM, then SIGKILL after 20 s) and reap it; returns its exit status (128 + signal if killed). */
 int sim_stop(sim_proc *s);
 
 /** The link options that reach it: "--tcp 127.0.0.1:PORT", UDP with --gcu-port and --local-port 0, or --serial PATH. */
