@@ -464,14 +464,16 @@ static void test_monitor_terminal(void **state)
 /* ---- monitor, plain lines ------------------------------------------------------------------- */
 
 /* Each plain line (one a second) gives the age of its figures; once the simulator stops, the
- * link reads down and the last attitude is shown with an age of more than a second, and never
- * more than the monitor has run. Each step waits for what the monitor has shown. */
+ * link reads down (at once on TCP: the connection closes) and the last attitude is shown with an
+ * age that grows with the time (no newer one came), never more than the monitor has run. Each
+ * step waits for what the monitor has shown. */
 static void test_monitor_plain_ages(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
     const char *args[8];
     const char *line;
-    double age = 0.0, t = 0.0, prev = -1.0;
+    double age[2] = {0.0, 0.0}, at[2] = {0.0, 0.0}, t = 0.0, prev = -1.0;
+    int downs = 0;
     bg m;
     tool_result r;
     sim_start(s, SIM_TCP, NULL);
@@ -479,7 +481,7 @@ static void test_monitor_plain_ages(void **state)
     bg_start(&m, "plain", args[0], args[1], "monitor", NULL);
     assert_true(bg_wait_output(&m, " s  link up, ", 1, 20.0));
     assert_int_equal(sim_stop(s), 0);
-    assert_true(bg_wait_output(&m, " s  link down, ", 1, 20.0));
+    assert_true(bg_wait_output(&m, " s  link down, ", 2, 20.0));
     kill(m.pid, SIGTERM);
     r = bg_finish(&m, 10000);
     assert_int_equal(r.status, 0);
@@ -487,18 +489,21 @@ static void test_monitor_plain_ages(void **state)
     assert_non_null(strstr(r.out, " deg (age 0.0"));
     assert_non_null(strstr(r.out, "  no target (age 0.0"));
     for (line = r.out; *line != '\0'; line += strcspn(line, "\n"), line += (*line == '\n')) {
+        const char *deg = strstr(line, " deg (age ");
         assert_int_equal(sscanf(line, "%lf s ", &t), 1);
         assert_true(t >= prev + 0.9); /* one line a second */
         prev = t;
         assert_non_null(strstr(line, " s  "));
-        if (strncmp(strstr(line, " s  ") + 4, "link down, ", 11) == 0) {
-            const char *deg = strstr(line, " deg (age ");
-            assert_non_null(deg);
-            assert_int_equal(sscanf(deg, " deg (age %lf s)", &age), 1);
-            assert_true(age >= 1.0 && age <= t + 0.1);
+        assert_non_null(deg);
+        if (strncmp(strstr(line, " s  ") + 4, "link down, ", 11) == 0 && downs < 2) {
+            assert_int_equal(sscanf(deg, " deg (age %lf s)", &age[downs]), 1);
+            at[downs++] = t;
         }
     }
-    assert_true(age >= 1.0); /* a line said link down */
+    assert_int_equal(downs, 2);
+    assert_true(age[0] >= 0.0 && age[0] <= at[0] + 0.1);
+    assert_true(fabs((age[1] - age[0]) - (at[1] - at[0])) <= 0.15); /* the same attitude, older */
+    assert_true(age[1] >= 0.9);
     tool_result_free(&r);
 }
 
