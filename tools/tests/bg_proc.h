@@ -25,8 +25,8 @@ typedef struct bg_opts {
     long max_file_bytes; /**< > 0: a limit on the size of the files it writes (RLIMIT_FSIZE): a write beyond
                               it fails with EFBIG, as on a full disk with ENOSPC, on any machine and without
                               privileges */
-    int stdin_fd;  /**< >= 0: its stdin (else /dev/null) */
-    int stdout_fd; /**< >= 0: its stdout, such as a pipe or /dev/full (else a file bg_finish() reads) */
+    int stdin_fd;        /**< >= 0: its stdin (else /dev/null) */
+    int stdout_fd;       /**< >= 0: its stdout, such as a pipe or /dev/full (else a file bg_finish() reads) */
 } bg_opts;
 
 /** bg_start() with @p o (NULL: as bg_start()). */

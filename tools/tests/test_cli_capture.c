@@ -303,10 +303,7 @@ static void test_killed_pty(void **state)
 }
 
 /* UDP has no connection: a GCU gone is a GCU that stopped answering (the client's link down). */
-static void test_killed_udp(void **state)
-{
-    killed_case((sim_proc *)*state, SIM_UDP, 0, "the GCU stopped answering");
-}
+static void test_killed_udp(void **state) { killed_case((sim_proc *)*state, SIM_UDP, 0, "the GCU stopped answering"); }
 
 /* A pipe whose ends the program does not inherit (but the one made its stdin or stdout). */
 static void make_pipe(int fds[2])

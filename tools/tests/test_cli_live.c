@@ -233,8 +233,8 @@ static void test_monitor_json_events(void **state)
     (void)state;
     free_port(SOCK_DGRAM, port, sizeof(port));
     bg_start(&sim, "events-sim", "sim", "--udp", port, "--duration", "40", NULL);
-    bg_start(&m, "events", "--udp", "127.0.0.1", "--gcu-port", port, "--local-port", "0", "monitor", "--json",
-             "--wait", "10", NULL);
+    bg_start(&m, "events", "--udp", "127.0.0.1", "--gcu-port", port, "--local-port", "0", "monitor", "--json", "--wait",
+             "10", NULL);
     assert_true(bg_wait_output(&m, "\"direction\":\"gcu\"", 20, 20.0));
     bg_stop(&sim);
     assert_true(bg_wait_output(&m, "\"state\":\"down\"", 1, 20.0));
@@ -440,7 +440,7 @@ static void test_monitor_terminal(void **state)
     close(slave);
     seen[0] = '\0';
     pty_read_until(master, seen, sizeof(seen), 20000, "Ctrl-C to stop", NULL); /* past --timeout */
-    assert_int_equal(waitpid(pid, &wstatus, WNOHANG), 0); /* still waiting */
+    assert_int_equal(waitpid(pid, &wstatus, WNOHANG), 0);                      /* still waiting */
     assert_non_null(strstr(seen, "xfgcu: note: waiting for the GCU on udp 127.0.0.1:"));
     assert_non_null(strstr(seen, "Ctrl-C to stop"));
     bg_start(&sim, "tty-sim", "sim", "--udp", port, "--duration", "40", NULL);

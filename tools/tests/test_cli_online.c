@@ -459,8 +459,8 @@ static void test_capture_replay(void **state)
     temp_name(file, sizeof(file), "duration");
     r = sim_run_on(s, "capture", file, "--duration", "1", NULL);
     assert_int_equal(r.status, 0);
-    assert_int_equal(sscanf(r.out, "captured %lf s on %*s %*s %*u chunks, %*u bytes (%u packets sent, %u received)", &secs,
-                            &sent, &received),
+    assert_int_equal(sscanf(r.out, "captured %lf s on %*s %*s %*u chunks, %*u bytes (%u packets sent, %u received)",
+                            &secs, &sent, &received),
                      3);
     assert_true(secs >= 1.0 && secs < 3.0);
     tool_result_free(&r);

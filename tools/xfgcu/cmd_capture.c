@@ -307,9 +307,9 @@ static int capture(record *r, const cli_link *link, const xf_command *cmd, uint3
     *elapsed = xf_ms_since(xf_posix_now_ms(), start);
     if (r->lost) {
         const char *why = xf_link_error(&r->o->link)->text;
-        snprintf(r->why, sizeof(r->why), "%s", xf_client_health(&r->o->client)->transport_closed && why[0] != '\0'
-                                                   ? why
-                                                   : "the GCU stopped answering");
+        snprintf(r->why, sizeof(r->why), "%s",
+                 xf_client_health(&r->o->client)->transport_closed && why[0] != '\0' ? why
+                                                                                     : "the GCU stopped answering");
     } else if (rc != XFGCU_EXIT_LINK && write_error(r) == 0) {
         drain(r);
     }
