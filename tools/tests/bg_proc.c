@@ -6,6 +6,7 @@
 #include "bg_proc.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <setjmp.h>
 #include <signal.h>
 #include <spawn.h>
@@ -45,6 +46,7 @@ static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
     posix_spawn_file_actions_t fa;
     struct rlimit was, lim;
     const char *a;
+    int err_end = -1;
     FILE *f;
     snprintf(b->out, sizeof(b->out), "/tmp/xfgcu-bg-%ld-%s.out", (long)getpid(), tag);
     snprintf(b->err, sizeof(b->err), "/tmp/xfgcu-bg-%ld-%s.err", (long)getpid(), tag);
@@ -67,7 +69,18 @@ static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
     } else {
         posix_spawn_file_actions_addopen(&fa, 1, b->out, O_WRONLY, 0);
     }
-    posix_spawn_file_actions_addopen(&fa, 2, b->err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    b->err_fd = -1;
+    if (o->max_file_bytes > 0) {
+        int p[2];
+        assert_int_equal(pipe(p), 0);
+        assert_int_not_equal(fcntl(p[0], F_SETFD, FD_CLOEXEC), -1);
+        assert_int_not_equal(fcntl(p[1], F_SETFD, FD_CLOEXEC), -1);
+        posix_spawn_file_actions_adddup2(&fa, p[1], 2);
+        b->err_fd = p[0];
+        err_end = p[1];
+    } else {
+        posix_spawn_file_actions_addopen(&fa, 2, b->err, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    }
     assert_int_equal(getrlimit(RLIMIT_FSIZE, &was), 0);
     lim = was;
     if (o->max_file_bytes > 0) {
@@ -77,6 +90,9 @@ static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
     rc = posix_spawn(&b->pid, XFGCU_EXE, &fa, NULL, argv, environ);
     assert_int_equal(setrlimit(RLIMIT_FSIZE, &was), 0);
     posix_spawn_file_actions_destroy(&fa);
+    if (err_end >= 0) {
+        close(err_end);
+    }
     assert_int_equal(rc, 0);
 }
 
@@ -135,23 +151,55 @@ int bg_wait_output(const bg *b, const char *needle, unsigned count, double secon
     }
 }
 
+/* What is in the stderr pipe now (all of it once the program has ended), appended to @p text. */
+static void drain_err(const bg *b, char **text, size_t *len, int wait_ms)
+{
+    struct pollfd p;
+    char buf[4096];
+    ssize_t got;
+    p.fd = b->err_fd;
+    p.events = POLLIN;
+    while (poll(&p, 1, wait_ms) > 0 && (got = read(b->err_fd, buf, sizeof(buf))) > 0) {
+        *text = realloc(*text, *len + (size_t)got + 1u);
+        assert_non_null(*text);
+        memcpy(*text + *len, buf, (size_t)got);
+        *len += (size_t)got;
+        (*text)[*len] = '\0';
+    }
+}
+
 tool_result bg_finish(bg *b, long limit_ms)
 {
     tool_result r;
     int wstatus = 0;
     double end = now_s() + (double)limit_ms / 1000.0;
+    char *err = calloc(1, 1);
+    size_t err_len = 0;
     pid_t got;
+    assert_non_null(err);
     while ((got = waitpid(b->pid, &wstatus, WNOHANG)) == 0 && now_s() < end) {
-        sleep_ms(10);
+        if (b->err_fd >= 0) {
+            drain_err(b, &err, &err_len, 10);
+        } else {
+            sleep_ms(10);
+        }
     }
     if (got == 0) {
         kill(b->pid, SIGKILL);
         waitpid(b->pid, &wstatus, 0);
         print_error("%s did not end in %ld ms\n", b->out, limit_ms);
     }
+    if (b->err_fd >= 0) {
+        drain_err(b, &err, &err_len, 1000); /* to the end: the writer has exited */
+        close(b->err_fd);
+        b->err_fd = -1;
+    } else {
+        free(err);
+        err = slurp(b->err);
+    }
     r.status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
     r.out = slurp(b->out);
-    r.err = slurp(b->err);
+    r.err = err;
     r.out_len = strlen(r.out);
     r.err_len = strlen(r.err);
     unlink(b->out);

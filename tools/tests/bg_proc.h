@@ -11,10 +11,12 @@
 
 #include "run_tool.h"
 
-/** A program in the background, its stdout and stderr to files. */
+/** A program in the background, its stdout and stderr to files (stderr through a pipe when the
+ *  size of its files is limited: the limit would cut its messages short too). */
 typedef struct bg {
     pid_t pid;
     char out[96], err[96];
+    int err_fd; /* the pipe's end to read, or -1 */
 } bg;
 
 /** Start xfgcu with the arguments (NULL-terminated); @p tag names its output files. */

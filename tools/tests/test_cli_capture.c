@@ -226,6 +226,27 @@ static void test_full_pcap(void **state)
     full_case(s, 1, 0);
 }
 
+/* Not even the file's header can be written: the same (libpcap closes the stream it cannot write
+ * its header to, which once made a pcap capture free it twice). */
+static void test_full_at_once(void **state)
+{
+    sim_proc *s = (sim_proc *)*state;
+    int pcap;
+    for (pcap = 0; pcap < 2; pcap++) {
+        place p;
+        char part[256];
+        bg b;
+        tool_result r;
+        place_make(&p, 1);
+        start_capture(&b, 10, s, pcap, 1, p.file, "--duration", LONG_S);
+        r = bg_finish(&b, WAIT_MS);
+        assert_kept(&r, 2, &p, 1, part, sizeof(part), "capture: cannot write ", "File too large", NULL);
+        assert_int_equal(file_size(part), 0); /* no partial header */
+        tool_result_free(&r);
+        place_remove(&p);
+    }
+}
+
 /* The write fails while COMMAND runs: the command, sent, is let finish and its result printed;
  * then the capture ends the same way. */
 static void test_full_during_command(void **state)
@@ -446,6 +467,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_full_text, sim_setup_tcp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_full_pcap, sim_setup_udp, sim_teardown),
+        cmocka_unit_test_setup_teardown(test_full_at_once, sim_setup_pty, sim_teardown),
         cmocka_unit_test_setup_teardown(test_full_during_command, sim_setup_tcp, sim_teardown),
         cmocka_unit_test_setup_teardown(test_killed_tcp, sim_setup_none, sim_teardown),
         cmocka_unit_test_setup_teardown(test_killed_pty, sim_setup_none, sim_teardown),

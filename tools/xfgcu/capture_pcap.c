@@ -56,30 +56,49 @@ static unsigned fold(uint32_t sum)
 
 /* The first failure: keep its errno, cut the file back to its last whole record (a partial write
  * may have left part of one) and write nothing more (pcap_writer_chunk() checks w->error). */
-static void write_failed(pcap_writer *w, FILE *f)
+static void write_failed(pcap_writer *w)
 {
     if (w->error == 0) {
         w->error = (errno != 0) ? errno : EIO;
     }
-    if (w->kept >= 0 && ftruncate(fileno(f), (off_t)w->kept) != 0) {
+    if (w->kept >= 0 && ftruncate(fileno((FILE *)w->file), (off_t)w->kept) != 0) {
         w->kept = -1;
     }
+}
+
+/* libpcap writes through a FILE of its own on a duplicate of @p f's descriptor (the same file
+ * and offset): pcap_dump_fopen() closes the FILE it is given when it cannot write the file header,
+ * but not when it refuses a link type, so it is never given one that anybody else closes. */
+static FILE *dump_stream(FILE *f)
+{
+    int fd = dup(fileno(f));
+    FILE *g = (fd >= 0) ? fdopen(fd, "w") : NULL;
+    if (g == NULL) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+        }
+        errno = e;
+        return NULL;
+    }
+    (void)setvbuf(g, NULL, _IONBF, 0); /* every record reaches the file at once, none is left in a buffer */
+    return g;
 }
 
 int pcap_writer_open(pcap_writer *w, FILE *f, pcap_kind kind, const pcap_ends *ends)
 {
     int dlt = (kind == PCAP_KIND_SERIAL) ? LINKTYPE_USER0 : DLT_RAW;
-    off_t at;
+    off_t at = ftello(f);
+    FILE *g;
     pcap_t *p;
     memset(w, 0, sizeof(*w));
+    w->file = f;
     w->kind = kind;
     if (ends != NULL) {
         w->ends = *ends;
     }
     w->seq[0] = 1000u; /* any start; both sides count from their own */
     w->seq[1] = 5000u;
-    (void)setvbuf(f, NULL, _IONBF, 0); /* every record reaches the file at once, none is left in a buffer */
-    at = ftello(f);
     w->kept = (at >= 0) ? (int64_t)at : -1;
     p = pcap_open_dead_with_tstamp_precision(dlt, SNAPLEN, PCAP_TSTAMP_PRECISION_MICRO);
     if (p == NULL) {
@@ -88,12 +107,13 @@ int pcap_writer_open(pcap_writer *w, FILE *f, pcap_kind kind, const pcap_ends *e
     }
     w->pcap = p;
     errno = 0;
-    w->dumper = pcap_dump_fopen(p, f);
+    g = dump_stream(f);
+    w->dumper = (g != NULL) ? pcap_dump_fopen(p, g) : NULL;
     if (w->dumper == NULL) {
-        write_failed(w, f); /* the file header, cut back to nothing */
+        write_failed(w); /* the file header: cut back to nothing */
         return -1;
     }
-    at = ftello(f);
+    at = ftello(g);
     w->kept = (at >= 0 && w->kept >= 0) ? (int64_t)at : -1;
     return 0;
 }
@@ -157,7 +177,7 @@ static void write_record(pcap_writer *w, xf_direction dir, const uint8_t *data, 
     errno = 0;
     pcap_dump((u_char *)w->dumper, &h, buf); /* the record header, then the data: two writes, unbuffered */
     if (ferror(pcap_dump_file((pcap_dumper_t *)w->dumper))) {
-        write_failed(w, pcap_dump_file((pcap_dumper_t *)w->dumper));
+        write_failed(w);
         return;
     }
     if (w->kept >= 0) {
@@ -194,12 +214,18 @@ int pcap_writer_close(pcap_writer *w)
         if (pcap_dump_flush((pcap_dumper_t *)w->dumper) != 0 && w->error == 0) {
             w->error = (errno != 0) ? errno : EIO;
         }
-        pcap_dump_close((pcap_dumper_t *)w->dumper); /* closes the FILE */
+        pcap_dump_close((pcap_dumper_t *)w->dumper); /* closes libpcap's FILE */
         w->dumper = NULL;
     }
     if (w->pcap != NULL) {
         pcap_close((pcap_t *)w->pcap);
         w->pcap = NULL;
+    }
+    if (w->file != NULL) {
+        if (fclose((FILE *)w->file) != 0 && w->error == 0) {
+            w->error = errno;
+        }
+        w->file = NULL;
     }
     return w->error;
 }

@@ -206,10 +206,8 @@ static void begin_file(record *r, const online *o, const char *desc)
     r->begun = 1;
     if (r->pcap) {
         pcap_kind kind = (o != NULL) ? pcap_ends_of(o, &ends) : PCAP_KIND_SERIAL;
-        if (pcap_writer_open(&r->pw, r->f, kind, &ends) != 0 && r->pw.dumper == NULL) {
-            fclose(r->f); /* the writer never took it; its error is kept for the end */
-        }
-        r->f = NULL; /* the writer's now */
+        (void)pcap_writer_open(&r->pw, r->f, kind, &ends); /* a failure is kept for the end (close_file()) */
+        r->f = NULL;                                       /* the writer's now, whatever happened */
     } else {
         (void)xf_capture_begin(&r->w, r->f, desc, xf_capture_wall_ms());
     }
