@@ -178,6 +178,24 @@ int sim_stop(sim_proc *s)
     return WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
 }
 
+void sim_read_log(const sim_proc *s, char *log, size_t cap, size_t *len, sim_log_enough_fn enough, const void *user)
+{
+    struct pollfd p;
+    long end = now_ms() + 20000;
+    p.fd = s->out_fd;
+    p.events = POLLIN;
+    log[*len] = '\0';
+    while (*len + 1u < cap) {
+        long wait = enough(log, user) ? 300 : end - now_ms();
+        ssize_t got;
+        if (wait <= 0 || poll(&p, 1, (int)wait) <= 0 || (got = read(s->out_fd, log + *len, cap - 1u - *len)) <= 0) {
+            break;
+        }
+        *len += (size_t)got;
+        log[*len] = '\0';
+    }
+}
+
 int sim_link_args(const sim_proc *s, const char **args)
 {
     static char tcp[64];

@@ -8,6 +8,7 @@
 #ifndef XFGCU_SIM_PROC_H
 #define XFGCU_SIM_PROC_H
 
+#include <stddef.h>
 #include <sys/types.h>
 
 #include "run_tool.h"
@@ -32,6 +33,17 @@ void sim_start(sim_proc *s, sim_link link, ...);
 
 /** Stop it (SIGTERM, then SIGKILL after 20 s) and reap it; returns its exit status (128 + signal if killed). */
 int sim_stop(sim_proc *s);
+
+/** A test of what the simulator's output (--verbose) holds so far: 1 when it holds all it should. */
+typedef int (*sim_log_enough_fn)(const char *log, const void *user);
+
+/**
+ * Read the simulator's stdout into @p log (@p *len bytes there already; NUL-terminated after)
+ * until @p enough says it holds all it should (20 s at most: a simulator slowed down by the
+ * machine's load prints late, not never), then on until it has been quiet for 300 ms, so that
+ * one more line, which would be one too many, shows.
+ */
+void sim_read_log(const sim_proc *s, char *log, size_t cap, size_t *len, sim_log_enough_fn enough, const void *user);
 
 /** The link options that reach it: "--tcp 127.0.0.1:PORT", UDP with --gcu-port and --local-port 0, or --serial PATH. */
 int sim_link_args(const sim_proc *s, const char **args);

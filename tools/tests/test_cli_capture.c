@@ -193,18 +193,28 @@ static void start_capture(bg *b, long limit, const sim_proc *s, int pcap, int fo
 
 #define LIMIT 4096L /* bytes: a few dozen chunks */
 
+/* Capture (--force over an existing FILE when @p existing) into a file that may not grow past
+ * @p limit bytes, with the arguments @p a1 and @p a2 (may be NULL): exit 2, the one line naming
+ * the part file (into @p part), FILE as it was. */
+static tool_result capture_limited(sim_proc *s, int pcap, int existing, long limit, const char *a1, const char *a2,
+                                   place *p, char *part, size_t cap)
+{
+    bg b;
+    tool_result r;
+    place_make(p, existing);
+    start_capture(&b, limit, s, pcap, existing, p->file, a1, a2);
+    r = bg_finish(&b, WAIT_MS);
+    assert_kept(&r, 2, p, existing, part, cap, "capture: cannot write ", "File too large", NULL);
+    return r;
+}
+
 /* Capture for LONG_S seconds into a file that may not grow past LIMIT: it stops at the first
  * failed write, exit 2, the part kept with what fit, FILE as it was (@p existing, with --force). */
 static void full_case(sim_proc *s, int pcap, int existing)
 {
     place p;
     char part[256];
-    bg b;
-    tool_result r;
-    place_make(&p, existing);
-    start_capture(&b, LIMIT, s, pcap, existing, p.file, "--duration", LONG_S);
-    r = bg_finish(&b, WAIT_MS);
-    assert_kept(&r, 2, &p, existing, part, sizeof(part), "capture: cannot write ", "File too large", NULL);
+    tool_result r = capture_limited(s, pcap, existing, LIMIT, "--duration", LONG_S, &p, part, sizeof(part));
     assert_int_equal(r.out_len, 0u);
     assert_true(file_size(part) <= LIMIT && file_size(part) >= LIMIT / 2); /* what fit is there */
     assert_valid_capture(part, pcap);
@@ -230,17 +240,11 @@ static void test_full_pcap(void **state)
  * its header to, which once made a pcap capture free it twice). */
 static void test_full_at_once(void **state)
 {
-    sim_proc *s = (sim_proc *)*state;
     int pcap;
     for (pcap = 0; pcap < 2; pcap++) {
         place p;
         char part[256];
-        bg b;
-        tool_result r;
-        place_make(&p, 1);
-        start_capture(&b, 10, s, pcap, 1, p.file, "--duration", LONG_S);
-        r = bg_finish(&b, WAIT_MS);
-        assert_kept(&r, 2, &p, 1, part, sizeof(part), "capture: cannot write ", "File too large", NULL);
+        tool_result r = capture_limited((sim_proc *)*state, pcap, 1, 10, "--duration", LONG_S, &p, part, sizeof(part));
         assert_int_equal(file_size(part), 0); /* no partial header */
         tool_result_free(&r);
         place_remove(&p);
@@ -251,19 +255,14 @@ static void test_full_at_once(void **state)
  * then the capture ends the same way. */
 static void test_full_during_command(void **state)
 {
-    sim_proc *s = (sim_proc *)*state;
     static const long limits[2] = {600L, 300L}; /* text, pcap: a header and a chunk or two */
     int pcap;
     for (pcap = 0; pcap < 2; pcap++) {
         place p;
         char part[256];
-        bg b;
-        tool_result r;
-        place_make(&p, 1);
-        start_capture(&b, limits[pcap], s, pcap, 1, p.file, "shutter", NULL);
-        r = bg_finish(&b, WAIT_MS);
+        tool_result r =
+            capture_limited((sim_proc *)*state, pcap, 1, limits[pcap], "shutter", NULL, &p, part, sizeof(part));
         assert_string_equal(r.out, "ok\n");
-        assert_kept(&r, 2, &p, 1, part, sizeof(part), "capture: cannot write ", "File too large", NULL);
         assert_true(file_size(part) <= limits[pcap] && file_size(part) > 0);
         tool_result_free(&r);
         place_remove(&p);

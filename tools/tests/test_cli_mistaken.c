@@ -72,26 +72,10 @@ static unsigned count_in(const char *log, const char *what)
     return n;
 }
 
-/* How many "executed shutter" lines the simulator (--verbose) has printed: read until there are
- * @p want (a simulator slowed down by the machine's load prints late, not never: 20 s at most),
- * then on until it has been quiet for 300 ms, so that one more, which would be one too many, shows. */
-static unsigned shutters_executed(const sim_proc *s, unsigned want, char *log, size_t cap, size_t *len)
+/* Has the simulator's log *@p want "executed shutter" lines? */
+static int shutters_enough(const char *log, const void *want)
 {
-    struct pollfd p;
-    double end = now_s() + 20.0;
-    p.fd = s->out_fd;
-    p.events = POLLIN;
-    log[*len] = '\0';
-    while (*len + 1u < cap) {
-        int quiet_ms = count_in(log, "executed shutter") >= want ? 300 : (int)((end - now_s()) * 1000.0);
-        ssize_t got;
-        if (quiet_ms <= 0 || poll(&p, 1, quiet_ms) <= 0 || (got = read(s->out_fd, log + *len, cap - 1u - *len)) <= 0) {
-            break;
-        }
-        *len += (size_t)got;
-        log[*len] = '\0';
-    }
-    return count_in(log, "executed shutter");
+    return count_in(log, "executed shutter") >= *(const unsigned *)want;
 }
 
 /* Every reply 1.5 s late, one `send shutter` after another on the same local port: an earlier
@@ -147,7 +131,8 @@ static void test_reordering_link(void **state)
         tool_result_free(&r);
     }
     assert_int_equal(oks, 12);
-    assert_int_equal(shutters_executed(s, 12, log, sizeof(log), &len), 12);
+    sim_read_log(s, log, sizeof(log), &len, shutters_enough, &oks); /* all 12 of them, and no 13th */
+    assert_int_equal(count_in(log, "executed shutter"), 12);
 }
 
 /* Run `XFGCU_EXE ARGS` through the shell with stdin redirected as @p redirect; returns the exit

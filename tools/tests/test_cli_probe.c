@@ -25,7 +25,6 @@
 #include <cmocka.h>
 #include <jansson.h>
 
-#include "bg_proc.h"
 #include "run_tool.h"
 #include "sim_proc.h"
 #include "xfgcu/xfgcu.h"
@@ -68,43 +67,28 @@ static void parse_executed(const char *buf, int seen[256])
     }
 }
 
-static int missing_any(const int *want, const int seen[256])
+/* Does the simulator's log hold every order of @p want (256 flags; NULL: none)? */
+static int all_executed(const char *log, const void *want)
 {
+    int seen[256];
     size_t i;
+    parse_executed(log, seen);
     for (i = 0; want != NULL && i < 256u; i++) {
-        if (want[i] && !seen[i]) {
-            return 1;
+        if (((const int *)want)[i] && !seen[i]) {
+            return 0;
         }
     }
-    return 0;
+    return 1;
 }
 
-/*
- * The orders the simulator says it executed since the last call (--verbose lines): read until
- * every order of @p want (NULL: none) is there (a simulator slowed down by the machine's load
- * prints late, not never: 20 s at most), then on until it has been quiet for 300 ms, so that one
- * more, which would be one too many, shows.
- */
+/* The orders the simulator says it executed since the last call: every one of @p want, and any
+ * other (sim_read_log()). */
 static void executed(sim_proc *s, int seen[256], const int *want)
 {
-    char buf[16384];
+    char log[16384];
     size_t n = 0;
-    double end = now_s() + 20.0;
-    struct pollfd p;
-    p.fd = s->out_fd;
-    p.events = POLLIN;
-    buf[0] = '\0';
-    parse_executed(buf, seen);
-    while (n + 1u < sizeof(buf)) {
-        int wait_ms = missing_any(want, seen) ? (int)((end - now_s()) * 1000.0) : 300;
-        ssize_t got;
-        if (wait_ms <= 0 || poll(&p, 1, wait_ms) <= 0 || (got = read(s->out_fd, buf + n, sizeof(buf) - 1u - n)) <= 0) {
-            break;
-        }
-        n += (size_t)got;
-        buf[n] = '\0';
-        parse_executed(buf, seen);
-    }
+    sim_read_log(s, log, sizeof(log), &n, all_executed, want);
+    parse_executed(log, seen);
 }
 
 /* Every probe here waits for an answer up to this long, not the default second: on a loaded
