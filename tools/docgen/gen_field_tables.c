@@ -21,6 +21,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "xfgcu/xfgcu.h"
 
@@ -282,14 +284,30 @@ static int generate(FILE *in, const char *path, text *out)
     return (ferror(in) || out->failed) ? -1 : 0;
 }
 
+/* Replace @p path with @p t: written to a new file beside it (mkstemp: nothing that is there is
+ * overwritten), which takes its name and mode only when complete; on a failure it is removed (it
+ * is ours) and @p path is as it was. */
 static int write_file(const char *path, const text *t)
 {
     char tmp[4096];
-    FILE *f;
-    snprintf(tmp, sizeof(tmp), "%s.tmp", path);
-    f = fopen(tmp, "w");
-    if (f == NULL || fwrite(t->p, 1, t->n, f) != t->n || fclose(f) != 0 || rename(tmp, path) != 0) {
-        perror(tmp);
+    struct stat st;
+    FILE *f = NULL;
+    int fd, ok;
+    if ((size_t)snprintf(tmp, sizeof(tmp), "%s.XXXXXX", path) >= sizeof(tmp)) {
+        fprintf(stderr, "gen_field_tables: %s: the name is too long\n", path);
+        return 1;
+    }
+    fd = mkstemp(tmp);
+    if (fd >= 0 && (stat(path, &st) != 0 || fchmod(fd, st.st_mode & 07777) != 0 || (f = fdopen(fd, "w")) == NULL)) {
+        close(fd);
+    }
+    ok = (f != NULL && fwrite(t->p, 1, t->n, f) == t->n);
+    ok = (f != NULL && fclose(f) == 0) && ok;
+    if (!ok || rename(tmp, path) != 0) {
+        perror(fd >= 0 ? tmp : path);
+        if (fd >= 0) {
+            (void)unlink(tmp);
+        }
         return 1;
     }
     return 0;

@@ -147,8 +147,8 @@ void sim_start(sim_proc *s, sim_link link, ...)
     remember(s->pid, 0);
     close(out[1]);
     s->out_fd = out[0];
-    if (read_line(s->out_fd, s->line, sizeof(s->line), 5000) != 0) {
-        print_error("xfgcu sim printed no ready line within 5 s (got \"%s\")\n", s->line);
+    if (read_line(s->out_fd, s->line, sizeof(s->line), 20000) != 0) { /* far more than it takes, on any load */
+        print_error("xfgcu sim printed no ready line within 20 s (got \"%s\")\n", s->line);
         fail();
     }
     parse_ready(s);
@@ -163,7 +163,7 @@ int sim_stop(sim_proc *s)
         return -1;
     }
     kill(s->pid, SIGTERM);
-    end = now_ms() + 5000;
+    end = now_ms() + 20000;
     while ((r = waitpid(s->pid, &wstatus, WNOHANG)) == 0 && now_ms() < end) {
         struct timespec ten_ms = {0, 10000000L};
         nanosleep(&ten_ms, NULL);
@@ -176,6 +176,24 @@ int sim_stop(sim_proc *s)
     s->pid = 0;
     close(s->out_fd);
     return WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
+}
+
+void sim_read_log(const sim_proc *s, char *log, size_t cap, size_t *len, sim_log_enough_fn enough, const void *user)
+{
+    struct pollfd p;
+    long end = now_ms() + 20000;
+    p.fd = s->out_fd;
+    p.events = POLLIN;
+    log[*len] = '\0';
+    while (*len + 1u < cap) {
+        long wait = enough(log, user) ? 300 : end - now_ms();
+        ssize_t got;
+        if (wait <= 0 || poll(&p, 1, (int)wait) <= 0 || (got = read(s->out_fd, log + *len, cap - 1u - *len)) <= 0) {
+            break;
+        }
+        *len += (size_t)got;
+        log[*len] = '\0';
+    }
 }
 
 int sim_link_args(const sim_proc *s, const char **args)

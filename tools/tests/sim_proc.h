@@ -8,6 +8,7 @@
 #ifndef XFGCU_SIM_PROC_H
 #define XFGCU_SIM_PROC_H
 
+#include <stddef.h>
 #include <sys/types.h>
 
 #include "run_tool.h"
@@ -26,12 +27,23 @@ typedef struct sim_proc {
 /**
  * Start `xfgcu sim` on @p link (port 0: any free one) with @p extra
  * arguments (NULL-terminated list, may be empty) and wait for its ready
- * line (5 s at most; a failure fails the test).
+ * line (20 s at most: far more than it takes on any load; a failure fails the test).
  */
 void sim_start(sim_proc *s, sim_link link, ...);
 
-/** Stop it (SIGTERM, then SIGKILL after 5 s) and reap it; returns its exit status (128 + signal if killed). */
+/** Stop it (SIGTERM, then SIGKILL after 20 s) and reap it; returns its exit status (128 + signal if killed). */
 int sim_stop(sim_proc *s);
+
+/** A test of what the simulator's output (--verbose) holds so far: 1 when it holds all it should. */
+typedef int (*sim_log_enough_fn)(const char *log, const void *user);
+
+/**
+ * Read the simulator's stdout into @p log (@p *len bytes there already; NUL-terminated after)
+ * until @p enough says it holds all it should (20 s at most: a simulator slowed down by the
+ * machine's load prints late, not never), then on until it has been quiet for 300 ms, so that
+ * one more line, which would be one too many, shows.
+ */
+void sim_read_log(const sim_proc *s, char *log, size_t cap, size_t *len, sim_log_enough_fn enough, const void *user);
 
 /** The link options that reach it: "--tcp 127.0.0.1:PORT", UDP with --gcu-port and --local-port 0, or --serial PATH. */
 int sim_link_args(const sim_proc *s, const char **args);

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/time.h>
+#include <sys/types.h>
+#include <unistd.h>
 #include <time.h>
 
 #include "capture.h"
@@ -24,32 +26,58 @@ int64_t xf_capture_wall_ms(void)
     return (int64_t)tv.tv_sec * 1000 + tv.tv_usec / 1000;
 }
 
+/* Append @p n bytes of whole lines in one write (the stream is unbuffered: xf_capture_begin()). The
+ * first failure keeps its errno, cuts the file back to its last whole line (a partial write may
+ * have put part of this one there) and stops the writer: a capture never has a gap. */
+static int xf__capture_put(xf_capture_writer *w, const char *text, size_t n)
+{
+    if (w->error != 0) {
+        return -1;
+    }
+    errno = 0;
+    if (fwrite(text, 1, n, w->f) != n) {
+        w->error = (errno != 0) ? errno : EIO;
+        if (w->kept >= 0 && ftruncate(fileno(w->f), (off_t)w->kept) != 0) {
+            w->kept = -1; /* cannot be cut back: the last line may be partial */
+        }
+        return -1;
+    }
+    if (w->kept >= 0) {
+        w->kept += (int64_t)n;
+    }
+    return 0;
+}
+
 xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc, int64_t start_ms)
 {
-    char start[40] = "";
+    char head[512], start[40] = "";
+    off_t at;
+    int n;
     if (w == NULL || f == NULL) {
         return XF_ERR_ARG;
     }
     memset(w, 0, sizeof(*w));
     w->f = f;
+    (void)setvbuf(f, NULL, _IONBF, 0); /* every line in one write, none left in a buffer */
+    at = ftello(f);
+    w->kept = (at >= 0) ? (int64_t)at : -1; /* a pipe: nothing to cut back */
     if (start_ms >= 0) {
         jsonpkt_utc_text(start_ms, start, sizeof(start));
     }
-    if (fprintf(f, "%s\n# link %s\n%s%s%s# time(s) dir(> host to GCU, < GCU to host) bytes\n", XF_CAPTURE_MAGIC,
-                link_desc != NULL ? link_desc : "-", start_ms >= 0 ? XF_CAPTURE_START : "", start,
-                start_ms >= 0 ? "\n" : "") < 0) {
-        w->error = errno;
-        return XF_ERR_IO;
-    }
-    return XF_OK;
+    n = snprintf(head, sizeof(head), "%s\n# link %.320s\n%s%s%s# time(s) dir(> host to GCU, < GCU to host) bytes\n",
+                 XF_CAPTURE_MAGIC, link_desc != NULL ? link_desc : "-", start_ms >= 0 ? XF_CAPTURE_START : "", start,
+                 start_ms >= 0 ? "\n" : "");
+    return (n > 0 && xf__capture_put(w, head, (size_t)n) == 0) ? XF_OK : XF_ERR_IO;
 }
 
 void xf_capture_chunk(void *writer, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
 {
+    static const char hex[] = "0123456789ABCDEF";
     xf_capture_writer *w = (xf_capture_writer *)writer;
+    char line[32 + 3u * XF_CAPTURE_MAX_CHUNK];
     size_t off = 0;
     uint32_t t;
-    if (w == NULL || w->f == NULL) {
+    if (w == NULL || w->f == NULL || w->error != 0) {
         return;
     }
     if (!w->started) {
@@ -58,21 +86,19 @@ void xf_capture_chunk(void *writer, xf_direction dir, const uint8_t *data, size_
     }
     t = xf_ms_since(now_ms, w->start_ms);
     while (off < len) {
-        size_t n = len - off; /* at least 1: off < len */
-        size_t i;
-        int bad;
+        size_t n = len - off, i, k; /* n at least 1: off < len */
         if (n > XF_CAPTURE_MAX_CHUNK) {
             n = XF_CAPTURE_MAX_CHUNK;
         }
-        bad = fprintf(w->f, "%u.%03u %c", (unsigned)(t / 1000u), (unsigned)(t % 1000u),
-                      dir == XF_DIR_HOST ? '>' : '<') < 0;
-        for (i = 0; i < n && !bad; i++) {
-            bad = fprintf(w->f, " %02X", data[off + i]) < 0;
+        k = (size_t)snprintf(line, 32, "%u.%03u %c", (unsigned)(t / 1000u), (unsigned)(t % 1000u),
+                             dir == XF_DIR_HOST ? '>' : '<');
+        for (i = 0; i < n; i++) {
+            line[k++] = ' ';
+            line[k++] = hex[data[off + i] >> 4];
+            line[k++] = hex[data[off + i] & 0x0Fu];
         }
-        if (bad || fputc('\n', w->f) == EOF) {
-            if (w->error == 0) {
-                w->error = errno != 0 ? errno : EIO;
-            }
+        line[k++] = '\n';
+        if (xf__capture_put(w, line, k) != 0) {
             return;
         }
         w->chunks++;

@@ -22,6 +22,13 @@
  * Blocking: the functions do blocking stdio on the caller's FILE, and wait
  * as long as the file does (a regular file: briefly). Write a capture from
  * the client loop only to a file that cannot stall it.
+ *
+ * Failures: the writer makes its FILE unbuffered and writes each line in
+ * one write, so every chunk is in the file as soon as it is reported. The
+ * first failed write (a full disk, a file size limit) stops the writer for
+ * good and cuts the file back to its last whole line: what was written
+ * before the failure stays a valid capture, with no partial line at its
+ * end and no gap in it.
  */
 #ifndef XF_CAPTURE_H
 #define XF_CAPTURE_H
@@ -44,7 +51,9 @@ typedef struct xf_capture_writer {
     /** @var xf_capture_writer::chunks
      *  lines written */
     uint32_t chunks, bytes; /**< bytes written */
-    int error;              /**< errno of the first failed write, 0 if none */
+    int error;              /**< errno of the first failed write, 0 if none: nothing is written after it */
+    int64_t kept;           /**< the file's size up to its last whole line; -1 when unknown (a pipe), or when
+                                 it could not be cut back to it after a failure */
 } xf_capture_writer;
 
 /** The wall clock now, ms since 1970 (the start time a capture records). */
@@ -52,7 +61,7 @@ int64_t xf_capture_wall_ms(void);
 
 /**
  * Write the header (with @p link_desc, may be NULL, and the start time) to @p f; the caller
- * owns f. Blocking stdio.
+ * owns f. Makes @p f unbuffered (call it before any other use of @p f). Blocking stdio.
  * @param w          the writer's storage
  * @param f          the file, open for writing (closed by the caller)
  * @param link_desc  one line describing the link, such as "tcp 192.168.144.108:2332" (NULL: "-")
@@ -64,9 +73,11 @@ int64_t xf_capture_wall_ms(void);
 xf_err xf_capture_begin(xf_capture_writer *w, FILE *f, const char *link_desc, int64_t start_ms);
 /**
  * Append one chunk (usable as an xf_tap_fn with the writer as user).
- * A chunk longer than ::XF_CAPTURE_MAX_CHUNK takes several lines. Errors are
- * not returned: the first one's errno is kept in xf_capture_writer.error.
- * Blocking stdio. Does nothing for a NULL writer or one never begun.
+ * A chunk longer than ::XF_CAPTURE_MAX_CHUNK takes several lines, each
+ * written at once. Errors are not returned: the first one's errno is kept in
+ * xf_capture_writer.error, the file is cut back to its last whole line, and
+ * nothing more is written. Blocking stdio. Does nothing for a NULL writer,
+ * one never begun or one that failed.
  * @param writer  the xf_capture_writer
  * @param dir     ::XF_DIR_HOST (host to GCU, '>') or ::XF_DIR_GCU ('<')
  * @param data    the bytes as the link moved them

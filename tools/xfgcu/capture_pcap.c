@@ -7,6 +7,8 @@
 #include <stdint.h>
 #include <string.h>
 #include <sys/time.h>
+#include <sys/types.h>
+#include <unistd.h>
 
 #include "xfgcu/xf_hal.h"
 
@@ -52,28 +54,67 @@ static unsigned fold(uint32_t sum)
     return (unsigned)(~sum & 0xFFFFu);
 }
 
+/* The first failure: keep its errno, cut the file back to its last whole record (a partial write
+ * may have left part of one) and write nothing more (pcap_writer_chunk() checks w->error). */
+static void write_failed(pcap_writer *w)
+{
+    if (w->error == 0) {
+        w->error = (errno != 0) ? errno : EIO;
+    }
+    if (w->kept >= 0 && ftruncate(fileno((FILE *)w->file), (off_t)w->kept) != 0) {
+        w->kept = -1;
+    }
+}
+
+/* libpcap writes through a FILE of its own on a duplicate of @p f's descriptor (the same file
+ * and offset): pcap_dump_fopen() closes the FILE it is given when it cannot write the file header,
+ * but not when it refuses a link type, so it is never given one that anybody else closes. */
+static FILE *dump_stream(FILE *f)
+{
+    int fd = dup(fileno(f));
+    FILE *g = (fd >= 0) ? fdopen(fd, "w") : NULL;
+    if (g == NULL) {
+        int e = errno;
+        if (fd >= 0) {
+            close(fd);
+        }
+        errno = e;
+        return NULL;
+    }
+    (void)setvbuf(g, NULL, _IONBF, 0); /* every record reaches the file at once, none is left in a buffer */
+    return g;
+}
+
 int pcap_writer_open(pcap_writer *w, FILE *f, pcap_kind kind, const pcap_ends *ends)
 {
     int dlt = (kind == PCAP_KIND_SERIAL) ? LINKTYPE_USER0 : DLT_RAW;
+    off_t at = ftello(f);
+    FILE *g;
     pcap_t *p;
     memset(w, 0, sizeof(*w));
+    w->file = f;
     w->kind = kind;
     if (ends != NULL) {
         w->ends = *ends;
     }
     w->seq[0] = 1000u; /* any start; both sides count from their own */
     w->seq[1] = 5000u;
+    w->kept = (at >= 0) ? (int64_t)at : -1;
     p = pcap_open_dead_with_tstamp_precision(dlt, SNAPLEN, PCAP_TSTAMP_PRECISION_MICRO);
     if (p == NULL) {
         w->error = ENOMEM;
         return -1;
     }
     w->pcap = p;
-    w->dumper = pcap_dump_fopen(p, f);
+    errno = 0;
+    g = dump_stream(f);
+    w->dumper = (g != NULL) ? pcap_dump_fopen(p, g) : NULL;
     if (w->dumper == NULL) {
-        w->error = (errno != 0) ? errno : EIO;
+        write_failed(w); /* the file header: cut back to nothing */
         return -1;
     }
+    at = ftello(g);
+    w->kept = (at >= 0 && w->kept >= 0) ? (int64_t)at : -1;
     return 0;
 }
 
@@ -133,9 +174,14 @@ static void write_record(pcap_writer *w, xf_direction dir, const uint8_t *data, 
     h.ts.tv_sec = (time_t)(us / 1000000);
     h.ts.tv_usec = (suseconds_t)(us % 1000000);
     h.caplen = h.len = (bpf_u_int32)(head + n);
-    pcap_dump((u_char *)w->dumper, &h, buf);
-    if (w->error == 0 && ferror(pcap_dump_file((pcap_dumper_t *)w->dumper))) {
-        w->error = (errno != 0) ? errno : EIO;
+    errno = 0;
+    pcap_dump((u_char *)w->dumper, &h, buf); /* the record header, then the data: two writes, unbuffered */
+    if (ferror(pcap_dump_file((pcap_dumper_t *)w->dumper))) {
+        write_failed(w);
+        return;
+    }
+    if (w->kept >= 0) {
+        w->kept += (int64_t)(sizeof(uint32_t) * 4u + h.caplen); /* the record header: 4 words */
     }
     w->chunks++;
     w->bytes += (uint32_t)n;
@@ -144,7 +190,7 @@ static void write_record(pcap_writer *w, xf_direction dir, const uint8_t *data, 
 void pcap_writer_chunk(void *writer, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
 {
     pcap_writer *w = (pcap_writer *)writer;
-    if (w == NULL || w->dumper == NULL) {
+    if (w == NULL || w->dumper == NULL || w->error != 0) {
         return;
     }
     if (!w->started) {
@@ -154,7 +200,7 @@ void pcap_writer_chunk(void *writer, xf_direction dir, const uint8_t *data, size
         w->start_ms = now_ms;
         w->start_wall_us = (int64_t)tv.tv_sec * 1000000 + tv.tv_usec;
     }
-    while (len > 0u) {
+    while (len > 0u && w->error == 0) {
         size_t n = (len > MAX_PAYLOAD) ? MAX_PAYLOAD : len;
         write_record(w, dir, data, n, now_ms);
         data += n;
@@ -168,12 +214,18 @@ int pcap_writer_close(pcap_writer *w)
         if (pcap_dump_flush((pcap_dumper_t *)w->dumper) != 0 && w->error == 0) {
             w->error = (errno != 0) ? errno : EIO;
         }
-        pcap_dump_close((pcap_dumper_t *)w->dumper); /* closes the FILE */
+        pcap_dump_close((pcap_dumper_t *)w->dumper); /* closes libpcap's FILE */
         w->dumper = NULL;
     }
     if (w->pcap != NULL) {
         pcap_close((pcap_t *)w->pcap);
         w->pcap = NULL;
+    }
+    if (w->file != NULL) {
+        if (fclose((FILE *)w->file) != 0 && w->error == 0) {
+            w->error = errno;
+        }
+        w->file = NULL;
     }
     return w->error;
 }

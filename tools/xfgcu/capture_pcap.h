@@ -34,7 +34,8 @@ typedef struct pcap_ends {
 
 /** A pcap being written (opaque parts behind pointers). */
 typedef struct pcap_writer {
-    void *pcap, *dumper; /* pcap_t (dead), pcap_dumper_t */
+    void *pcap, *dumper; /* pcap_t (dead), pcap_dumper_t (libpcap's FILE, on a duplicate descriptor) */
+    void *file;          /* the FILE given to pcap_writer_open(): to cut the file back, closed at the end */
     pcap_kind kind;
     pcap_ends ends;
     uint32_t seq[2];       /* TCP: next sequence number of each direction */
@@ -43,14 +44,21 @@ typedef struct pcap_writer {
     uint32_t start_ms;     /* the monotonic time of the first chunk */
     int started;
     uint32_t chunks, bytes;
-    int error; /* errno of the first failure, 0 if none */
+    int error;    /* errno of the first failure, 0 if none: nothing is written after it */
+    int64_t kept; /* the file's size up to its last whole record; -1: unknown, or could not be cut back to it */
 } pcap_writer;
 
-/** Start writing to @p f (the writer then owns it: pcap_writer_close() closes it). 0, or -1 with w->error. */
+/**
+ * Start writing to @p f (its descriptor: each record reaches the file at once, unbuffered). The
+ * writer owns @p f from now on, whether this succeeds or not: pcap_writer_close() closes it.
+ * 0, or -1 with w->error (a file header that could not be written is cut back to nothing).
+ */
 int pcap_writer_open(pcap_writer *w, FILE *f, pcap_kind kind, const pcap_ends *ends);
-/** Append one chunk: an xf_tap_fn with the writer as user. Errors are kept in w->error. */
+/** Append one chunk: an xf_tap_fn with the writer as user. The first failed write's errno is
+ *  kept in w->error, the file is cut back to its last whole record, and nothing more is written. */
 void pcap_writer_chunk(void *writer, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms);
-/** Flush and close (the FILE too). @return 0, or the errno of the first failure. */
+/** Flush and close (the FILE too; also after a failed pcap_writer_open()). @return 0, or the errno of the first
+ * failure. */
 int pcap_writer_close(pcap_writer *w);
 
 /** Does a file starting with byte @p first look like pcap or pcapng (not the text format)? */

@@ -13,6 +13,7 @@
 #include <arpa/inet.h>
 #include <errno.h>
 #include <netinet/in.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
@@ -44,7 +45,9 @@ void help_capture(FILE *out)
           "                 result; without --duration or --count the capture then ends with it\n"
           "Otherwise it runs until Ctrl-C. Prints a one-line summary (chunks, bytes, packets).\n"
           "The capture is written to a temporary file beside FILE and takes FILE's name when it is\n"
-          "complete; when no byte moved, nothing is left.\n\n",
+          "complete. One that is not (a failed write: exit 2; a lost link: exit 3) stays as\n"
+          "FILE.partXXXXXX, named on stderr, and FILE is left as it was; when no byte moved, nothing\n"
+          "is left.\n\n",
           out);
     help_link_options(out);
     fputs("\n`xfgcu record FILE ...` is the old name of this command, kept for scripts (deprecated; the\n"
@@ -69,6 +72,8 @@ typedef struct record {
     int has_spec;
     cmd_spec spec;
     uint32_t sent, received;
+    int lost;      /* the link was lost during the capture */
+    char why[200]; /* why, for the message */
 } record;
 
 /* ---- arguments ---------------------------------------------------------------------- */
@@ -201,10 +206,8 @@ static void begin_file(record *r, const online *o, const char *desc)
     r->begun = 1;
     if (r->pcap) {
         pcap_kind kind = (o != NULL) ? pcap_ends_of(o, &ends) : PCAP_KIND_SERIAL;
-        if (pcap_writer_open(&r->pw, r->f, kind, &ends) != 0 && r->pw.dumper == NULL) {
-            fclose(r->f); /* the writer never took it; its error is kept for the end */
-        }
-        r->f = NULL; /* the writer's now */
+        (void)pcap_writer_open(&r->pw, r->f, kind, &ends); /* a failure is kept for the end (close_file()) */
+        r->f = NULL;                                       /* the writer's now, whatever happened */
     } else {
         (void)xf_capture_begin(&r->w, r->f, desc, xf_capture_wall_ms());
     }
@@ -238,6 +241,13 @@ static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t l
 
 /* ---- running ---------------------------------------------------------------------------- */
 
+/* The errno of the writer's first failed write, or 0: the writer writes nothing after it. */
+static int write_error(const record *r) { return r->pcap ? r->pw.error : r->w.error; }
+
+/* The link was up (online_open()) and is down now: the connection closed, the port hung up, or
+ * no valid reply for the client's down_ms. The capture of a lost link is not a complete one. */
+static int link_lost(const record *r) { return xf_client_link(&r->o->client) == XF_LINK_DOWN; }
+
 static int done(const record *r, uint32_t elapsed)
 {
     return cli_stop_requested() || (r->has_count && r->received >= (uint32_t)r->count) ||
@@ -255,7 +265,7 @@ static int run_command(record *r, const xf_command *cmd)
     online_result_text(&res, text, sizeof(text));
     printf("%s\n", text);
     fflush(stdout);
-    if (!r->has_count && !r->has_duration) {
+    if (!r->has_count && !r->has_duration && write_error(r) == 0) {
         online_linger(r->o, NULLS_AFTER);
     }
     snprintf(what, sizeof(what), "capture %s", r->spec.name);
@@ -271,6 +281,9 @@ static void drain(record *r)
     }
 }
 
+/* Capture until a limit, Ctrl-C, the end of COMMAND, the first failed write or the loss of the
+ * link (r->lost, with why in r->why). @return an exit code, the failure said (but not a write's
+ * or the loss's: finish_file() says those, with where the capture is). */
 static int capture(record *r, const cli_link *link, const xf_command *cmd, uint32_t *elapsed)
 {
     online_hooks hooks;
@@ -285,12 +298,17 @@ static int capture(record *r, const cli_link *link, const xf_command *cmd, uint3
         rc = run_command(r, cmd);
     }
     if (rc == XFGCU_EXIT_OK && (!r->has_spec || r->has_count || r->has_duration)) {
-        while (!done(r, xf_ms_since(xf_posix_now_ms(), start))) {
+        while (!done(r, xf_ms_since(xf_posix_now_ms(), start)) && write_error(r) == 0 && !(r->lost = link_lost(r))) {
             online_poll(r->o, 50);
         }
     }
     *elapsed = xf_ms_since(xf_posix_now_ms(), start);
-    if (rc != XFGCU_EXIT_LINK) {
+    if (r->lost) {
+        const char *why = xf_link_error(&r->o->link)->text;
+        snprintf(r->why, sizeof(r->why), "%s",
+                 xf_client_health(&r->o->client)->transport_closed && why[0] != '\0' ? why
+                                                                                     : "the GCU stopped answering");
+    } else if (rc != XFGCU_EXIT_LINK && write_error(r) == 0) {
         drain(r);
     }
     return rc;
@@ -298,16 +316,11 @@ static int capture(record *r, const cli_link *link, const xf_command *cmd, uint3
 
 /* The complete capture takes FILE's name: replacing FILE only with --force, and never a FILE
  * that appeared meanwhile without it (link() refuses an existing name, rename() would not).
- * When the link failed (@p rc), an existing FILE is kept even with --force. Whatever goes
- * wrong, the capture is never lost: it stays under its temporary name, which is said. */
-static int publish(record *r, int rc)
+ * Whatever goes wrong, the capture is never lost: it stays under its temporary name, which is
+ * said. */
+static int publish(record *r)
 {
-    struct stat st;
     int e = 0;
-    if (rc == XFGCU_EXIT_LINK && lstat(r->file, &st) == 0) {
-        cli_note("capture: the link failed: %s is kept as it was; this run's capture is %s", r->file, r->tmp);
-        return 1;
-    }
     if (r->force) {
         e = (rename(r->tmp, r->file) != 0) ? errno : 0;
     } else if (link(r->tmp, r->file) != 0) {
@@ -336,23 +349,42 @@ static int close_file(record *r)
     return err;
 }
 
+/* An incomplete capture: where it is kept (never removed: it may be all there is of what
+ * happened), and that FILE was left alone. */
+static void kept_text(const record *r, uint32_t elapsed, char *buf, size_t cap)
+{
+    struct stat st;
+    snprintf(buf, cap, "what was captured (%.2f s, %u chunks, %u bytes) is kept as %s; %s %s", cli_seconds(elapsed),
+             (unsigned)(r->pcap ? r->pw.chunks : r->w.chunks), (unsigned)(r->pcap ? r->pw.bytes : r->w.bytes), r->tmp,
+             r->file, lstat(r->file, &st) == 0 ? "is as it was" : "is not written");
+}
+
+/* The end: a complete capture (exit 0, or 1 for COMMAND's failure) takes FILE's name; any other
+ * stays under its temporary name, said in the one failure line, or in a note after the line that
+ * said why it failed. */
 static int finish_file(record *r, int rc, uint32_t elapsed)
 {
-    int err, prc;
+    char kept[2 * 4096 + 256];
+    int err;
     if (!r->begun) {
         begin_file(r, NULL, r->desc);
     }
     err = close_file(r);
+    kept_text(r, elapsed, kept, sizeof(kept));
     if (err != 0) {
-        (void)unlink(r->tmp); /* ours; FILE was never touched */
-        return cli_fail("capture: cannot write %s: %s", r->file, strerror(err));
+        return cli_fail("capture: cannot write %s: %s; %s", r->tmp, strerror(err), kept);
     }
-    prc = publish(r, rc);
-    if (prc == 1) {
-        return rc; /* kept under its temporary name (the note says where) */
+    if (r->lost) {
+        return cli_fail_link("capture: link lost on %s after %.2f s: %s; %s", r->desc, cli_seconds(elapsed), r->why,
+                             kept);
     }
-    if (prc != XFGCU_EXIT_OK) {
-        return prc;
+    if (rc != XFGCU_EXIT_OK && rc != XFGCU_EXIT_FAILED) {
+        cli_note("capture: %s", kept);
+        return rc;
+    }
+    err = publish(r);
+    if (err != XFGCU_EXIT_OK) {
+        return err;
     }
     printf("captured %.2f s on %s: %u chunks, %u bytes (%u packets sent, %u received) to %s\n", cli_seconds(elapsed),
            r->desc, (unsigned)(r->pcap ? r->pw.chunks : r->w.chunks), (unsigned)(r->pcap ? r->pw.bytes : r->w.bytes),
@@ -395,7 +427,10 @@ static int open_tmp(record *r)
 static int run_record(record *r, const cli_link *link, const xf_command *cmd)
 {
     uint32_t elapsed = 0;
-    int rc = open_tmp(r);
+    int rc;
+    /* a file size limit (ulimit -f) is a failed write, as a full disk is, not the end of the program */
+    (void)signal(SIGXFSZ, SIG_IGN);
+    rc = open_tmp(r);
     if (rc != XFGCU_EXIT_OK) {
         return rc;
     }

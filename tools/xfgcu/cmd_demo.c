@@ -332,6 +332,9 @@ static int tour(demo *d)
         if (i == 0 && d->failure[0] != '\0') {
             break; /* no link: nothing else can work */
         }
+        if (ferror(stdout)) {
+            return XFGCU_EXIT_USAGE; /* a tour nobody can read: main() says so */
+        }
     }
     if (cli_stop_requested() && d->failure[0] == '\0') {
         snprintf(d->failure, sizeof(d->failure), "interrupted at step %d", d->step);

@@ -182,7 +182,10 @@ static int read_capture(replay *r, FILE *in)
         return cli_fail("replay: out of memory");
     }
     err = capture_source_open(&src, in);
-    while (err == XF_OK && r->rc == XFGCU_EXIT_OK && (err = capture_source_next(&src, rec)) == XF_OK) {
+    /* output that cannot be written ends the reading: main() says so, at once rather than at the
+     * end of the input */
+    while (err == XF_OK && r->rc == XFGCU_EXIT_OK && !ferror(stdout) &&
+           (err = capture_source_next(&src, rec)) == XF_OK) {
         r->has_start = src.has_start;
         r->start_ms = src.start_ms;
         feed(r, rec);

@@ -452,7 +452,8 @@ static void run_sim(sim_run *s, const sim_args *a)
     xf_sim *sims[1];
     uint32_t start = xf_posix_now_ms(), elapsed = 0, stats_ms = (uint32_t)(a->stats * 1000.0 + 0.5), last_stats = start;
     sims[0] = &s->sim;
-    while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration)) {
+    /* a log (stdout) that cannot be written ends the simulator: main() says so */
+    while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration) && !ferror(stdout)) {
         uint32_t now;
         (void)xf_posix_poll(NULL, 0, sims, 1, 50);
         now = xf_posix_now_ms();

@@ -165,9 +165,13 @@ static void trace_packet(const online *o, xf_direction dir, const uint8_t *data,
         xf_gcu_packet g;
         xf_feedback fb;
         if (xf_gcu_unpack(data, len, &g) == XF_OK) {
-            int n = snprintf(extra, sizeof(extra), ", mode 0x%02X, roll %.2f pitch %.2f yaw %.2f deg",
-                             g.main.gimbal_mode, (double)xf_cdeg(g.main.cam_roll), (double)xf_cdeg(g.main.cam_pitch),
-                             (double)xf_cdeg(g.main.cam_yaw));
+            /* the unit rule: degrees, or with --raw the wire integers (monitor's names) */
+            int n = (o->opt->view == TEXT_RAW)
+                        ? snprintf(extra, sizeof(extra), ", mode 0x%02X, cam_roll %d cam_pitch %d cam_yaw %u",
+                                   g.main.gimbal_mode, g.main.cam_roll, g.main.cam_pitch, (unsigned)g.main.cam_yaw)
+                        : snprintf(extra, sizeof(extra), ", mode 0x%02X, roll %.2f pitch %.2f yaw %.2f deg",
+                                   g.main.gimbal_mode, (double)xf_cdeg(g.main.cam_roll),
+                                   (double)xf_cdeg(g.main.cam_pitch), (double)xf_cdeg(g.main.cam_yaw));
             if (n > 0 && xf_feedback_decode(order, g.params, g.params_len, &fb) == XF_OK && fb.has_state) {
                 snprintf(extra + n, sizeof(extra) - (size_t)n, ", state 0x%02X", fb.state);
             }
