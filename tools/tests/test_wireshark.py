@@ -30,7 +30,7 @@ atexit.register(shutil.rmtree, TMP, True)
 
 # decode --json keys that are not fields of the frames (the dissector has them otherwise or not at all)
 EXTRAS = {"t", "time", "direction", "version", "length", "order", "order_name", "params", "command",
-          "command_error", "feedback", "mode_name", "gimbal_model", "pod_status_order", "pod_flags"}
+          "command_error", "feedback", "mode_name", "gimbal_model", "pod_status_order", "pod_flags", "warnings"}
 # dissector fields that decode --json has no key for
 TSHARK_ONLY = {"xfgcu.crc", "xfgcu.feedback.state", "xfgcu.command", "xfgcu.feedback"}
 
@@ -159,6 +159,13 @@ def ip_packet(proto, src, dst, sport, dport, payload, seq=0, ack=0):
     return ip + l4 + payload
 
 
+def packet_lines(text):
+    """The packets of decode's or replay's JSON Lines, after checking that the last line is their summary."""
+    lines = [json.loads(line) for line in text.splitlines()]
+    assert "summary" in lines[-1] and "direction" not in lines[-1], lines[-1]
+    return lines[:-1]
+
+
 def encode(*args):
     return bytes.fromhex(run("encode", *args).stdout.strip().replace(" ", ""))
 
@@ -168,14 +175,14 @@ class RecordedPcaps(unittest.TestCase):
         pcap = os.path.join(TMP, link + ".pcap")
         with Sim(link, *extra_sim) as sim:
             run(*sim.args, *extra_cli, "capture", "--pcap", pcap, "--count", "6", "zoom-to", "--factor", "5.5")
-        packets = [json.loads(line) for line in run("decode", "--file", pcap, "--json", "--raw").stdout.splitlines()]
+        packets = packet_lines(run("decode", "--file", pcap, "--json", "--raw").stdout)
         trees = xfgcu_trees(tshark_json(pcap))
         self.assertGreaterEqual(len(packets), 12)
         self.assertEqual(len(trees), len(packets), "tshark and decode count different packets")
         for pkt, tree in zip(packets, trees):
             compare(self, pkt, tree)
         self.assertTrue(any("command" in p for p in packets) and any("feedback" in p for p in packets))
-        replayed = [json.loads(line) for line in run("replay", pcap, "--json", "--raw").stdout.splitlines()]
+        replayed = packet_lines(run("replay", pcap, "--json", "--raw").stdout)
         self.assertEqual(replayed, packets)
         return packets
 
@@ -301,7 +308,7 @@ class MadeUpPcaps(unittest.TestCase):
         ng = os.path.join(TMP, "eth.pcapng")
         subprocess.run(["editcap", "-F", "pcapng", pcap, ng], check=True, capture_output=True)
         for f in (pcap, ng):
-            out = [json.loads(x) for x in run("replay", f, "--json", "--raw").stdout.splitlines()]
+            out = packet_lines(run("replay", f, "--json", "--raw").stdout)
             self.assertEqual([o["order_name"] for o in out], ["shutter", "null"])
             self.assertEqual(run("decode", "--json", "--raw", "--file", f).stdout, run("replay", f, "--json", "--raw").stdout)
             self.assertEqual(len(xfgcu_trees(tshark_json(f))), 2)
@@ -313,7 +320,7 @@ class MadeUpPcaps(unittest.TestCase):
         trees = xfgcu_trees(tshark_json(pcap))
         self.assertEqual(len(trees), 2)
         compare(self, json.loads(run("decode", "--json", "--raw", pkt.hex()).stdout), trees[0])
-        out = run("replay", pcap, "--json", "--raw").stdout.splitlines()
+        out = packet_lines(run("replay", pcap, "--json", "--raw").stdout)
         self.assertEqual(len(out), 2)
 
 
@@ -355,25 +362,25 @@ class CaptureFiles(unittest.TestCase):
     def test_start_time(self):
         pkt = run("encode", "null").stdout.strip()
         path = self.write("start.cap", "# xfgcu capture 1\n# start 2026-11-26T10:00:00.123Z\n1.500 > %s\n" % pkt)
-        obj = json.loads(run("replay", path, "--json", "--raw").stdout)
+        obj = packet_lines(run("replay", path, "--json", "--raw").stdout)[0]
         self.assertEqual(obj["t"], 1.5)
         self.assertEqual(obj["time"], "2026-11-26T10:00:01.623Z")
         old = self.write("old.cap", "# xfgcu capture 1\n0.000 > %s\n" % pkt)  # without a start: still read
-        self.assertNotIn("time", json.loads(run("replay", old, "--json", "--raw").stdout))
+        self.assertNotIn("time", packet_lines(run("replay", old, "--json", "--raw").stdout)[0])
 
     def test_decode_logs(self):
         p, q = run("encode", "shutter").stdout.strip(), run("encode", "null").stdout.strip()
         half = (len(p) // 6) * 3  # on a byte boundary: "A8 E5 "
         log = ("12.345 %s\n[2026-11-26 10:00:00.123] %s\n2026-11-26T10:00:01.5Z %s\n[7.25] %s\n%s\n" %
                (p, q, p[:half], p[half:], q))
-        out = [json.loads(x) for x in run("decode", "--json", "--raw", stdin=log).stdout.splitlines()]
+        out = packet_lines(run("decode", "--json", "--raw", stdin=log).stdout)
         self.assertEqual([o.get("t", o.get("time")) for o in out],
                          [12.345, "2026-11-26T10:00:00.123", 7.25, 7.25])
         self.assertEqual([o["order_name"] for o in out], ["shutter", "null", "shutter", "null"])
         path = self.write("log.txt", log)
-        self.assertEqual(run("decode", "--json", "--raw", "--file", path).stdout.count("\n"), 4)
+        self.assertEqual(len(packet_lines(run("decode", "--json", "--raw", "--file", path).stdout)), 4)
         cap = self.write("t.cap", "# xfgcu capture 1\n0.250 > %s\n" % p)
-        self.assertEqual(json.loads(run("decode", "--json", "--raw", stdin=open(cap).read()).stdout)["t"], 0.25)
+        self.assertEqual(packet_lines(run("decode", "--json", "--raw", stdin=open(cap).read()).stdout)[0]["t"], 0.25)
         r = run("decode", stdin="12.345 %s zz\n" % p, check=False)
         self.assertEqual(r.returncode, 2)
         self.assertIn("line 1 column", r.stderr)

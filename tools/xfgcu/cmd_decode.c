@@ -27,6 +27,7 @@
 #include "cli.h"
 #include "hexin.h"
 #include "jsonpkt.h"
+#include "summary.h"
 #include "table.h"
 
 void help_decode(FILE *out)
@@ -301,6 +302,8 @@ typedef struct stream {
     found queue[QUEUE_MAX];
     size_t queued;
     size_t printed;
+    size_t packets[2];  /* printed, by xf_direction */
+    size_t in_packets;  /* bytes of the packets printed */
     style how;
     log_time now;     /* the time of the line being read */
     const char *name; /* "stdin" or the file */
@@ -326,6 +329,8 @@ static void emit(stream *s, const found *f)
         s->rc = print_packet(f->bytes, f->len, f->dir, where, &s->how, s->printed);
     }
     s->printed++;
+    s->packets[f->dir]++;
+    s->in_packets += f->len;
 }
 
 /* Print the queued frames that start before @p limit, earliest first. */
@@ -530,6 +535,33 @@ static int read_text(stream *s, FILE *in, int *bad, hex_fault *fault)
     return XFGCU_EXIT_OK;
 }
 
+/* The stream's last word: its packets, the bytes in none, the CRC errors and the frames the two
+ * parsers gave up (each parser reads every byte: a byte in no packet is one neither returned). */
+static int print_summary(const stream *s)
+{
+    const xf_parser_stats *h = &s->parser[XF_DIR_HOST].stats;
+    const xf_parser_stats *g = &s->parser[XF_DIR_GCU].stats;
+    text_summary sum;
+    char *text;
+    sum.host_packets = s->packets[XF_DIR_HOST];
+    sum.gcu_packets = s->packets[XF_DIR_GCU];
+    sum.bytes_skipped = (s->fed > s->in_packets) ? (uint64_t)(s->fed - s->in_packets) : 0u;
+    sum.crc_errors = (uint64_t)h->crc_errors + g->crc_errors;
+    sum.given_up = (uint64_t)h->given_up + g->given_up;
+    if (!s->how.json) {
+        putchar('\n');
+        summary_print(&sum, stdout);
+        return XFGCU_EXIT_OK;
+    }
+    text = jsonpkt_dumps(summary_json(&sum));
+    if (text == NULL) {
+        return cli_fail("decode: out of memory");
+    }
+    printf("%s\n", text);
+    free(text);
+    return XFGCU_EXIT_OK;
+}
+
 static int decode_text(FILE *in, const char *name, const style *how)
 {
     stream *s = calloc(1, sizeof(*s));
@@ -551,6 +583,8 @@ static int decode_text(FILE *in, const char *name, const style *how)
         rc = hex_error(s, &fault);
     } else if (rc == XFGCU_EXIT_OK && s->printed == 0u) {
         rc = cli_fail("decode: no valid packet in the %zu bytes read from %s", s->fed, name);
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = print_summary(s);
     }
     free(s);
     return rc;
@@ -578,7 +612,7 @@ static int decode_input(const char *file, const style *how)
         return cli_fail("decode: cannot read %s: %s", name, strerror(e));
     }
     if (c == '#' || (pcap_magic_byte(c) && (c != '\n' || file != NULL))) {
-        return replay_capture(in, name, how->json, (int)how->pod, (int)how->view, 0); /* closes in */
+        return replay_capture(in, name, how->json, (int)how->pod, (int)how->view, 1); /* closes in */
     }
     rc = decode_text(in, name, how);
     if (in != stdin) {
