@@ -582,7 +582,11 @@ static int decode_text(FILE *in, const char *name, const style *how)
     if (rc == XFGCU_EXIT_OK && bad) {
         rc = hex_error(s, &fault);
     } else if (rc == XFGCU_EXIT_OK && s->printed == 0u) {
-        rc = cli_fail("decode: no valid packet in the %zu bytes read from %s", s->fed, name);
+        uint32_t given_up = s->parser[XF_DIR_HOST].stats.given_up + s->parser[XF_DIR_GCU].stats.given_up;
+        rc = (given_up == 0u) ? cli_fail("decode: no valid packet in the %zu bytes read from %s", s->fed, name)
+                              : cli_fail("decode: no valid packet in the %zu bytes read from %s (the parsers gave up "
+                                         "%u times: false headers)",
+                                         s->fed, name, (unsigned)given_up);
     } else if (rc == XFGCU_EXIT_OK) {
         rc = print_summary(s);
     }

@@ -341,6 +341,7 @@ static void json_ready(const sim_run *s, const sim_args *a)
         json_object_set_new(obj, "protocol", json_integer(a->version));
         json_object_set_new(obj, "state_once", json_boolean(a->state_once));
         json_object_set_new(obj, "answer_only", a->has_answer_only ? json_integer(a->answer_only) : json_null());
+        json_object_set_new(obj, "main_camera", json_integer(a->has_main_camera ? a->main_camera : 1));
         json_object_set_new(obj, "pid", json_integer((json_int_t)getpid()));
     }
     (void)cli_json_line(obj);
