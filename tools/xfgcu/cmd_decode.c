@@ -59,7 +59,13 @@ void help_decode(FILE *out)
           "            that leaves the reserved bits clear; little-endian, the documented order,\n"
           "            when both or neither do. The vendor's own example reads it big-endian.\n"
           "Without --json: a table of field, raw value and engineering value (docs/protocol.md,\n"
-          "\"Units\").\n",
+          "\"Units\").\n\n"
+          "What the vendor's text does not allow (a yaw outside [0, 360), INS valid with a zero\n"
+          "attitude, record 0x00, a wrong parameter length...) is a warning, never a refusal: a\n"
+          "\"warnings\" list in the JSON, a \"warning:\" line each in the table (docs/protocol.md\n"
+          "section 13). A stream (stdin, --file) ends with a summary: packets, bytes skipped, CRC\n"
+          "errors and the frames the parsers gave up; with --json the line {\"summary\": {...}},\n"
+          "which `xfgcu encode --json` skips.\n",
           out);
 }
 

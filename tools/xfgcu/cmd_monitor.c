@@ -58,7 +58,11 @@ void help_monitor(FILE *out)
           "                open and the first reply. Default: on a terminal, until Ctrl-C; otherwise\n"
           "                --timeout, as --wait 0\n"
           "Without --count or --duration it runs until Ctrl-C (exit 0). A lost link is shown (with\n"
-          "--json: a link event, and a note on stderr) and the link is retried.\n\n",
+          "--json: a link event, and a note on stderr) and the link is retried.\n"
+          "The client's health is shown too (the protocol version the GCU answered, whether the link\n"
+          "keeps order, the reorder bound, replies out of turn, frames given up): a row of the\n"
+          "screen, the end of each plain line, {\"event\": \"health\", ...} with --json. What the\n"
+          "vendor's text does not allow in a reply is warned about (decode --help).\n\n",
           out);
     help_link_options(out);
     fputs("\nexample: xfgcu --udp 192.168.144.108 monitor --json --count 50 > telemetry.jsonl\n", out);
