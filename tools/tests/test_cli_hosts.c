@@ -260,7 +260,7 @@ static void test_given_up(void **state)
     (void)state;
     hex_line(bytes, n, text);
     reference(bytes, n, 64u, &frames, &given_up); /* decode feeds its parsers 64 bytes at a time */
-    assert_true(given_up > 0u); /* the stream is hostile enough to show the figure */
+    assert_true(given_up > 0u);                   /* the stream is hostile enough to show the figure */
     r = run_tool(text, "decode", "--json", NULL);
     assert_int_equal(r.status, 0);
     sum = cut_summary(&r);
@@ -409,8 +409,8 @@ static void test_ardupilot_session(void **state)
     n = ap_command_frame(XF_ORDER_RECORD, 0x01u, pkt);
     (void)drive(&d, pkt, n, &g);
     assert_int_equal(g.params[0], XF_STATE_SUCCESS);
-    assert_int_equal(g.sub.sub_header, 0u);  /* a command frame asks for no sub frame (byte 36 is 0) */
-    (void)drive(&d, angle, an, &g);          /* an angle frame asks for it */
+    assert_int_equal(g.sub.sub_header, 0u); /* a command frame asks for no sub frame (byte 36 is 0) */
+    (void)drive(&d, angle, an, &g);         /* an angle frame asks for it */
     assert_true((g.sub.camera_status & XF_CAMERA_RECORDING) != 0u);
     n = ap_command_frame(XF_ORDER_RECORD, 0x00u, pkt);
     (void)drive(&d, pkt, n, &g);

@@ -178,9 +178,8 @@ static void test_probe_default_readings(void **state)
     assert_string_equal(str_key(json_object_get(report, "link"), "protocol_setting"), "auto");
     (void)int_key(json_object_get(report, "health"), "out_of_turn");
     json_decref(report);
-    assert_int_equal(sim_log_line(s, "note: open question 1: zoom_stop (0x24) with 2 parameter bytes", 3000, line,
-                                  sizeof(line)),
-                     0);
+    assert_int_equal(
+        sim_log_line(s, "note: open question 1: zoom_stop (0x24) with 2 parameter bytes", 3000, line, sizeof(line)), 0);
 }
 
 /* A GCU that answers version 2 only and sends the state once: both answers differ. */

@@ -45,16 +45,22 @@ static json_t *object_key(const json_t *obj, const char *key)
     return v;
 }
 
+/* The "health" object of send --json's line in @p r (its status checked); *top is the line's
+ * object, for the caller to free. */
+static json_t *health_of(const tool_result *r, json_t **top)
+{
+    assert_int_equal(r->status, 0);
+    *top = parse_line(r->out);
+    return object_key(*top, "health");
+}
+
 /* send --json shutter on @p s: the version answered, at the top and in the health object. */
 static void expect_answered(const sim_proc *s, int version)
 {
     tool_result r = sim_run_on(s, "send", "--json", "shutter", NULL);
-    json_t *o, *h;
-    assert_int_equal(r.status, 0);
-    o = parse_line(r.out);
+    json_t *o, *h = health_of(&r, &o);
     assert_string_equal(str_key(o, "status"), "ok");
     assert_int_equal(int_key(o, "version_answered"), version);
-    h = object_key(o, "health");
     assert_string_equal(str_key(h, "version_setting"), "auto");
     assert_int_equal(int_key(h, "version_answered"), version);
     assert_int_equal(int_key(h, "version_sent"), version);
@@ -147,8 +153,8 @@ static void test_silence_says_what_to_try(void **state)
     sim_start(s, SIM_TCP, "--drop", "1000", NULL);
     r = sim_run_on(s, "--timeout", "1000", "send", "shutter", NULL);
     assert_failure(&r, 3, "no answer from the GCU on tcp 127.0.0.1:", "within 1000 ms",
-                   "(protocol versions 1 and 2 tried)", "check the address and TCP port",
-                   "the GCU's power and wiring", "then try 'xfgcu probe' on this link", NULL);
+                   "(protocol versions 1 and 2 tried)", "check the address and TCP port", "the GCU's power and wiring",
+                   "then try 'xfgcu probe' on this link", NULL);
     tool_result_free(&r);
     r = sim_run_on(s, "--timeout", "1000", "monitor", "--json", NULL);
     assert_failure(&r, 3, "no answer from the GCU", "power and wiring", NULL);
@@ -161,16 +167,20 @@ static void test_silence_says_what_to_try(void **state)
     tool_result_free(&r);
 }
 
-/* The client's judgement of the link in send --json and --verbose; --reorder fixes the bound. */
+/* The client's judgement of the link in send --json and --verbose; --reorder fixes the bound, 0
+ * included (the client then uses no bound of its own). */
 static void test_send_health(void **state)
 {
     sim_proc *s = (sim_proc *)*state;
+    static const struct {
+        const char *value;
+        int reorder_ms;
+    } fixed[] = {{"50", 50}, {"0", 0}};
+    size_t i;
     tool_result r;
     json_t *o, *h;
     r = sim_run_on(s, "send", "--json", "shutter", NULL);
-    assert_int_equal(r.status, 0);
-    o = parse_line(r.out);
-    h = object_key(o, "health");
+    h = health_of(&r, &o);
     assert_true(json_is_boolean(json_object_get(h, "in_order")));
     assert_true(int_key(h, "out_of_turn") >= 0);
     assert_true(int_key(h, "reorder_ms") >= 0);
@@ -179,26 +189,16 @@ static void test_send_health(void **state)
     assert_true(int_key(h, "replies") >= 1);
     json_decref(o);
     tool_result_free(&r);
-    r = sim_run_on(s, "--reorder", "50", "send", "--json", "shutter", NULL);
-    assert_int_equal(r.status, 0);
-    o = parse_line(r.out);
-    h = object_key(o, "health");
-    assert_true(json_is_true(json_object_get(h, "reorder_fixed")));
-    assert_int_equal(int_key(h, "reorder_ms"), 50);
-    json_decref(o);
-    tool_result_free(&r);
-    r = sim_run_on(s, "send", "--json", "shutter", "--reorder", "0", NULL); /* fixed at 0: no bound of its own */
-    assert_int_equal(r.status, 0);
-    o = parse_line(r.out);
-    h = object_key(o, "health");
-    assert_true(json_is_true(json_object_get(h, "reorder_fixed")));
-    assert_int_equal(int_key(h, "reorder_ms"), 0);
-    json_decref(o);
-    tool_result_free(&r);
+    for (i = 0; i < sizeof(fixed) / sizeof(fixed[0]); i++) {
+        r = sim_run_on(s, "send", "--json", "shutter", "--reorder", fixed[i].value, NULL);
+        h = health_of(&r, &o);
+        assert_true(json_is_true(json_object_get(h, "reorder_fixed")));
+        assert_int_equal(int_key(h, "reorder_ms"), fixed[i].reorder_ms);
+        json_decref(o);
+        tool_result_free(&r);
+    }
     r = sim_run_on(s, "--protocol", "2", "send", "--json", "shutter", NULL); /* sent 2; the GCU speaks 1 */
-    assert_int_equal(r.status, 0);
-    o = parse_line(r.out);
-    h = object_key(o, "health");
+    h = health_of(&r, &o);
     assert_int_equal(int_key(h, "version_setting"), 2);
     assert_int_equal(int_key(h, "version_answered"), 2);
     assert_int_equal(int_key(h, "gcu_version"), 1);

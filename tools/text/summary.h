@@ -20,12 +20,13 @@ typedef struct text_summary {
     uint64_t given_up;      /**< times a parser gave up looking at headers (xf_parser_stats.given_up) */
 } text_summary;
 
-/** "12 packets: 6 host to GCU, 6 GCU to host; 3 bytes skipped, 0 CRC errors, 0 frames given up\n". */
-void summary_print(const text_summary *s, FILE *out);
-
-/** {"summary": {"packets", "host_packets", "gcu_packets", "bytes_skipped", "crc_errors", "given_up"}};
- *  NULL if out of memory. */
-json_t *summary_json(const text_summary *s);
+/**
+ * Print the summary on @p out: as the text line "12 packets: 6 host to GCU, 6 GCU to host; 3 bytes
+ * skipped, 0 CRC errors, 0 frames given up", or with @p json as the line {"summary": {"packets",
+ * "host_packets", "gcu_packets", "bytes_skipped", "crc_errors", "given_up"}}.
+ * @return TEXT_OK, or TEXT_BAD when out of memory (nothing printed)
+ */
+int summary_print(const text_summary *s, int json, FILE *out);
 
 /** Is @p obj a line of the program's JSON that is no packet: a summary, or an event (monitor, sim)? */
 int summary_not_packet(const json_t *obj);

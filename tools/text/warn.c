@@ -114,8 +114,9 @@ static void check_control(const uint8_t *buf, warn_list *w)
         const xf_wire_field *f = xf_wire_field_find(XF_WIRE_HOST, names[i]);
         int64_t v = xf_wire_field_get(f, buf);
         if (v < -18000 || v > 18000) {
-            add(w, "%s %lld is valid but outside [-18000, 18000], the range of an angle (0.01 deg; a rate's is "
-                   "[-1500, 1500])",
+            add(w,
+                "%s %lld is valid but outside [-18000, 18000], the range of an angle (0.01 deg; a rate's is "
+                "[-1500, 1500])",
                 names[i], (long long)v);
         }
     }

@@ -31,8 +31,8 @@
 
 /** The warnings of one packet, each one line without a newline. */
 typedef struct warn_list {
-    size_t n;                      /**< warnings in text[] */
-    size_t more;                   /**< warnings beyond WARN_MAX, not kept */
+    size_t n;                       /**< warnings in text[] */
+    size_t more;                    /**< warnings beyond WARN_MAX, not kept */
     char text[WARN_MAX][WARN_TEXT]; /**< "carrier_yaw 54537 (545.37 deg) is outside ..." */
 } warn_list;
 

@@ -308,8 +308,8 @@ typedef struct stream {
     found queue[QUEUE_MAX];
     size_t queued;
     size_t printed;
-    size_t packets[2];  /* printed, by xf_direction */
-    size_t in_packets;  /* bytes of the packets printed */
+    size_t packets[2]; /* printed, by xf_direction */
+    size_t in_packets; /* bytes of the packets printed */
     style how;
     log_time now;     /* the time of the line being read */
     const char *name; /* "stdin" or the file */
@@ -548,7 +548,6 @@ static int print_summary(const stream *s)
     const xf_parser_stats *h = &s->parser[XF_DIR_HOST].stats;
     const xf_parser_stats *g = &s->parser[XF_DIR_GCU].stats;
     text_summary sum;
-    char *text;
     sum.host_packets = s->packets[XF_DIR_HOST];
     sum.gcu_packets = s->packets[XF_DIR_GCU];
     sum.bytes_skipped = (s->fed > s->in_packets) ? (uint64_t)(s->fed - s->in_packets) : 0u;
@@ -556,16 +555,8 @@ static int print_summary(const stream *s)
     sum.given_up = (uint64_t)h->given_up + g->given_up;
     if (!s->how.json) {
         putchar('\n');
-        summary_print(&sum, stdout);
-        return XFGCU_EXIT_OK;
     }
-    text = jsonpkt_dumps(summary_json(&sum));
-    if (text == NULL) {
-        return cli_fail("decode: out of memory");
-    }
-    printf("%s\n", text);
-    free(text);
-    return XFGCU_EXIT_OK;
+    return summary_print(&sum, s->how.json, stdout) == TEXT_OK ? XFGCU_EXIT_OK : cli_fail("decode: out of memory");
 }
 
 static int decode_text(FILE *in, const char *name, const style *how)

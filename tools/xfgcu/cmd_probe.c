@@ -651,7 +651,9 @@ static void print_gimbal(const probe *p)
            (unsigned)xf_client_health(&p->o->client)->version_sent);
     printf("version      it answered packets of version %u (--protocol %s)\n",
            (unsigned)xf_client_health(&p->o->client)->version_answered,
-           p->o->opt->version_auto ? "auto" : p->o->opt->protocol == XF_PROTOCOL_V2 ? "2" : "1");
+           p->o->opt->version_auto                 ? "auto"
+           : p->o->opt->protocol == XF_PROTOCOL_V2 ? "2"
+                                                   : "1");
     printf("pod status   %s\n", order == XF_POD_ORDER_LE   ? "little-endian (the words it sent tell)"
                                 : order == XF_POD_ORDER_BE ? "big-endian (the words it sent tell)"
                                                            : "byte order undecided: every word it sent reads the "

@@ -203,24 +203,14 @@ static int print_summary(const replay *r)
 {
     const xf_parser_stats *h = &r->parser[XF_DIR_HOST].stats, *g = &r->parser[XF_DIR_GCU].stats;
     text_summary sum;
-    char *text;
     sum.host_packets = r->packets[XF_DIR_HOST];
     sum.gcu_packets = r->packets[XF_DIR_GCU];
     sum.bytes_skipped = (uint64_t)h->bytes_skipped + g->bytes_skipped;
     sum.crc_errors = (uint64_t)h->crc_errors + g->crc_errors;
     sum.given_up = (uint64_t)h->given_up + g->given_up;
-    if (r->style != STYLE_JSON) {
-        fputs(r->style == STYLE_TABLE ? "\n" : "", stdout);
-        summary_print(&sum, stdout);
-        return XFGCU_EXIT_OK;
-    }
-    text = jsonpkt_dumps(summary_json(&sum));
-    if (text == NULL) {
-        return cli_fail("%s: out of memory", r->file);
-    }
-    printf("%s\n", text);
-    free(text);
-    return XFGCU_EXIT_OK;
+    fputs(r->style == STYLE_TABLE ? "\n" : "", stdout);
+    return summary_print(&sum, r->style == STYLE_JSON, stdout) == TEXT_OK ? XFGCU_EXIT_OK
+                                                                          : cli_fail("%s: out of memory", r->file);
 }
 
 /* ---- the command ------------------------------------------------------------------------ */

@@ -77,8 +77,7 @@ static void result_json(const online *o, const xf_cmd_result *r, const char *nam
     if (obj != NULL) {
         json_object_set_new(obj, "command", json_string(name));
         json_object_set_new(obj, "link", json_string(o->desc));
-        json_object_set_new(obj, "version_answered",
-                            json_integer(xf_client_health(&o->client)->version_answered));
+        json_object_set_new(obj, "version_answered", json_integer(xf_client_health(&o->client)->version_answered));
         json_object_set_new(obj, "health", online_health_json(o));
     }
     (void)cli_json_line(obj);
@@ -130,8 +129,8 @@ int cmd_send(const cli_link *link, int argc, char **argv)
 {
     cmd_line l;
     cli_link with_version;
-    int rc = cmd_line_parse(&l, "send", link->version_auto ? (uint8_t)CMDLINE_AUTO : link->protocol, 0, help_send,
-                            argc, argv);
+    int rc = cmd_line_parse(&l, "send", link->version_auto ? (uint8_t)CMDLINE_AUTO : link->protocol, 0, help_send, argc,
+                            argv);
     if (rc != XFGCU_EXIT_OK || l.help) {
         return rc;
     }

@@ -16,7 +16,7 @@
 #define CMDLINE_JSON    2 /**< send's --json: the result as one JSON object */
 #define CMDLINE_VERBOSE 4 /**< send's --verbose: the link's health after the result */
 
-#define CMDLINE_AUTO 0 /**< cmd_line.version of send's --protocol auto: checked for both versions, built later */
+#define CMDLINE_AUTO 0  /**< cmd_line.version of send's --protocol auto: checked for both versions, built later */
 #define CMDLINE_ARGS 32 /**< named arguments of one command: more is a usage error */
 
 typedef struct cmd_line {

@@ -592,8 +592,7 @@ xf_err online_raw_send(online *o, const uint8_t *data, size_t len)
     return err;
 }
 
-unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const uint8_t *data, size_t len),
-                         void *user)
+unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const uint8_t *data, size_t len), void *user)
 {
     xf_parser parser;
     uint8_t buf[256];

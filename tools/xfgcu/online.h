@@ -58,14 +58,14 @@ typedef struct online {
     xf_tap tap;
     xf_hal hal; /* what the client uses: raw, or tapped */
     xf_client client;
-    uint32_t up_ms;        /* how long the first reply took */
-    uint32_t t0_ms;        /* xf_posix_now_ms() when the link opened: --trace's and --json's times count from here */
-    online_hooks hooks;    /* the command's callbacks, called after --trace's */
-    int client_on;         /* the client was started: online_free() lets it settle first */
-    unsigned submit_flags; /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
-    uint32_t wait_ms;      /* set before online_open() (monitor --wait): 0, --timeout as usual; else how long the
-                              link may take to open and the GCU to answer first, ONLINE_WAIT_FOREVER: until a signal */
-    int wait_note;         /* print one note on stderr when the wait goes on past --timeout (a person is watching) */
+    uint32_t up_ms;         /* how long the first reply took */
+    uint32_t t0_ms;         /* xf_posix_now_ms() when the link opened: --trace's and --json's times count from here */
+    online_hooks hooks;     /* the command's callbacks, called after --trace's */
+    int client_on;          /* the client was started: online_free() lets it settle first */
+    unsigned submit_flags;  /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
+    uint32_t wait_ms;       /* set before online_open() (monitor --wait): 0, --timeout as usual; else how long the
+                               link may take to open and the GCU to answer first, ONLINE_WAIT_FOREVER: until a signal */
+    int wait_note;          /* print one note on stderr when the wait goes on past --timeout (a person is watching) */
     unsigned versions_sent; /* a bit per version byte the client has sent (1u << version): what a silence tried */
 } online;
 
@@ -180,8 +180,7 @@ xf_err online_raw_send(online *o, const uint8_t *data, size_t len);
  * GCU packet goes to @p got (traced with --trace); other bytes are dropped. @return the number of
  * GCU packets read
  */
-unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const uint8_t *data, size_t len),
-                         void *user);
+unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const uint8_t *data, size_t len), void *user);
 
 /** The telemetry's attitude as "roll 0.00 pitch -30.00 yaw 45.00 deg". */
 void online_attitude_text(const xf_telemetry *t, char *buf, size_t cap);

@@ -19,7 +19,7 @@
 static const struct {
     const char *title;
     const char *not_asked;
-} rows[ASK_QUESTIONS] = {
+} open_rows[ASK_QUESTIONS] = {
     {"a parameter of the wrong length", NULL},
     {"a parameter outside the range of the GCU's version",
      "needs palette or pip beyond a version's range: they change a setting the GCU does not report"},
@@ -93,7 +93,9 @@ static xf_err send_packet(online *o, uint8_t version, uint8_t order, const uint8
     xf_host_packet_init(&p, version);
     p.order = order;
     p.params_len = n;
-    memcpy(p.params, params, n);
+    if (n > 0u) {
+        memcpy(p.params, params, n);
+    }
     return xf_host_pack(&p, buf, sizeof(buf), &len) == XF_OK ? online_raw_send(o, buf, len) : XF_ERR_ARG;
 }
 
@@ -144,8 +146,8 @@ static void ask_versions(online *o, ask_report *r)
     ask_answer *a;
     exchange(o, other, XF_ORDER_NULL, NULL, 0u, &h);
     if (h.replies > 0u) {
-        a = answer(r, 7, 1, "yes: it answers version 1 and version 2 (%u replies to %u nulls of version %u)",
-                   h.replies, REPEATS, other);
+        a = answer(r, 7, 1, "yes: it answers version 1 and version 2 (%u replies to %u nulls of version %u)", h.replies,
+                   REPEATS, other);
     } else {
         a = answer(r, 7, 1, "no: it answers version %u only (%u nulls of version %u got no reply)", answered, REPEATS,
                    other);
@@ -166,11 +168,13 @@ static void ask_repeats(online *o, ask_report *r, uint8_t version)
     } else if (h.with_state == h.of_order) {
         a = answer(r, 8, 1, "yes: all %u replies to zoom_stop sent %u times in a row carried it", h.of_order, REPEATS);
     } else {
-        a = answer(r, 8, 1, "no: %u of %u replies to zoom_stop sent %u times in a row carried it, the others were 72 "
-                   "bytes", h.with_state, h.of_order, REPEATS);
+        a = answer(r, 8, 1,
+                   "no: %u of %u replies to zoom_stop sent %u times in a row carried it, the others were 72 "
+                   "bytes",
+                   h.with_state, h.of_order, REPEATS);
     }
-    a->detail = json_pack("{s:i, s:i, s:i}", "sent", (int)REPEATS, "replies", (int)h.of_order, "with_state",
-                          (int)h.with_state);
+    a->detail =
+        json_pack("{s:i, s:i, s:i}", "sent", (int)REPEATS, "replies", (int)h.of_order, "with_state", (int)h.with_state);
 }
 
 /* 1: zoom stop with two parameter bytes (01 00) instead of one: whatever a GCU reads, it stops a
@@ -241,8 +245,9 @@ void ask_init(ask_report *r)
     memset(r, 0, sizeof(*r));
     for (i = 0; i < ASK_QUESTIONS; i++) {
         r->q[i].number = (uint8_t)(i + 1u);
-        r->q[i].title = rows[i].title;
-        (void)answer(r, i + 1u, 0, "%s", rows[i].not_asked != NULL ? rows[i].not_asked : "the probe stopped before it");
+        r->q[i].title = open_rows[i].title;
+        (void)answer(r, i + 1u, 0, "%s",
+                     open_rows[i].not_asked != NULL ? open_rows[i].not_asked : "the probe stopped before it");
     }
 }
 

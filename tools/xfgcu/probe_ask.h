@@ -22,11 +22,11 @@
 
 /** One question: its row in docs/protocol.md section 12, and what the gimbal answered or why not asked. */
 typedef struct ask_answer {
-    uint8_t number;     /* the row */
-    const char *title;  /* a few words */
-    int asked;          /* 1: asked (answer is the finding); 0: not asked (answer is why) */
-    char answer[240];   /* one line */
-    json_t *detail;     /* the figures behind the answer (an object), or NULL */
+    uint8_t number;    /* the row */
+    const char *title; /* a few words */
+    int asked;         /* 1: asked (answer is the finding); 0: not asked (answer is why) */
+    char answer[240];  /* one line */
+    json_t *detail;    /* the figures behind the answer (an object), or NULL */
 } ask_answer;
 
 typedef struct ask_report {
