@@ -12,10 +12,10 @@
 
 static json_t *summary_json(const text_summary *s)
 {
-    json_t *in = json_pack("{s:I, s:I, s:I, s:I, s:I, s:I}", "packets", (json_int_t)(s->host_packets + s->gcu_packets),
-                           "host_packets", (json_int_t)s->host_packets, "gcu_packets", (json_int_t)s->gcu_packets,
-                           "bytes_skipped", (json_int_t)s->bytes_skipped, "crc_errors", (json_int_t)s->crc_errors,
-                           "given_up", (json_int_t)s->given_up);
+    json_t *in = json_pack(
+        "{s:I, s:I, s:I, s:I, s:I, s:I}", "packets", (json_int_t)s->host_packets + (json_int_t)s->gcu_packets,
+        "host_packets", (json_int_t)s->host_packets, "gcu_packets", (json_int_t)s->gcu_packets, "bytes_skipped",
+        (json_int_t)s->bytes_skipped, "crc_errors", (json_int_t)s->crc_errors, "given_up", (json_int_t)s->given_up);
     return (in != NULL) ? json_pack("{s:o}", "summary", in) : NULL;
 }
 
