@@ -72,13 +72,14 @@ static size_t check_gcu_lines(const char *text, uint8_t version)
     return n;
 }
 
-/* The attitude the simulator reports now (raw 0.01 deg), through monitor --json --raw --count 1. */
+/* The attitude the simulator reports now (raw 0.01 deg), through monitor --json --raw --count 1: its
+ * one packet (the first line; the client's health event follows it). */
 static void attitude(const sim_proc *s, long *pitch, long *yaw)
 {
     tool_result r = sim_run_on(s, "monitor", "--json", "--raw", "--count", "1", NULL);
     json_t *obj;
     assert_int_equal(r.status, 0);
-    assert_int_equal(count_lines(r.out), 1);
+    assert_int_equal(count_packet_lines(r.out), 1);
     obj = parse_line(r.out);
     *pitch = (long)int_key(obj, "cam_pitch");
     *yaw = (long)int_key(obj, "cam_yaw");

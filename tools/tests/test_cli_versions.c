@@ -238,6 +238,12 @@ static void test_monitor_health(void **state)
     }
     assert_true(health >= 1);
     tool_result_free(&r);
+    r = sim_run_on(s, "monitor", "--json", "--count", "1", NULL); /* the packet, then the health */
+    assert_int_equal(r.status, 0);
+    assert_int_equal(count_lines(r.out), 2);
+    assert_int_equal(count_packet_lines(r.out), 1);
+    assert_non_null(strstr(r.out, "\"event\":\"health\""));
+    tool_result_free(&r);
     r = sim_run_on(s, "monitor", "--duration", "0.5", NULL);
     assert_int_equal(r.status, 0);
     assert_non_null(strstr(r.out, "  health: protocol version 1 answered (auto), link "));

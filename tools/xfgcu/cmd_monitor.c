@@ -422,13 +422,15 @@ static void run_loop(monitor *m)
 {
     uint32_t start = xf_posix_now_ms(), last = 0, elapsed = 0;
     int first = 1;
+    if (m->json) {
+        show_health(m, 1); /* the GCU is up: which version it answered, even with --count 1 */
+    }
     /* the first line always (--count 1: the packet that came while the link opened is counted) */
     while ((first && !m->json) || !finished(m, elapsed)) {
         uint32_t period = m->tty ? SCREEN_MS : LINE_MS;
         if (m->json) {
-            show_health(m, first);
-        }
-        if (!m->json && (first || xf_ms_since(elapsed, last) >= period)) {
+            show_health(m, 0);
+        } else if (first || xf_ms_since(elapsed, last) >= period) {
             if (m->tty) {
                 draw_screen(m);
             } else {
@@ -438,7 +440,6 @@ static void run_loop(monitor *m)
             last = elapsed;
             first = 0;
         }
-        first = m->json ? 0 : first;
         online_poll(m->o, 50);
         elapsed = xf_ms_since(xf_posix_now_ms(), start);
     }
