@@ -232,6 +232,44 @@ void seal_packet(uint8_t *bytes, size_t len)
     bytes[len - 1u] = (uint8_t)(crc & 0xFFu);
 }
 
+json_t *cut_summary(tool_result *r)
+{
+    char *last;
+    json_t *obj, *summary;
+    if (r->out_len == 0u || r->out[r->out_len - 1u] != '\n') {
+        print_error("no summary line: %s\n", r->out);
+        fail();
+    }
+    r->out[r->out_len - 1u] = '\0';
+    last = strrchr(r->out, '\n');
+    last = (last != NULL) ? last + 1 : r->out;
+    obj = parse_line(last);
+    summary = json_object_get(obj, "summary");
+    if (!json_is_object(summary) || json_object_get(obj, "direction") != NULL) {
+        print_error("the last line is no summary: %s\n", last);
+        fail();
+    }
+    json_incref(summary);
+    json_decref(obj);
+    *last = '\0';
+    r->out_len = (size_t)(last - r->out);
+    return summary;
+}
+
+size_t count_packet_lines(const char *text)
+{
+    size_t n = 0;
+    const char *p = text;
+    while (*p != '\0') {
+        size_t len = strcspn(p, "\n");
+        json_t *obj = parse_line(p);
+        n += json_object_get(obj, "direction") != NULL;
+        json_decref(obj);
+        p += len + (p[len] == '\n');
+    }
+    return n;
+}
+
 json_t *parse_line(const char *text)
 {
     json_error_t e;

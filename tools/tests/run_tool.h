@@ -33,6 +33,15 @@ size_t count_lines(const char *text);
  */
 void assert_failure(const tool_result *r, int status, ...);
 
+/**
+ * The summary line that ends the JSON of decode (of a stream) and replay: checked to be one
+ * ({"summary": {...}}, no "direction"), cut from r->out, and its inner object returned (the
+ * caller frees it).
+ */
+json_t *cut_summary(tool_result *r);
+/** The lines of @p text (JSON Lines) that are packets (have "direction"), not events or summaries. */
+size_t count_packet_lines(const char *text);
+
 /** The JSON object on the first line of @p text (fails the test if it is not JSON). */
 json_t *parse_line(const char *text);
 /** The integer under @p key (fails the test if there is none). */

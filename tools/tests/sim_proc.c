@@ -20,6 +20,7 @@
 #include <time.h>
 #include <unistd.h>
 #include <cmocka.h>
+#include <jansson.h>
 
 extern char **environ;
 
@@ -96,11 +97,33 @@ static pid_t spawn_sim(int argc, char **argv, int out[2])
     return pid;
 }
 
+/* sim --json: the ready line is {"event": "listening", "port": N, ...} or {..., "path": PATH}. */
+static void parse_ready_json(sim_proc *s)
+{
+    json_error_t e;
+    json_t *o = json_loads(s->line, 0, &e);
+    const char *event = json_string_value(json_object_get(o, "event"));
+    if (event == NULL || strcmp(event, "listening") != 0) {
+        print_error("unexpected ready line: \"%s\"\n", s->line);
+        fail();
+    }
+    if (s->link == SIM_PTY) {
+        snprintf(s->path, sizeof(s->path), "%s", json_string_value(json_object_get(o, "path")));
+    } else {
+        snprintf(s->port, sizeof(s->port), "%d", (int)json_integer_value(json_object_get(o, "port")));
+    }
+    json_decref(o);
+}
+
 static void parse_ready(sim_proc *s)
 {
     const char *want = (s->link == SIM_TCP)   ? "xfgcu sim: listening on tcp 127.0.0.1:"
                        : (s->link == SIM_UDP) ? "xfgcu sim: listening on udp 127.0.0.1:"
                                               : "xfgcu sim: listening on pty ";
+    if (s->line[0] == '{') {
+        parse_ready_json(s);
+        return;
+    }
     if (strncmp(s->line, want, strlen(want)) != 0) {
         print_error("unexpected ready line: \"%s\"\n", s->line);
         fail();
@@ -194,6 +217,20 @@ void sim_read_log(const sim_proc *s, char *log, size_t cap, size_t *len, sim_log
         *len += (size_t)got;
         log[*len] = '\0';
     }
+}
+
+int sim_log_line(sim_proc *s, const char *needle, long ms, char *buf, size_t cap)
+{
+    long end = now_ms() + ms;
+    while (now_ms() < end) {
+        if (read_line(s->out_fd, buf, cap, end - now_ms()) != 0) {
+            break;
+        }
+        if (strstr(buf, needle) != NULL) {
+            return 0;
+        }
+    }
+    return -1;
 }
 
 int sim_link_args(const sim_proc *s, const char **args)

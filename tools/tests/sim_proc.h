@@ -27,7 +27,7 @@ typedef struct sim_proc {
 /**
  * Start `xfgcu sim` on @p link (port 0: any free one) with @p extra
  * arguments (NULL-terminated list, may be empty) and wait for its ready
- * line (20 s at most: far more than it takes on any load; a failure fails the test).
+ * line, text or --json's (20 s at most: far more than it takes on any load; a failure fails the test).
  */
 void sim_start(sim_proc *s, sim_link link, ...);
 
@@ -44,6 +44,12 @@ typedef int (*sim_log_enough_fn)(const char *log, const void *user);
  * one more line, which would be one too many, shows.
  */
 void sim_read_log(const sim_proc *s, char *log, size_t cap, size_t *len, sim_log_enough_fn enough, const void *user);
+
+/**
+ * Read the simulator's log (its stdout after the ready line) until a line holding @p needle, for
+ * at most @p ms; the line goes to @p buf. @return 0 when found, -1 when not within the time
+ */
+int sim_log_line(sim_proc *s, const char *needle, long ms, char *buf, size_t cap);
 
 /** The link options that reach it: "--tcp 127.0.0.1:PORT", UDP with --gcu-port and --local-port 0, or --serial PATH. */
 int sim_link_args(const sim_proc *s, const char **args);

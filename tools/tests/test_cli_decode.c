@@ -557,6 +557,11 @@ static void test_stdin_noisy(void **state)
     r = run_tool(input, "decode", "--json", NULL);
     assert_int_equal(r.status, 0);
     assert_int_equal(r.err_len, 0);
+    o = cut_summary(&r); /* the stream's last word: two packets, no frame given up */
+    assert_int_equal(int_key(o, "host_packets"), 1);
+    assert_int_equal(int_key(o, "gcu_packets"), 1);
+    assert_int_equal(int_key(o, "given_up"), 0);
+    json_decref(o);
     assert_int_equal(count_lines(r.out), 2);
     o = parse_line(r.out);
     assert_true(num_key(o, "vel_east") == -21.12);
@@ -593,6 +598,7 @@ static void test_stdin_stream_order(void **state)
     snprintf(input, sizeof(input), "A8 E5 F0 00\n%s%s", a, g);
     r = run_tool(input, "decode", "--json", NULL);
     assert_int_equal(r.status, 0);
+    json_decref(cut_summary(&r));
     assert_int_equal(count_lines(r.out), 2);
     assert_non_null(strstr(r.out, "{\"direction\":\"host\""));
     assert_true(strstr(r.out, "\"direction\":\"host\"") < strstr(r.out, "\"direction\":\"gcu\""));
@@ -600,6 +606,7 @@ static void test_stdin_stream_order(void **state)
 
     snprintf(input, sizeof(input), "%s A8 E5 F0 00 %s", g, a);
     r = run_tool(input, "decode", "--json", NULL);
+    json_decref(cut_summary(&r));
     assert_int_equal(count_lines(r.out), 2);
     assert_true(strstr(r.out, "\"direction\":\"gcu\"") < strstr(r.out, "\"direction\":\"host\""));
     tool_result_free(&r);

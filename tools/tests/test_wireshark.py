@@ -64,11 +64,20 @@ def tshark(pcap, *args, home=None):
     return r.stdout
 
 
+def packet_lines(text):
+    """The packets of decode's or replay's JSON Lines; a stream's ends with its summary, checked here."""
+    lines = [json.loads(line) for line in text.splitlines()]
+    if lines and "summary" in lines[-1]:
+        assert "direction" not in lines[-1], lines[-1]
+        lines.pop()
+    return lines
+
+
 def decoded(source, raw=False):
     """decode --json of a pcap (a path) or of one packet (bytes), as a list of objects."""
     args = ["decode", "--json"] + (["--raw"] if raw else [])
     args += [source.hex()] if isinstance(source, bytes) else ["--file", source]
-    return [json.loads(line) for line in run(*args).stdout.splitlines()]
+    return packet_lines(run(*args).stdout)
 
 
 class Tree:
@@ -641,7 +650,7 @@ def test_ethernet_and_pcapng(tmp):
     ng = os.path.join(tmp, "eth.pcapng")
     subprocess.run(["editcap", "-F", "pcapng", pcap, ng], check=True, capture_output=True)
     for f in (pcap, ng):
-        out = [json.loads(x) for x in run("replay", f, "--json", "--raw").stdout.splitlines()]
+        out = packet_lines(run("replay", f, "--json", "--raw").stdout)
         assert [o["order_name"] for o in out] == ["shutter", "null"]
         assert run("decode", "--json", "--raw", "--file", f).stdout == run("replay", f, "--json", "--raw").stdout
         assert len(dissect(f)[0]) == 2
@@ -657,12 +666,12 @@ def test_serial_user0(tmp, masks):
     assert [i for _, i in columns(pcap).values()] == ["host→GCU 5 bytes, part of a packet",
                                                       "host→GCU shutter cameras 0x01",
                                                       "host→GCU shutter cameras 0x01"]
-    assert len(run("replay", pcap, "--json", "--raw").stdout.splitlines()) == 2
+    assert len(packet_lines(run("replay", pcap, "--json", "--raw").stdout)) == 2
 
 
 def test_replay_matches_decode(captures):
     for pcap in captures.values():
-        assert decoded(pcap, raw=True) == [json.loads(x) for x in run("replay", pcap, "--json", "--raw").stdout.splitlines()]
+        assert decoded(pcap, raw=True) == packet_lines(run("replay", pcap, "--json", "--raw").stdout)
 
 
 def test_capture_refuses_existing_file(tmp):
@@ -716,10 +725,10 @@ def test_replay_rejections(tmp):
 def test_start_time(tmp):
     pkt = run("encode", "null").stdout.strip()
     path = write_text(tmp, "start.cap", "# xfgcu capture 1\n# start 2026-11-26T10:00:00.123Z\n1.500 > %s\n" % pkt)
-    obj = json.loads(run("replay", path, "--json", "--raw").stdout)
+    obj = packet_lines(run("replay", path, "--json", "--raw").stdout)[0]
     assert obj["t"] == 1.5 and obj["time"] == "2026-11-26T10:00:01.623Z"
     old = write_text(tmp, "old.cap", "# xfgcu capture 1\n0.000 > %s\n" % pkt)  # without a start: still read
-    assert "time" not in json.loads(run("replay", old, "--json", "--raw").stdout)
+    assert "time" not in packet_lines(run("replay", old, "--json", "--raw").stdout)[0]
 
 
 def test_decode_logs(tmp):
@@ -727,13 +736,13 @@ def test_decode_logs(tmp):
     half = (len(p) // 6) * 3  # on a byte boundary: "A8 E5 "
     log = ("12.345 %s\n[2026-11-26 10:00:00.123] %s\n2026-11-26T10:00:01.5Z %s\n[7.25] %s\n%s\n" %
            (p, q, p[:half], p[half:], q))
-    out = [json.loads(x) for x in run("decode", "--json", "--raw", stdin=log).stdout.splitlines()]
+    out = packet_lines(run("decode", "--json", "--raw", stdin=log).stdout)
     assert [o.get("t", o.get("time")) for o in out] == [12.345, "2026-11-26T10:00:00.123", 7.25, 7.25]
     assert [o["order_name"] for o in out] == ["shutter", "null", "shutter", "null"]
     path = write_text(tmp, "log.txt", log)
-    assert run("decode", "--json", "--raw", "--file", path).stdout.count("\n") == 4
+    assert len(packet_lines(run("decode", "--json", "--raw", "--file", path).stdout)) == 4
     cap = write_text(tmp, "t.cap", "# xfgcu capture 1\n0.250 > %s\n" % p)
     with open(cap) as f:
-        assert json.loads(run("decode", "--json", "--raw", stdin=f.read()).stdout)["t"] == 0.25
+        assert packet_lines(run("decode", "--json", "--raw", stdin=f.read()).stdout)[0]["t"] == 0.25
     r = run("decode", stdin="12.345 %s zz\n" % p, check=False)
     assert r.returncode == 2 and "line 1 column" in r.stderr

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "hexin.h"
+#include "warn.h"
 
 /* ---- output ---------------------------------------------------------------- */
 
@@ -52,7 +53,7 @@ static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t
 {
     const xf_order_info *info = xf_order_lookup(order);
     xf_field bad = XF_F_NONE;
-    char why[128];
+    char why[160];
     xf_command cmd;
     xf_err err;
     size_t i;
@@ -74,13 +75,9 @@ static void put_command(builder *b, uint8_t order, const uint8_t *params, size_t
         put(b, "command", c.obj);
         return;
     }
-    if (err == XF_ERR_PARAMS) {
-        snprintf(why, sizeof(why), "%s takes %zu parameter bytes, not %zu", xf_order_name(info->order),
-                 xf_order_params_len(order), n);
-    } else {
-        snprintf(why, sizeof(why), "%s out of range", bad != XF_F_NONE ? xf_field_name(bad) : "a parameter");
+    if (warn_params(order, params, n, version, why, sizeof(why))) {
+        put(b, "command_error", json_string(why));
     }
-    put(b, "command_error", json_string(why));
 }
 
 static const char *result_name(xf_result result)
@@ -174,6 +171,27 @@ static void put_fields(builder *b, const uint8_t *buf, xf_direction dir, uint8_t
     }
 }
 
+/* What the vendor's text does not allow (warn.h), when there is any: "warnings", a list of lines. */
+static void put_warnings(builder *b, const uint8_t *buf, size_t len, xf_direction dir)
+{
+    warn_list w;
+    json_t *list;
+    size_t i;
+    if (warn_packet(buf, len, dir, &w) == 0u) {
+        return;
+    }
+    list = json_array();
+    for (i = 0; list != NULL && i < w.n; i++) {
+        if (json_array_append_new(list, json_string(w.text[i])) != 0) {
+            b->failed = 1;
+        }
+    }
+    if (list != NULL && w.more > 0u && json_array_append_new(list, json_sprintf("%zu more", w.more)) != 0) {
+        b->failed = 1;
+    }
+    put(b, "warnings", list);
+}
+
 json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_reading pod, text_view view)
 {
     uint8_t version, order;
@@ -205,6 +223,7 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_
         put_feedback(&b, order, params, plen);
     }
     put_fields(&b, buf, dir, version, pod, view);
+    put_warnings(&b, buf, len, dir);
     if (b.failed) {
         json_decref(b.obj);
         return NULL;
@@ -253,7 +272,7 @@ typedef struct reader {
 /* The times that monitor --json ("time_mono", "time_utc") and replay --json ("t", "time") put
  * on a packet are taken and ignored: what those commands print, encode reads back. */
 static const char *const common_keys[] = {"direction", "version",  "length", "order", "order_name", "params",
-                                          "time_mono", "time_utc", "t",      "time",  NULL};
+                                          "time_mono", "time_utc", "t",      "time",  "warnings",   NULL};
 static const char *const host_extra_keys[] = {"command", "command_error", NULL};
 static const char *const gcu_extra_keys[] = {"feedback",  "mode_name",    "pod_status_order",
                                              "pod_flags", "gimbal_model", NULL};

@@ -5,8 +5,9 @@
  * host packet [command] or [command_error], for a GCU packet [feedback]; then every field of the
  * direction's two frames under its canonical name ([mode_name] after gimbal_mode,
  * [pod_status_order] and [pod_flags] after pod_status, [gimbal_model] after gimbal_code), with
- * [reserved_main] / [reserved_sub] as hex when a reserved byte is not 0. Keys in brackets are
- * extras: encode accepts them and never needs them.
+ * [reserved_main] / [reserved_sub] as hex when a reserved byte is not 0, and last [warnings], the
+ * lines of warn.h, when the packet has any. Keys in brackets are extras: encode accepts them and
+ * never needs them.
  *
  * The view (fieldtext.h, docs/protocol.md "Units"): TEXT_ENGINEERING gives a field with a scale
  * as its engineering value (a JSON number with the digits of its step: "cam_pitch": -30.0),

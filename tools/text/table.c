@@ -15,6 +15,7 @@
 
 #include "fieldtext.h"
 #include "hexin.h"
+#include "warn.h"
 
 static void append(char *buf, size_t cap, const char *s)
 {
@@ -246,6 +247,20 @@ static void print_reserved(const uint8_t *pkt, uint8_t version, const xf_wire_fi
     }
 }
 
+/* What the vendor's text does not allow (warn.h): one line each, after the rows. */
+static void print_warnings(const uint8_t *buf, size_t len, xf_direction dir, FILE *out)
+{
+    warn_list w;
+    size_t i;
+    (void)warn_packet(buf, len, dir, &w);
+    for (i = 0; i < w.n; i++) {
+        fprintf(out, "warning: %s\n", w.text[i]);
+    }
+    if (w.more > 0u) {
+        fprintf(out, "warning: %zu more\n", w.more);
+    }
+}
+
 void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *where, pod_reading pod, text_view view,
                  FILE *out)
 {
@@ -264,4 +279,5 @@ void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *w
             row(out, rows[i].name, raw, value);
         }
     }
+    print_warnings(buf, len, dir, out);
 }

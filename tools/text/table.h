@@ -15,7 +15,8 @@
 /**
  * Print a packet already checked with xf_packet_check(); @p where says where it came from,
  * @p pod how to read the flags of pod_status, @p view whether the value column gives engineering
- * units (and the names of codes and flags) or, TEXT_RAW, the names only.
+ * units (and the names of codes and flags) or, TEXT_RAW, the names only. What the vendor's text
+ * does not allow follows the rows, one "warning: ..." line each (warn.h).
  */
 void table_print(const uint8_t *buf, size_t len, xf_direction dir, const char *where, pod_reading pod, text_view view,
                  FILE *out);

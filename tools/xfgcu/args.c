@@ -230,6 +230,22 @@ int cli_value_protocol(const cli_args *a, uint8_t *version)
     return rc;
 }
 
+int cli_value_protocol_auto(const cli_args *a, uint8_t *version, uint8_t *version_auto)
+{
+    long v = 0;
+    int rc;
+    if (a->value != NULL && strcmp(a->value, "auto") == 0) {
+        *version_auto = 1u;
+        return XFGCU_EXIT_OK;
+    }
+    rc = cli_value_long(a, XF_PROTOCOL_V1, XF_PROTOCOL_V2, "auto, 1 or 2", &v, NULL);
+    if (rc == XFGCU_EXIT_OK) {
+        *version = (uint8_t)v;
+        *version_auto = 0u;
+    }
+    return rc;
+}
+
 int cli_value_baud(const cli_args *a, long *baud, int *given)
 {
     static const char what[] = "115200, 250000, 500000 or 1000000";

@@ -156,8 +156,8 @@ void capture_source_close(capture_source *s);
 
 /**
  * Replay's printer, shared with `decode`: decode the capture in @p in (closed when done; @p name
- * names it in messages) and print every packet with its time, as a table (with the summary line
- * when @p summary) or as JSON Lines (@p json); @p pod is how pod_status is read
+ * names it in messages) and print every packet with its time, as a table or as JSON Lines
+ * (@p json), then, when @p summary, the summary line (summary.h); @p pod is how pod_status is read
  * (a pod_reading of fieldtext.h), @p view the fields' view (a text_view). @return an exit code.
  */
 int replay_capture(FILE *in, const char *name, int json, int pod, int view, int summary);

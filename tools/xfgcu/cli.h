@@ -117,25 +117,30 @@ int cli_value_long(const cli_args *a, long lo, long hi, const char *what, long *
 int cli_value_text(const cli_args *a, const char *what, const char **out);
 /** --protocol: 1 or 2. */
 int cli_value_protocol(const cli_args *a, uint8_t *version);
+/** --protocol of the commands that talk to a GCU: auto, 1 or 2. auto sets *@p version_auto (and leaves
+ *  *@p version, the version tried first); 1 or 2 sets *@p version and clears *@p version_auto. */
+int cli_value_protocol_auto(const cli_args *a, uint8_t *version, uint8_t *version_auto);
 /** --baud: 115200, 250000, 500000 or 1000000 (xf_serial_baud_ok()). */
 int cli_value_baud(const cli_args *a, long *baud, int *given);
 
 /** The options before COMMAND (cli.md "Link options" and "General options"), already validated. */
 typedef struct cli_link {
-    const char *serial;                         /**< --serial PATH, or NULL */
-    const char *udp;                            /**< --udp HOST[:PORT], or NULL */
-    const char *tcp;                            /**< --tcp HOST[:PORT], or NULL */
-    const char *spec;                           /**< --link SPEC, or NULL */
-    const char *env_spec;                       /**< XFGCU_LINK, or NULL: the link when no option names one */
-    long baud;                                  /**< --baud, default 115200 */
-    long gcu_port;                              /**< --gcu-port, 0 = the link's default */
-    long local_port;                            /**< --local-port, default 2338; 0 = any free port */
-    uint8_t protocol;                           /**< --protocol, default 1 */
-    long rate_hz;                               /**< --rate, 1..200, default 50 */
-    long timeout_ms;                            /**< --timeout, default 1000 */
-    long reorder_ms;                            /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
-    int trace;                                  /**< --trace: every packet on stderr, one line each */
-    text_view view;                             /**< --raw: TEXT_RAW; TEXT_ENGINEERING by default */
+    const char *serial;   /**< --serial PATH, or NULL */
+    const char *udp;      /**< --udp HOST[:PORT], or NULL */
+    const char *tcp;      /**< --tcp HOST[:PORT], or NULL */
+    const char *spec;     /**< --link SPEC, or NULL */
+    const char *env_spec; /**< XFGCU_LINK, or NULL: the link when no option names one */
+    long baud;            /**< --baud, default 115200 */
+    long gcu_port;        /**< --gcu-port, 0 = the link's default */
+    long local_port;      /**< --local-port, default 2338; 0 = any free port */
+    uint8_t protocol;     /**< --protocol 1|2: the version sent; with auto, the one tried first (1) */
+    uint8_t version_auto; /**< --protocol auto (the default): xf_client_config.version_auto */
+    long rate_hz;         /**< --rate, 1..200, default 50 */
+    long timeout_ms;      /**< --timeout, default 1000 */
+    long reorder_ms;      /**< --reorder, 0..1000, default 0 (xf_client_config.reorder_ms) */
+    int has_reorder;      /**< --reorder given: the bound is fixed (xf_client_config.reorder_fixed) */
+    int trace;            /**< --trace: every packet on stderr, one line each */
+    text_view view;       /**< --raw: TEXT_RAW; TEXT_ENGINEERING by default */
     int has_baud, has_gcu_port, has_local_port; /**< given: for options that only one kind of link takes */
     unsigned given;                             /**< a bit per link option given: twice is a usage error */
 } cli_link;

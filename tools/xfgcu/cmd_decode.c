@@ -27,6 +27,7 @@
 #include "cli.h"
 #include "hexin.h"
 #include "jsonpkt.h"
+#include "summary.h"
 #include "table.h"
 
 void help_decode(FILE *out)
@@ -58,7 +59,13 @@ void help_decode(FILE *out)
           "            that leaves the reserved bits clear; little-endian, the documented order,\n"
           "            when both or neither do. The vendor's own example reads it big-endian.\n"
           "Without --json: a table of field, raw value and engineering value (docs/protocol.md,\n"
-          "\"Units\").\n",
+          "\"Units\").\n\n"
+          "What the vendor's text does not allow (a yaw outside [0, 360), INS valid with a zero\n"
+          "attitude, record 0x00, a wrong parameter length...) is a warning, never a refusal: a\n"
+          "\"warnings\" list in the JSON, a \"warning:\" line each in the table (docs/protocol.md\n"
+          "section 13). A stream (stdin, --file) ends with a summary: packets, bytes skipped, CRC\n"
+          "errors and the frames the parsers gave up; with --json the line {\"summary\": {...}},\n"
+          "which `xfgcu encode --json` skips.\n",
           out);
 }
 
@@ -301,6 +308,8 @@ typedef struct stream {
     found queue[QUEUE_MAX];
     size_t queued;
     size_t printed;
+    size_t packets[2]; /* printed, by xf_direction */
+    size_t in_packets; /* bytes of the packets printed */
     style how;
     log_time now;     /* the time of the line being read */
     const char *name; /* "stdin" or the file */
@@ -326,6 +335,8 @@ static void emit(stream *s, const found *f)
         s->rc = print_packet(f->bytes, f->len, f->dir, where, &s->how, s->printed);
     }
     s->printed++;
+    s->packets[f->dir]++;
+    s->in_packets += f->len;
 }
 
 /* Print the queued frames that start before @p limit, earliest first. */
@@ -530,6 +541,24 @@ static int read_text(stream *s, FILE *in, int *bad, hex_fault *fault)
     return XFGCU_EXIT_OK;
 }
 
+/* The stream's last word: its packets, the bytes in none, the CRC errors and the frames the two
+ * parsers gave up (each parser reads every byte: a byte in no packet is one neither returned). */
+static int print_summary(const stream *s)
+{
+    const xf_parser_stats *h = &s->parser[XF_DIR_HOST].stats;
+    const xf_parser_stats *g = &s->parser[XF_DIR_GCU].stats;
+    text_summary sum;
+    sum.host_packets = s->packets[XF_DIR_HOST];
+    sum.gcu_packets = s->packets[XF_DIR_GCU];
+    sum.bytes_skipped = (s->fed > s->in_packets) ? (uint64_t)(s->fed - s->in_packets) : 0u;
+    sum.crc_errors = (uint64_t)h->crc_errors + g->crc_errors;
+    sum.given_up = (uint64_t)h->given_up + g->given_up;
+    if (!s->how.json) {
+        putchar('\n');
+    }
+    return summary_print(&sum, s->how.json, stdout) == TEXT_OK ? XFGCU_EXIT_OK : cli_fail("decode: out of memory");
+}
+
 static int decode_text(FILE *in, const char *name, const style *how)
 {
     stream *s = calloc(1, sizeof(*s));
@@ -550,7 +579,13 @@ static int decode_text(FILE *in, const char *name, const style *how)
     if (rc == XFGCU_EXIT_OK && bad) {
         rc = hex_error(s, &fault);
     } else if (rc == XFGCU_EXIT_OK && s->printed == 0u) {
-        rc = cli_fail("decode: no valid packet in the %zu bytes read from %s", s->fed, name);
+        uint32_t given_up = s->parser[XF_DIR_HOST].stats.given_up + s->parser[XF_DIR_GCU].stats.given_up;
+        rc = (given_up == 0u) ? cli_fail("decode: no valid packet in the %zu bytes read from %s", s->fed, name)
+                              : cli_fail("decode: no valid packet in the %zu bytes read from %s (the parsers gave up "
+                                         "%u times: false headers)",
+                                         s->fed, name, (unsigned)given_up);
+    } else if (rc == XFGCU_EXIT_OK) {
+        rc = print_summary(s);
     }
     free(s);
     return rc;
@@ -578,7 +613,7 @@ static int decode_input(const char *file, const style *how)
         return cli_fail("decode: cannot read %s: %s", name, strerror(e));
     }
     if (c == '#' || (pcap_magic_byte(c) && (c != '\n' || file != NULL))) {
-        return replay_capture(in, name, how->json, (int)how->pod, (int)how->view, 0); /* closes in */
+        return replay_capture(in, name, how->json, (int)how->pod, (int)how->view, 1); /* closes in */
     }
     rc = decode_text(in, name, how);
     if (in != stdin) {

@@ -19,6 +19,7 @@
 #include "encode.h"
 #include "hexin.h"
 #include "jsonpkt.h"
+#include "summary.h"
 
 void help_encode(FILE *out)
 {
@@ -34,7 +35,8 @@ void help_encode(FILE *out)
           "                  as hex. A host packet may give \"command\": {...} instead of params, a\n"
           "                  GCU packet \"feedback\": {\"result\": ...}. OBJECT \"-\" reads JSON Lines\n"
           "                  on stdin; a bad line (a NUL byte, a truncated object, anything after\n"
-          "                  it) is an error naming its line.\n"
+          "                  it) is an error naming its line; a line that is no packet (decode's\n"
+          "                  summary, an event of monitor or sim) is skipped.\n"
           "  COMMAND         a host packet with no carrier data (bytes 5-68 zero except\n"
           "                  sub_request = 0x01) carrying the command:\n\n",
           out);
@@ -55,7 +57,9 @@ static void print_hex(const uint8_t *buf, size_t len)
 
 /* ---- --json ------------------------------------------------------------------ */
 
-static int encode_object(const char *text, size_t len, uint8_t version, text_view view, const char *where)
+/* One object: its packet in hex. A line that is no packet (decode's summary, monitor's and sim's
+ * events) is skipped when @p lines: what those commands print, encode reads back. */
+static int encode_object(const char *text, size_t len, uint8_t version, text_view view, const char *where, int lines)
 {
     uint8_t buf[XF_PACKET_MAX_LEN];
     size_t n = 0;
@@ -64,6 +68,10 @@ static int encode_object(const char *text, size_t len, uint8_t version, text_vie
     int rc;
     text_err_init(&e);
     obj = jsonpkt_parse(text, len, where, &e);
+    if (lines && summary_not_packet(obj)) {
+        json_decref(obj);
+        return XFGCU_EXIT_OK;
+    }
     rc = (obj != NULL) ? jsonpkt_to_wire(obj, version, view, where, buf, sizeof(buf), &n, &e) : TEXT_BAD;
     json_decref(obj);
     if (rc != TEXT_OK) {
@@ -88,7 +96,7 @@ static int encode_lines(uint8_t version, text_view view)
             continue; /* a blank line (a NUL byte would stop strspn short: not blank) */
         }
         snprintf(where, sizeof(where), "encode: stdin line %zu", number);
-        rc = encode_object(line, len, version, view, where);
+        rc = encode_object(line, len, version, view, where, 1);
     }
     free(line);
     if (rc == XFGCU_EXIT_OK && ferror(stdin)) { /* closed, a directory, an I/O error: not an empty input */
@@ -122,7 +130,7 @@ int cmd_encode(const cli_link *link, int argc, char **argv)
     if (l.json != NULL) {
         return (strcmp(l.json, "-") == 0)
                    ? encode_lines(l.version, link->view)
-                   : encode_object(l.json, strlen(l.json), l.version, link->view, "encode --json");
+                   : encode_object(l.json, strlen(l.json), l.version, link->view, "encode --json", 0);
     }
     if (!l.has_spec) {
         return cli_fail("encode: give --json OBJECT or a COMMAND (see 'xfgcu encode --help')");

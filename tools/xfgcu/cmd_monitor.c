@@ -15,6 +15,15 @@
  *
  * --wait S: the GCU may take S seconds to come up (a gimbal powering on);
  * a person at a terminal waits until Ctrl-C by default, a script --timeout.
+ *
+ * The client's health (the version the GCU answered, its judgement of the
+ * link, the frames its parser gave up) is shown too: a row of the screen,
+ * the end of each plain line ("health: ..."), and with --json an
+ * {"event": "health"} object when the GCU comes up and when a figure changes
+ * (at most once a second).
+ * Packets that the vendor's text does not allow (warn.h) are counted, and
+ * the last warning shown: a row of the screen, a "warning:" line of the
+ * plain output (the packet objects of --json carry their "warnings").
  */
 #define _POSIX_C_SOURCE 200809L /* isatty, fileno */
 
@@ -25,6 +34,7 @@
 #include "cli.h"
 #include "jsonpkt.h"
 #include "online.h"
+#include "warn.h"
 
 #define SCREEN_MS 250u      /* terminal redraw period */
 #define LINE_MS   1000u     /* plain line period */
@@ -48,7 +58,11 @@ void help_monitor(FILE *out)
           "                open and the first reply. Default: on a terminal, until Ctrl-C; otherwise\n"
           "                --timeout, as --wait 0\n"
           "Without --count or --duration it runs until Ctrl-C (exit 0). A lost link is shown (with\n"
-          "--json: a link event, and a note on stderr) and the link is retried.\n\n",
+          "--json: a link event, and a note on stderr) and the link is retried.\n"
+          "The client's health is shown too (the protocol version the GCU answered, whether the link\n"
+          "keeps order, the reorder bound, replies out of turn, frames given up): a row of the\n"
+          "screen, the end of each plain line, {\"event\": \"health\", ...} with --json. What the\n"
+          "vendor's text does not allow in a reply is warned about (decode --help).\n\n",
           out);
     help_link_options(out);
     fputs("\nexample: xfgcu --udp 192.168.144.108 monitor --json --count 50 > telemetry.jsonl\n", out);
@@ -65,6 +79,11 @@ typedef struct monitor {
     uint32_t start_ms; /* when the GCU came up */
     uint8_t link_seen; /* the link state last seen, for notes */
     uint8_t was_up;
+    char health[256];        /* the health last shown (online_health_text()) */
+    uint32_t health_ms;      /* when */
+    uint32_t warned;         /* GCU packets with warnings */
+    uint32_t warned_shown;   /* of which already said by a plain line */
+    char warning[WARN_TEXT]; /* the last warning */
 } monitor;
 
 /* ---- arguments ---------------------------------------------------------------------- */
@@ -113,11 +132,16 @@ static void json_packet(const uint8_t *data, size_t len, text_view view)
 static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
 {
     monitor *m = (monitor *)user;
+    warn_list w;
     (void)now_ms;
     if (dir != XF_DIR_GCU || (m->has_count && m->received >= (uint32_t)m->count)) {
         return;
     }
     m->received++;
+    if (warn_packet(data, len, dir, &w) > 0u && w.n > 0u) {
+        m->warned++;
+        snprintf(m->warning, sizeof(m->warning), "%s", w.text[w.n - 1u]);
+    }
     if (m->json) {
         json_packet(data, len, m->view);
     }
@@ -282,7 +306,7 @@ static void draw_screen(const monitor *m)
     const xf_health *h = xf_client_health(&m->o->client);
     const xf_parser_stats *ps = xf_client_parser_stats(&m->o->client);
     xf_telemetry_units u;
-    char dist[160], rate[64];
+    char dist[160], rate[64], health[256];
     ages a;
     (void)xf_telemetry_convert(t, &u);
     distance_text(t, &u, m->view, dist, sizeof(dist));
@@ -304,8 +328,13 @@ static void draw_screen(const monitor *m)
     row("distance", a.sub, "%s", dist);
     row("link", a.main, "%s, %s, %u sent, %u received", xf_link_state_name(h->link), rate, (unsigned)h->packets_sent,
         (unsigned)h->replies);
-    row("parser", NULL, "%u CRC errors, %u length errors, %u bytes skipped", (unsigned)ps->crc_errors,
-        (unsigned)ps->length_errors, (unsigned)ps->bytes_skipped);
+    row("parser", NULL, "%u CRC errors, %u length errors, %u bytes skipped, %u given up", (unsigned)ps->crc_errors,
+        (unsigned)ps->length_errors, (unsigned)ps->bytes_skipped, (unsigned)ps->given_up);
+    online_health_text(m->o, health, sizeof(health));
+    printf("%-12s%s\n", "health", health); /* one line: it does not fit the columns */
+    if (m->warned > 0u) {
+        printf("%-12s%u packets; last: %s\n", "warnings", (unsigned)m->warned, m->warning);
+    }
     fflush(stdout);
 }
 
@@ -315,27 +344,70 @@ static void print_line(const monitor *m, uint32_t elapsed)
     const xf_health *h = xf_client_health(&m->o->client);
     const char *mode = xf_mode_name(t->gimbal_mode);
     xf_telemetry_units u;
-    char dist[160], rate[64];
+    char dist[160], rate[64], health[256];
     ages a;
     (void)xf_telemetry_convert(t, &u);
     distance_text(t, &u, m->view, dist, sizeof(dist));
     rate_text(m, rate, sizeof(rate));
     get_ages(m, &a);
+    online_health_text(m->o, health, sizeof(health));
     if (m->view == TEXT_RAW) {
         printf("%7.1f s  link %s, %s  mode %s  cam_roll %d cam_pitch %d cam_yaw %u%s (age %s)  zoom_cam1 %u "
-               "zoom_cam2 %u  %s (age %s)\n",
+               "zoom_cam2 %u  %s (age %s)  health: %s\n",
                cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", t->cam_roll,
                t->cam_pitch, (unsigned)t->cam_yaw, yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "  tracking", ""), a.main,
-               (unsigned)t->zoom_cam1, (unsigned)t->zoom_cam2, dist, a.sub);
+               (unsigned)t->zoom_cam1, (unsigned)t->zoom_cam2, dist, a.sub, health);
         fflush(stdout);
         return;
     }
     printf("%7.1f s  link %s, %s  mode %s  roll %.2f pitch %.2f yaw %.2f deg%s (age %s)  zoom %.1fx/%.1fx  %s "
-           "(age %s)\n",
+           "(age %s)  health: %s\n",
            cli_seconds(elapsed), xf_link_state_name(h->link), rate, mode ? mode : "unknown", (double)u.cam_roll_deg,
            (double)u.cam_pitch_deg, (double)u.cam_yaw_deg, yes_no(pod_flags(t) & XF_POD_TRACKING_OK, "  tracking", ""),
-           a.main, (double)u.zoom_cam1, (double)u.zoom_cam2, dist, a.sub);
+           a.main, (double)u.zoom_cam1, (double)u.zoom_cam2, dist, a.sub, health);
     fflush(stdout);
+}
+
+/* ---- health and warnings ------------------------------------------------------------------- */
+
+/* --json: {"event": "health", "link": ..., the figures of online_health_json(), times}. */
+static void json_health(const monitor *m)
+{
+    json_t *obj = cli_json_times(json_object());
+    json_t *h = online_health_json(m->o);
+    if (obj != NULL && h != NULL) {
+        json_object_set_new(obj, "event", json_string("health"));
+        json_object_set_new(obj, "link", json_string(m->o->desc));
+        if (json_object_update(obj, h) != 0) {
+            json_decref(obj);
+            obj = NULL; /* out of memory: cli_json_line() says nothing of it */
+        }
+    }
+    json_decref(h);
+    (void)cli_json_line(obj);
+}
+
+/* --json: the client's health when the GCU came up and when a figure changed (at most once a
+ * second); the screen and the plain lines show it each time. */
+static void show_health(monitor *m, int first)
+{
+    char now[256];
+    online_health_text(m->o, now, sizeof(now));
+    if (strcmp(now, m->health) == 0 || (!first && xf_ms_since(xf_posix_now_ms(), m->health_ms) < 1000u)) {
+        return;
+    }
+    snprintf(m->health, sizeof(m->health), "%s", now);
+    m->health_ms = xf_posix_now_ms();
+    json_health(m);
+}
+
+/* The plain output: the last warning, with the number of packets that had one since the last line. */
+static void show_warnings(monitor *m)
+{
+    if (m->warned != m->warned_shown) {
+        printf("warning: %s (%u packets with warnings)\n", m->warning, (unsigned)(m->warned - m->warned_shown));
+        m->warned_shown = m->warned;
+    }
 }
 
 /* ---- the loop ------------------------------------------------------------------------------ */
@@ -350,14 +422,20 @@ static void run_loop(monitor *m)
 {
     uint32_t start = xf_posix_now_ms(), last = 0, elapsed = 0;
     int first = 1;
+    if (m->json) {
+        show_health(m, 1); /* the GCU is up: which version it answered, even with --count 1 */
+    }
     /* the first line always (--count 1: the packet that came while the link opened is counted) */
     while ((first && !m->json) || !finished(m, elapsed)) {
         uint32_t period = m->tty ? SCREEN_MS : LINE_MS;
-        if (!m->json && (first || xf_ms_since(elapsed, last) >= period)) {
+        if (m->json) {
+            show_health(m, 0);
+        } else if (first || xf_ms_since(elapsed, last) >= period) {
             if (m->tty) {
                 draw_screen(m);
             } else {
                 print_line(m, elapsed);
+                show_warnings(m);
             }
             last = elapsed;
             first = 0;

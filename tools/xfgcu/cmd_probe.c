@@ -10,7 +10,9 @@
  * zoom, one autofocus, exiting a tracking that is not on) and orders that
  * set a state the GCU reports to the value it reports. Every answer is put
  * beside what V2.0.6's support list says of the model (xf_gimbal_supports()),
- * and disagreements are flagged. With --move it also switches to head lock,
+ * and disagreements are flagged. Then it asks the open questions of
+ * docs/protocol.md section 12 that a gimbal can answer without moving or
+ * changing a setting (probe_ask.c), and lists the others with the reason. With --move it also switches to head lock,
  * runs neutral, switches to Euler angle control, points back to where the
  * gimbal was, 5 degrees away and back, then restores the starting mode.
  *
@@ -32,6 +34,7 @@
 #include "jsonpkt.h"
 #include "table.h"
 #include "online.h"
+#include "probe_ask.h"
 
 #define PROBE_MAX     40     /* orders in the report: planned, sent or not */
 #define LEGS_MAX      4      /* motions of --move */
@@ -52,7 +55,10 @@ void help_probe(FILE *out)
           "failure (with the failed cameras) or nothing, compared with the vendor's V2.0.6 support\n"
           "list for its model. Without --move nothing moves and no setting is changed: the orders\n"
           "sent either change nothing (zoom stop, zoom to the reported zoom, one autofocus, exit a\n"
-          "tracking that is not on) or set a state the GCU reports to the value it reports.\n\n"
+          "tracking that is not on) or set a state the GCU reports to the value it reports. Then it\n"
+          "asks the open questions of docs/protocol.md section 12 that a gimbal can answer without\n"
+          "moving (does it answer both version bytes, repeat the execution state, take a parameter\n"
+          "of the wrong length on a zoom stop...) and lists the others with why not.\n\n"
           "  --move        also switch to head lock, run neutral, switch to Euler angle control,\n"
           "                point back to where the gimbal was, 5 deg away and back, then restore\n"
           "                the mode it was in: THE GIMBAL MOVES\n"
@@ -102,6 +108,7 @@ typedef struct probe {
     const char *stopped;                               /* why the probe ended early; NULL: it completed */
     const char *move_note; /* --move: why the starting mode was not restored; NULL when it was */
     uint32_t total_ms;
+    ask_report ask; /* the open questions */
 } probe;
 
 /* ---- arguments -------------------------------------------------------------------------- */
@@ -340,6 +347,8 @@ static void on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t l
     (void)now_ms;
     if (dir == XF_DIR_HOST && len > XF_OFF_ORDER) {
         p->on_wire[data[XF_OFF_ORDER]] = 1u;
+    } else if (dir == XF_DIR_GCU) {
+        ask_observe(&p->ask, data, len);
     }
 }
 
@@ -393,6 +402,8 @@ static int run_item(probe *p, probe_item *it)
     }
     return rc;
 }
+
+static int stop_cb(void *user) { return stop_now((probe *)user); }
 
 static int run_safe(probe *p)
 {
@@ -637,7 +648,12 @@ static void print_gimbal(const probe *p)
         printf("gimbal       no sub frame within %ld ms: model and versions unknown\n", p->o->opt->timeout_ms);
     }
     printf("protocol     the GCU answers in V0.%u (version byte %u); sent %u\n", t->version, t->version,
-           (unsigned)p->o->opt->protocol);
+           (unsigned)xf_client_health(&p->o->client)->version_sent);
+    printf("version      it answered packets of version %u (--protocol %s)\n",
+           (unsigned)xf_client_health(&p->o->client)->version_answered,
+           p->o->opt->version_auto                 ? "auto"
+           : p->o->opt->protocol == XF_PROTOCOL_V2 ? "2"
+                                                   : "1");
     printf("pod status   %s\n", order == XF_POD_ORDER_LE   ? "little-endian (the words it sent tell)"
                                 : order == XF_POD_ORDER_BE ? "big-endian (the words it sent tell)"
                                                            : "byte order undecided: every word it sent reads the "
@@ -704,7 +720,7 @@ static void print_legs(const probe *p)
 
 static void print_text(const probe *p)
 {
-    char wall[64];
+    char wall[64], health[256];
     wall_text(&p->wall0, wall, sizeof(wall));
     printf("xfgcu probe: %s, %s, xfgcu %s%s\n", p->o->desc, wall, XF_VERSION_STRING,
            p->stopped ? " (stopped early)" : "");
@@ -712,6 +728,9 @@ static void print_text(const probe *p)
     print_timing(p);
     print_legs(p);
     print_orders(p);
+    ask_print(&p->ask, stdout);
+    online_health_text(p->o, health, sizeof(health));
+    printf("\nhealth       %s\n", health);
 }
 
 /* ---- JSON -------------------------------------------------------------------------------------- */
@@ -757,6 +776,7 @@ static void json_gimbal(const probe *p, jobj g)
     jset(g, "hw_version", t->have_sub ? field_json(p, "hw_version", t->hw_version) : json_null());
     jset(g, "fw_version", t->have_sub ? field_json(p, "fw_version", t->fw_version) : json_null());
     jset(g, "protocol", json_integer(t->version));
+    jset(g, "version_answered", json_integer(xf_client_health(&p->o->client)->version_answered));
     jset(g, "pod_status", json_integer(t->pod_status));
     jset(g, "pod_status_order", json_string(pod_order_text(xf_client_pod_order(&p->o->client))));
     jset(g, "gimbal_mode", json_integer(p->t0.gimbal_mode));
@@ -876,7 +896,8 @@ static void json_head(const probe *p, jobj top)
     l = jchild(top, "link");
     jset(l, "option", json_string(p->o->option));
     jset(l, "where", json_string(p->o->desc));
-    jset(l, "protocol_sent", json_integer(p->o->opt->protocol));
+    jset(l, "protocol_sent", json_integer(xf_client_health(&p->o->client)->version_sent));
+    jset(l, "protocol_setting", p->o->opt->version_auto ? json_string("auto") : json_integer(p->o->opt->protocol));
     jset(l, "rate_hz", json_integer(p->o->opt->rate_hz));
     jset(l, "timeout_ms", json_integer(p->o->opt->timeout_ms));
     jset(top, "move", json_boolean(p->move));
@@ -886,7 +907,7 @@ static void json_head(const probe *p, jobj top)
 }
 
 /* The report as an object; *failed set when memory ran out on the way. */
-static json_t *json_report(const probe *p, int *failed)
+static json_t *json_report(probe *p, int *failed)
 {
     jobj top;
     top.obj = json_object();
@@ -896,10 +917,12 @@ static json_t *json_report(const probe *p, int *failed)
     json_timing(p, top);
     json_legs(p, top);
     json_orders(p, top);
+    jset(top, "questions", ask_json(&p->ask));
+    jset(top, "health", online_health_json(p->o));
     return top.obj;
 }
 
-static int print_json(const probe *p)
+static int print_json(probe *p)
 {
     int failed = 0;
     json_t *obj = json_report(p, &failed);
@@ -942,6 +965,9 @@ static int run_probe(probe *p)
         plan_restore(p);
     }
     rc = run_safe(p);
+    if (rc == XFGCU_EXIT_OK) {
+        ask_questions(p->o, &p->ask, stop_cb, p);
+    }
     if (rc == XFGCU_EXIT_OK && p->move) {
         rc = run_motion(p);
     }
@@ -978,6 +1004,7 @@ static int probe_link(probe *p, const cli_link *link)
     rc = (p->o != NULL) ? online_open(p->o, link, "probe", &hooks) : XFGCU_EXIT_USAGE;
     rc = (rc == XFGCU_EXIT_OK) ? run_probe(p) : rc;
     rc = (rc == XFGCU_EXIT_OK) ? finish(p) : rc;
+    ask_free(&p->ask);
     online_free(p->o);
     return rc;
 }
@@ -991,6 +1018,7 @@ int cmd_probe(const cli_link *link, int argc, char **argv)
         return cli_fail("probe: out of memory");
     }
     p->window_s = 1.0;
+    ask_init(&p->ask);
     p->i_head_lock = p->i_neutral = p->i_euler = p->i_restore = PROBE_MAX;
     cli_args_init(&a, argc, argv, CLI_IN_ORDER, probe_options, "probe");
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {

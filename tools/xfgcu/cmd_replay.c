@@ -15,6 +15,7 @@
 #include "cli.h"
 #include "jsonpkt.h"
 #include "online.h"
+#include "summary.h"
 #include "table.h"
 #include "capture.h"
 
@@ -199,13 +200,20 @@ static int read_capture(replay *r, FILE *in)
     return r->rc;
 }
 
-static void print_summary(const replay *r)
+/* The last line: the packets of each direction, the bytes skipped, the CRC errors and the frames the
+ * parsers gave up (summary.h); with --json, the summary line. */
+static int print_summary(const replay *r)
 {
     const xf_parser_stats *h = &r->parser[XF_DIR_HOST].stats, *g = &r->parser[XF_DIR_GCU].stats;
-    printf("%s%zu packets: %zu host to GCU, %zu GCU to host; %u bytes skipped, %u CRC errors\n",
-           r->style == STYLE_TABLE ? "\n" : "", r->packets[0] + r->packets[1], r->packets[XF_DIR_HOST],
-           r->packets[XF_DIR_GCU], (unsigned)(h->bytes_skipped + g->bytes_skipped),
-           (unsigned)(h->crc_errors + g->crc_errors));
+    text_summary sum;
+    sum.host_packets = r->packets[XF_DIR_HOST];
+    sum.gcu_packets = r->packets[XF_DIR_GCU];
+    sum.bytes_skipped = (uint64_t)h->bytes_skipped + g->bytes_skipped;
+    sum.crc_errors = (uint64_t)h->crc_errors + g->crc_errors;
+    sum.given_up = (uint64_t)h->given_up + g->given_up;
+    fputs(r->style == STYLE_TABLE ? "\n" : "", stdout);
+    return summary_print(&sum, r->style == STYLE_JSON, stdout) == TEXT_OK ? XFGCU_EXIT_OK
+                                                                          : cli_fail("%s: out of memory", r->file);
 }
 
 /* ---- the command ------------------------------------------------------------------------ */
@@ -256,8 +264,8 @@ int replay_capture(FILE *in, const char *name, int json, int pod, int view, int 
     (void)xf_parser_init(&r->parser[XF_DIR_HOST], XF_DIR_HOST);
     (void)xf_parser_init(&r->parser[XF_DIR_GCU], XF_DIR_GCU);
     rc = read_capture(r, in);
-    if (rc == XFGCU_EXIT_OK && summary && !json) {
-        print_summary(r);
+    if (rc == XFGCU_EXIT_OK && summary) {
+        rc = print_summary(r);
     }
     free(r);
     return rc;
@@ -273,8 +281,8 @@ static int replay_file(replay *r)
     (void)xf_parser_init(&r->parser[XF_DIR_HOST], XF_DIR_HOST);
     (void)xf_parser_init(&r->parser[XF_DIR_GCU], XF_DIR_GCU);
     rc = read_capture(r, in); /* closes in */
-    if (rc == XFGCU_EXIT_OK && r->style != STYLE_JSON) {
-        print_summary(r);
+    if (rc == XFGCU_EXIT_OK) {
+        rc = print_summary(r);
     }
     return rc;
 }

@@ -23,7 +23,7 @@
 
 void help_send(FILE *out)
 {
-    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol 1|2] [--force] [--json]\n"
+    fputs("usage: xfgcu [LINK OPTIONS] send COMMAND [ARGS] [--protocol auto|1|2] [--force] [--json] [--verbose]\n"
           "       xfgcu send COMMAND --help\n\n"
           "Run one command on the GCU the way the protocol wants: null packets until the reply to one\n"
           "is back, then the command in every packet until a reply carries its execution state.\n"
@@ -36,7 +36,10 @@ void help_send(FILE *out)
           "  link lost                the link went down before the answer (exit 3)\n"
           "  interrupted              Ctrl-C or SIGTERM before the answer (exit 3)\n"
           "With --json: one object per line instead, {\"status\": \"ok\", \"order\": 32, ...} with\n"
-          "time_mono and time_utc (docs/cli.md lists the keys).\n\n"
+          "time_mono and time_utc, the version the GCU answered and the client's judgement of the link\n"
+          "(\"health\"; docs/cli.md lists the keys). --verbose: a second line with the same judgement.\n\n"
+          "With --protocol auto (the default) the arguments are checked for the version the GCU answers\n"
+          "in (pip --mode 3 needs V0.2), once it has answered.\n\n"
           "An order that the model the GCU reports does not have (by the vendor's V2.0.6 support list)\n"
           "is not sent: one line on stderr says so (exit 1); --force sends it all the same.\n\n"
           "commands (the same names and arguments as `xfgcu encode`):\n",
@@ -67,31 +70,55 @@ static void on_operating(void *user, const xf_cmd_result *r, uint32_t operating_
     fflush(stdout);
 }
 
-static int run_send(const cli_link *link, const xf_command *cmd, const char *name, int flags)
+/* --json: the result, the command, the link and the client's health. */
+static void result_json(const online *o, const xf_cmd_result *r, const char *name)
+{
+    json_t *obj = online_result_json(r);
+    if (obj != NULL) {
+        json_object_set_new(obj, "command", json_string(name));
+        json_object_set_new(obj, "link", json_string(o->desc));
+        json_object_set_new(obj, "version_answered", json_integer(xf_client_health(&o->client)->version_answered));
+        json_object_set_new(obj, "health", online_health_json(o));
+    }
+    (void)cli_json_line(obj);
+}
+
+/* --protocol auto: the command for the version the GCU answers in, now that it has. */
+static int build_for_gcu(const online *o, cmd_line *l)
+{
+    char why[64];
+    uint8_t version = xf_client_gcu_version(&o->client);
+    snprintf(why, sizeof(why), "the GCU answers in protocol %u", (unsigned)version);
+    return cmd_line_build(l, version, why);
+}
+
+static int run_send(const cli_link *link, cmd_line *l)
 {
     online *o = online_new();
     xf_cmd_result r;
-    char text[64], what[64];
-    int json = (flags & CMDLINE_JSON) != 0;
+    char text[256], what[64];
+    int json = (l->force & CMDLINE_JSON) != 0;
     int rc = (o != NULL) ? online_open(o, link, "send", NULL) : XFGCU_EXIT_USAGE;
+    if (rc == XFGCU_EXIT_OK && link->version_auto) {
+        rc = build_for_gcu(o, l);
+    }
     if (rc == XFGCU_EXIT_OK) {
-        o->submit_flags = (flags & CMDLINE_FORCE) ? XF_SUBMIT_ANY_MODEL : 0u;
-        rc = online_run(o, cmd, &r, on_operating, &json);
+        o->submit_flags = (l->force & CMDLINE_FORCE) ? XF_SUBMIT_ANY_MODEL : 0u;
+        rc = online_run(o, &l->cmd, &r, on_operating, &json);
     }
     if (rc == XFGCU_EXIT_OK) {
         if (json) {
-            json_t *obj = online_result_json(&r);
-            if (obj != NULL) {
-                json_object_set_new(obj, "command", json_string(name));
-                json_object_set_new(obj, "link", json_string(o->desc));
-            }
-            (void)cli_json_line(obj);
+            result_json(o, &r, l->spec.name);
         } else {
             online_result_text(&r, text, sizeof(text));
             printf("%s\n", text);
-            fflush(stdout);
         }
-        snprintf(what, sizeof(what), "send %s", name);
+        if ((l->force & CMDLINE_VERBOSE) && !json) { /* --json has it in its object */
+            online_health_text(o, text, sizeof(text));
+            printf("link: %s\n", text);
+        }
+        fflush(stdout);
+        snprintf(what, sizeof(what), "send %s", l->spec.name);
         rc = online_result_exit(o, what, &r);
     }
     online_free(o);
@@ -102,7 +129,8 @@ int cmd_send(const cli_link *link, int argc, char **argv)
 {
     cmd_line l;
     cli_link with_version;
-    int rc = cmd_line_parse(&l, "send", link->protocol, 0, help_send, argc, argv);
+    int rc = cmd_line_parse(&l, "send", link->version_auto ? (uint8_t)CMDLINE_AUTO : link->protocol, 0, help_send, argc,
+                            argv);
     if (rc != XFGCU_EXIT_OK || l.help) {
         return rc;
     }
@@ -110,7 +138,10 @@ int cmd_send(const cli_link *link, int argc, char **argv)
     if (!l.has_spec) {
         return cli_fail("send: which command? (see 'xfgcu send --help')");
     }
-    with_version.protocol = l.version;
+    with_version.version_auto = (uint8_t)(l.version == CMDLINE_AUTO);
+    if (l.version != CMDLINE_AUTO) {
+        with_version.protocol = l.version;
+    }
     cli_signals_init();
-    return run_send(&with_version, &l.cmd, l.spec.name, l.force);
+    return run_send(&with_version, &l);
 }

@@ -10,11 +10,13 @@
  *     xfgcu sim: listening on pty /dev/pts/5 [link PATH]
  *     xfgcu sim: listening on serial /dev/ttyUSB0 at 115200 baud
  *
- * then runs until SIGINT or SIGTERM (exit 0), or --duration, printing
- * nothing more unless --verbose or --stats. With --json, the same log as
+ * then runs until SIGINT or SIGTERM (exit 0), or --duration, printing a
+ * line for each packet it answered by a strict reading of an open question
+ * (xf_sim_note: docs/protocol.md §12), with --verbose one for each order
+ * it executes, and with --stats its counters. With --json, the same log as
  * JSON Lines, each object with time_mono and time_utc: {"event":
- * "listening", ...}, then {"event": "executed", ...} with --verbose and
- * {"event": "stats", ...} with --stats.
+ * "listening", ...}, {"event": "note", ...}, {"event": "executed", ...},
+ * {"event": "stats", ...}.
  */
 #define _POSIX_C_SOURCE 200809L /* getpid */
 
@@ -57,8 +59,15 @@ void help_sim(FILE *out)
           "  --noise PERMILLE      after each byte it sends, a random byte more with this chance, 0..1000\n"
           "  --drop-bytes PERMILLE each byte it would send is lost with this chance, 0..1000\n"
           "  --calibration-ms MS   how long calibration answers \"operating\", 0..600000 (default 1500)\n"
+          "  --state-once          the execution state only in the first reply after an execution, 72-byte\n"
+          "                        replies to the order's repeats (one reading of V2.0.6's flowchart)\n"
+          "  --answer-only N       answer only packets of version byte N (1 or 2), ignore the others, as\n"
+          "                        some GCU-side programs do; replies in version N unless --protocol says\n"
+          "  --main-camera N       the camera on the main screen, 1 (default) or 2: its zoom scales the\n"
+          "                        control rates\n"
           "  --duration S          stop by itself after S seconds\n"
-          "  --verbose             print each order it executes\n"
+          "  --verbose             print each order it executes (a packet read by a strict reading of an\n"
+          "                        open question, docs/protocol.md section 12, is always printed)\n"
           "  --stats S             print its counters every S seconds, and when it stops\n"
           "  --json                its lines as JSON objects instead, one per line, with time_mono and\n"
           "                        time_utc: {\"event\": \"listening\", \"link\": \"tcp\", \"port\": 2332, ...},\n"
@@ -82,6 +91,9 @@ typedef struct sim_args {
     int has_baud, has_drop, has_delay, has_jitter, has_dup, has_calibration;
     double duration, stats;
     int has_duration, has_stats, verbose, json, help;
+    int state_once;
+    long answer_only, main_camera;
+    int has_answer_only, has_main_camera, has_version;
 } sim_args;
 
 /* ---- arguments ------------------------------------------------------------------------- */
@@ -105,6 +117,9 @@ enum {
     O_STATS,
     O_CALIBRATION,
     O_DURATION,
+    O_STATE_ONCE,
+    O_ANSWER_ONLY,
+    O_MAIN_CAMERA,
     O_VERBOSE,
     O_JSON,
     O_HELP
@@ -131,6 +146,9 @@ static const struct option sim_options[] = {
     {"stats", required_argument, NULL, O_STATS},
     {"calibration-ms", required_argument, NULL, O_CALIBRATION},
     {"duration", required_argument, NULL, O_DURATION},
+    {"state-once", no_argument, NULL, O_STATE_ONCE},
+    {"answer-only", required_argument, NULL, O_ANSWER_ONLY},
+    {"main-camera", required_argument, NULL, O_MAIN_CAMERA},
     {"verbose", no_argument, NULL, O_VERBOSE},
     {"json", no_argument, NULL, O_JSON},
     {"help", no_argument, NULL, O_HELP},
@@ -188,7 +206,7 @@ static int take_arg(sim_args *s, cli_args *a, int id)
     case O_LINK: return cli_value_text(a, "PATH", &s->link);
     case O_BAUD: return cli_value_baud(a, &s->baud, &s->has_baud);
     case O_BIND: return cli_value_text(a, "ADDR", &s->bind);
-    case O_PROTOCOL: return cli_value_protocol(a, &s->version);
+    case O_PROTOCOL: s->has_version = 1; return cli_value_protocol(a, &s->version);
     case O_MODEL: return cli_value_long(a, 0, 255, "a model code 0..255", &s->model, &s->has_model);
     case O_REPLY_TO: return cli_value_text(a, "ADDR[:PORT]", &s->reply_to);
     case O_FAIL: return take_fail(s, a->value);
@@ -203,6 +221,9 @@ static int take_arg(sim_args *s, cli_args *a, int id)
         return cli_value_long(a, 0, 600000, "milliseconds, 0..600000", &s->calibration_ms, &s->has_calibration);
     case O_DURATION:
         return cli_value_real(a, 0.1, 31536000.0, "seconds, 0.1..31536000", &s->duration, &s->has_duration);
+    case O_STATE_ONCE: s->state_once = 1; return XFGCU_EXIT_OK;
+    case O_ANSWER_ONLY: return cli_value_long(a, 1, 2, "a version byte, 1 or 2", &s->answer_only, &s->has_answer_only);
+    case O_MAIN_CAMERA: return cli_value_long(a, 1, 2, "a camera, 1 or 2", &s->main_camera, &s->has_main_camera);
     case O_VERBOSE: s->verbose = 1; return XFGCU_EXIT_OK;
     case O_JSON: s->json = 1; return XFGCU_EXIT_OK;
     case O_HELP: s->help = 1; return XFGCU_EXIT_OK;
@@ -238,6 +259,8 @@ typedef struct sim_run {
     xf_sim sim;
     xf_hal hal;
     int opened;
+    int json;               /* --json: the log's lines as objects */
+    uint32_t start_ms;      /* when it became ready: the log's times count from here */
     uint32_t executed[256]; /* seen so far, for --verbose */
 } sim_run;
 
@@ -330,6 +353,9 @@ static void json_ready(const sim_run *s, const sim_args *a)
             break;
         }
         json_object_set_new(obj, "protocol", json_integer(a->version));
+        json_object_set_new(obj, "state_once", json_boolean(a->state_once));
+        json_object_set_new(obj, "answer_only", a->has_answer_only ? json_integer(a->answer_only) : json_null());
+        json_object_set_new(obj, "main_camera", json_integer(a->has_main_camera ? a->main_camera : 1));
         json_object_set_new(obj, "pid", json_integer((json_int_t)getpid()));
     }
     (void)cli_json_line(obj);
@@ -356,6 +382,37 @@ static void print_ready(const sim_run *s, const sim_args *a)
     fflush(stdout);
 }
 
+/* A packet answered by a strict reading (xf_sim_note): one line of the log, whatever --verbose. The
+ * question's number is its row in docs/protocol.md section 12 (xf_sim_question's value). */
+static void on_note(void *user, const xf_sim_note *n)
+{
+    const sim_run *s = (const sim_run *)user;
+    const char *name = xf_order_name(n->order);
+    uint32_t elapsed = xf_ms_since(xf_posix_now_ms(), s->start_ms);
+    json_t *obj;
+    if (!s->json) {
+        printf("xfgcu sim: %.3f s: note: open question %d: %s (0x%02X) with %u parameter bytes, first 0x%02X, "
+               "answered state 0x%02X: %s\n",
+               cli_seconds(elapsed), (int)n->question, name ? name : "unknown order", (unsigned)n->order,
+               (unsigned)n->params_len, (unsigned)n->param0, (unsigned)n->state, n->text);
+        fflush(stdout);
+        return;
+    }
+    obj = cli_json_times(json_object());
+    if (obj != NULL) {
+        json_object_set_new(obj, "event", json_string("note"));
+        json_object_set_new(obj, "t", json_real(cli_seconds(elapsed)));
+        json_object_set_new(obj, "question", json_integer((json_int_t)n->question));
+        json_object_set_new(obj, "order", json_integer(n->order));
+        json_object_set_new(obj, "order_name", name != NULL ? json_string(name) : json_null());
+        json_object_set_new(obj, "params_len", json_integer(n->params_len));
+        json_object_set_new(obj, "param0", json_integer(n->param0));
+        json_object_set_new(obj, "state", json_integer(n->state));
+        json_object_set_new(obj, "text", json_string(n->text));
+    }
+    (void)cli_json_line(obj);
+}
+
 static int start_sim(sim_run *s, const sim_args *a)
 {
     xf_sim_config sc;
@@ -371,6 +428,12 @@ static int start_sim(sim_run *s, const sim_args *a)
     xf_simlink_wire_init(&s->wire, &s->hal, 1u, &s->hal); /* no fault unless asked */
     s->wire.noise_permille = (uint16_t)a->noise;
     s->wire.drop_permille = (uint16_t)a->drop_bytes;
+    sc.state_once = (uint8_t)a->state_once;
+    sc.answer_only = (uint8_t)a->answer_only; /* 0: every version */
+    sc.main_camera = (uint8_t)(a->has_main_camera ? a->main_camera : 1);
+    sc.on_note = on_note;
+    sc.user = s;
+    s->json = a->json;
     if (xf_sim_init(&s->sim, &sc) != XF_OK || xf_sim_attach(&s->sim, &s->hal) != XF_OK) {
         return cli_fail("sim: cannot start the simulator");
     }
@@ -451,6 +514,7 @@ static void run_sim(sim_run *s, const sim_args *a)
 {
     xf_sim *sims[1];
     uint32_t start = xf_posix_now_ms(), elapsed = 0, stats_ms = (uint32_t)(a->stats * 1000.0 + 0.5), last_stats = start;
+    s->start_ms = start;
     sims[0] = &s->sim;
     /* a log (stdout) that cannot be written ends the simulator: main() says so */
     while (!cli_stop_requested() && !(a->has_duration && cli_seconds(elapsed) >= a->duration) && !ferror(stdout)) {
@@ -497,6 +561,9 @@ int cmd_sim(const cli_link *link, int argc, char **argv)
     if (rc == XFGCU_EXIT_OK && a.help) {
         help_sim(stdout);
         return XFGCU_EXIT_OK;
+    }
+    if (a.has_answer_only && !a.has_version) {
+        a.version = (uint8_t)a.answer_only; /* a GCU that answers version N only speaks N */
     }
     if (rc != XFGCU_EXIT_OK || (rc = check_args(&a)) != XFGCU_EXIT_OK) {
         return rc;

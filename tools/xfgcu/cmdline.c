@@ -12,23 +12,24 @@
 #define ID_JSON     'j'
 #define ID_FORCE    'f'
 #define ID_JSON_OUT 'J' /* send's --json: the result as a JSON object */
+#define ID_VERBOSE  'v' /* send's --verbose: the link's health after the result */
 
-#define MAX_OPTIONS 16 /* a command's own options, then --protocol, --help, --force, --json */
-#define MAX_ARGS    32 /* named arguments of one command: more is a usage error */
+#define MAX_OPTIONS 17 /* a command's own options, then --protocol, --help, --force, --json, --verbose */
 
 /* The command's options for getopt_long(), --protocol and --help when @p line (encode and send
- * take them after COMMAND too), and --force and --json when @p force (send's). */
+ * take them after COMMAND too), and --force, --json and --verbose when @p force (send's). */
 static void command_options(const cmd_spec *spec, int line, int force, struct option *opts)
 {
     static const struct option extra[] = {{"protocol", required_argument, NULL, ID_PROTOCOL},
                                           {"help", no_argument, NULL, ID_HELP},
                                           {"force", no_argument, NULL, ID_FORCE},
                                           {"json", no_argument, NULL, ID_JSON_OUT},
+                                          {"verbose", no_argument, NULL, ID_VERBOSE},
                                           {NULL, 0, NULL, 0}};
     size_t i, n = 0;
     int takes_value = 0;
     const char *name;
-    for (i = 0; n + 5u < MAX_OPTIONS && (name = cmdargs_option(spec, i, &takes_value)) != NULL; i++) {
+    for (i = 0; n + 6u < MAX_OPTIONS && (name = cmdargs_option(spec, i, &takes_value)) != NULL; i++) {
         opts[n].name = name;
         opts[n].has_arg = takes_value ? required_argument : no_argument;
         opts[n].flag = NULL;
@@ -37,10 +38,21 @@ static void command_options(const cmd_spec *spec, int line, int force, struct op
     for (i = 0; line && i < 2u; i++) {
         opts[n++] = extra[i];
     }
-    for (i = 2; force && i < 4u; i++) {
+    for (i = 2; force && i < 5u; i++) {
         opts[n++] = extra[i];
     }
-    opts[n] = extra[4];
+    opts[n] = extra[5];
+}
+
+/* --protocol: encode's 1 or 2; send's auto too (@p send), as CMDLINE_AUTO. */
+static int take_protocol(const cli_args *a, int send, uint8_t *version)
+{
+    uint8_t v = (*version == CMDLINE_AUTO) ? XF_PROTOCOL_V1 : *version, version_auto = 0;
+    int rc = send ? cli_value_protocol_auto(a, &v, &version_auto) : cli_value_protocol(a, &v);
+    if (rc == XFGCU_EXIT_OK) {
+        *version = version_auto ? (uint8_t)CMDLINE_AUTO : v;
+    }
+    return rc;
 }
 
 /* The first pass over the arguments of encode and send: --protocol (the last one wins) and
@@ -54,29 +66,51 @@ static int take_line_options(const char *where, int argc, char **argv, const str
     a.quiet = 1;
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         if (id == ID_PROTOCOL) {
-            rc = cli_value_protocol(&a, version);
+            rc = take_protocol(&a, force != NULL, version);
         } else if (id == ID_HELP) {
             *help = 1;
         } else if (id == ID_FORCE && force != NULL) { /* only offered with a place for it */
             *force |= CMDLINE_FORCE;
         } else if (id == ID_JSON_OUT && force != NULL) {
             *force |= CMDLINE_JSON;
+        } else if (id == ID_VERBOSE && force != NULL) {
+            *force |= CMDLINE_VERBOSE;
         }
     }
     return rc;
 }
 
-/* The arguments of COMMAND (argv[0]) as named pairs, then the command the text layer builds of
- * them for protocol *version, read only now: a link option after COMMAND may have set it. */
-static int build(const cmd_spec *spec, const char *who, const struct option *opts, const char *hint, int argc,
-                 char **argv, const uint8_t *version, xf_command *cmd)
+/* The command of @p n named arguments for protocol @p version; CMDLINE_AUTO: for the first version
+ * they fit (1, else 2), without notes (the version the GCU answers in is not known yet), and
+ * version 1's error when they fit neither. */
+static int build_named(const cmd_spec *spec, const char *who, const text_arg *args, size_t n, uint8_t version,
+                       xf_command *cmd)
 {
-    text_arg args[MAX_ARGS];
-    size_t n = 0;
+    text_err e, e2;
+    text_err_init(&e);
+    if (cmdargs_build(spec, args, n, version == CMDLINE_AUTO ? XF_PROTOCOL_V1 : version, who, cmd, &e) == TEXT_OK) {
+        if (version != CMDLINE_AUTO) {
+            cli_text_notes(&e);
+        }
+        return XFGCU_EXIT_OK;
+    }
+    text_err_init(&e2);
+    if (version == CMDLINE_AUTO && cmdargs_build(spec, args, n, XF_PROTOCOL_V2, who, cmd, &e2) == TEXT_OK) {
+        return XFGCU_EXIT_OK;
+    }
+    return cli_text_fail(&e, NULL);
+}
+
+/* The arguments of COMMAND (argv[0]) as named pairs into @p args (CMDLINE_ARGS of them at most),
+ * then the command the text layer builds of them for protocol *version, read only now: a link
+ * option after COMMAND may have set it. */
+static int build(const cmd_spec *spec, const char *who, const struct option *opts, const char *hint, int argc,
+                 char **argv, const uint8_t *version, xf_command *cmd, text_arg *args, size_t *n)
+{
     char where[64];
-    text_err e;
     cli_args a;
     int id, rc = XFGCU_EXIT_OK;
+    *n = 0;
     snprintf(where, sizeof(where), "%s %s", who, spec->name);
     cli_args_init(&a, argc, argv, CLI_IN_ORDER "h", opts, where);
     a.hint = hint;
@@ -85,19 +119,23 @@ static int build(const cmd_spec *spec, const char *who, const struct option *opt
             rc = XFGCU_EXIT_USAGE; /* said */
         } else if (id == CLI_ARG) {
             rc = cli_unexpected(&a);
-        } else if (id >= ID_OPT && n == MAX_ARGS) {
-            rc = cli_fail_in(where, "more than %d arguments", MAX_ARGS);
+        } else if (id >= ID_OPT && *n == CMDLINE_ARGS) {
+            rc = cli_fail_in(where, "more than %d arguments", CMDLINE_ARGS);
         } else if (id >= ID_OPT) {
-            args[n].name = a.opt->name;
-            args[n++].value = a.value;
+            args[*n].name = a.opt->name;
+            args[(*n)++].value = a.value;
         }
     }
-    if (rc != XFGCU_EXIT_OK) {
-        return rc;
-    }
+    return (rc == XFGCU_EXIT_OK) ? build_named(spec, who, args, *n, *version, cmd) : rc;
+}
+
+int cmd_line_build(cmd_line *l, uint8_t version, const char *why)
+{
+    text_err e;
     text_err_init(&e);
-    if (cmdargs_build(spec, args, n, *version, who, cmd, &e) != TEXT_OK) {
-        return cli_text_fail(&e, NULL);
+    if (cmdargs_build(&l->spec, l->args, l->nargs, version, "send", &l->cmd, &e) != TEXT_OK) {
+        cli_text_notes(&e);
+        return cli_fail("%s (%s)", e.message, why);
     }
     cli_text_notes(&e);
     return XFGCU_EXIT_OK;
@@ -107,10 +145,12 @@ int cmd_line_command(const cmd_spec *spec, const char *who, int argc, char **arg
                      xf_command *cmd)
 {
     struct option opts[MAX_OPTIONS];
+    text_arg args[CMDLINE_ARGS];
+    size_t n = 0;
     char hint[64];
     snprintf(hint, sizeof(hint), "send %s", spec->name); /* no --help after COMMAND here: send's tells */
     command_options(spec, 0, 0, opts);
-    return build(spec, who, opts, hint, argc, argv, version, cmd);
+    return build(spec, who, opts, hint, argc, argv, version, cmd, args, &n);
 }
 
 /* COMMAND [ARGS] of encode's or send's line (argv[0] is COMMAND). */
@@ -132,7 +172,7 @@ static int command_of_line(cmd_line *l, const char *who, int argc, char **argv)
     if (rc != XFGCU_EXIT_OK || l->help) {
         return rc;
     }
-    return build(&l->spec, who, opts, NULL, argc, argv, &l->version, &l->cmd);
+    return build(&l->spec, who, opts, NULL, argc, argv, &l->version, &l->cmd, l->args, &l->nargs);
 }
 
 /* --json OBJECT, --json - or --json alone (JSON Lines on stdin): the next argument is the OBJECT
@@ -157,8 +197,9 @@ int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json,
                                          {"json", optional_argument, NULL, ID_JSON},
                                          {NULL, 0, NULL, 0},
                                          {"force", no_argument, NULL, ID_FORCE},
-                                         {"json", no_argument, NULL, ID_JSON_OUT}};
-    struct option with_force[5] = {opts[0], opts[1], opts[4], opts[5], opts[3]}; /* send: --force, --json */
+                                         {"json", no_argument, NULL, ID_JSON_OUT},
+                                         {"verbose", no_argument, NULL, ID_VERBOSE}};
+    struct option with_force[6] = {opts[0], opts[1], opts[4], opts[5], opts[6], opts[3]}; /* send's */
     cli_args a;
     int id, rest, rc = XFGCU_EXIT_OK;
     memset(l, 0, sizeof(*l));
@@ -168,10 +209,11 @@ int cmd_line_parse(cmd_line *l, const char *who, uint8_t version, int with_json,
     while (rc == XFGCU_EXIT_OK && (id = cli_next(&a)) != CLI_END) {
         switch (id) {
         case CLI_BAD: rc = XFGCU_EXIT_USAGE; break;
-        case ID_PROTOCOL: rc = cli_value_protocol(&a, &l->version); break;
+        case ID_PROTOCOL: rc = take_protocol(&a, l->with_force, &l->version); break;
         case ID_HELP: l->help = 1; break;
         case ID_FORCE: l->force |= CMDLINE_FORCE; break;
         case ID_JSON_OUT: l->force |= CMDLINE_JSON; break;
+        case ID_VERBOSE: l->force |= CMDLINE_VERBOSE; break;
         default: rc = take_json(&a, &l->json); break;
         }
     }

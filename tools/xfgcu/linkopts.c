@@ -45,13 +45,15 @@ void help_link_options(FILE *out)
           "  --tcp HOST[:PORT]     connect as TCP client (port 2332)\n"
           "  --gcu-port N          the GCU's UDP port (2337) or TCP port (2332)\n"
           "  --local-port N        local UDP port to receive on (2338; 0 = any free port)\n"
-          "  --protocol 1|2        version byte sent (1)\n"
+          "  --protocol auto|1|2   version byte sent: auto (the default) tries 1, then 2, until the GCU\n"
+          "                        answers, and keeps the one it answers; 1 or 2 sends that one only\n"
           "  --rate HZ             the link's packet rate, packets per second, 1..200 (50; the vendor\n"
           "                        recommends 30..50)\n"
           "  --timeout MS          how long to wait for the first reply and for a command's feedback (1000)\n"
           "  --reorder MS          the longest the network can delay one packet behind a later one (0:\n"
           "                        it keeps order, as serial, TCP and a wired LAN do); 0..1000, and a\n"
-          "                        packet period plus twice it under 250 ms (114 at 50 Hz)\n"
+          "                        packet period plus twice it under 250 ms (114 at 50 Hz). Not given:\n"
+          "                        the client judges the link and uses a bound while it is not in order\n"
           "  --trace               print every packet sent and received on stderr, one line each\n"
           "general options (anywhere):\n"
           "  --raw                 fields as wire integers, not engineering units (docs/protocol.md,\n"
@@ -66,7 +68,8 @@ void linkopts_defaults(cli_link *l, const char *env_spec)
     memset(l, 0, sizeof(*l));
     l->baud = 115200L;
     l->local_port = 2338L;
-    l->protocol = XF_PROTOCOL_V1;
+    l->protocol = XF_PROTOCOL_V1; /* the version auto tries first */
+    l->version_auto = 1u;
     l->rate_hz = 50L;
     l->timeout_ms = 1000L;
     l->view = TEXT_ENGINEERING;
@@ -139,9 +142,11 @@ int linkopts_take(cli_link *l, const cli_args *a, int id)
     case LO_LOCAL_PORT:
         l->has_local_port = 1;
         return cli_value_long(a, 0, 65535, "a port 0..65535 (0: any free port)", &l->local_port, NULL);
-    case LO_PROTOCOL: return cli_value_protocol(a, &l->protocol);
+    case LO_PROTOCOL: return cli_value_protocol_auto(a, &l->protocol, &l->version_auto);
     case LO_RATE: return cli_value_long(a, 1, 200, "packets per second, 1..200", &l->rate_hz, NULL);
-    case LO_REORDER: return cli_value_long(a, 0, 1000, "milliseconds, 0..1000", &l->reorder_ms, NULL);
+    case LO_REORDER:
+        l->has_reorder = 1;
+        return cli_value_long(a, 0, 1000, "milliseconds, 0..1000", &l->reorder_ms, NULL);
     case LO_TRACE: l->trace = 1; return XFGCU_EXIT_OK;
     case LO_RAW: l->view = TEXT_RAW; return XFGCU_EXIT_OK;
     default: return cli_value_long(a, 1, 3600000L, "milliseconds, 1..3600000", &l->timeout_ms, NULL);

@@ -111,15 +111,35 @@ static int keep_waiting(online *o, uint32_t start, const char *why)
     return 1;
 }
 
+/* What a silent GCU's user should check, for the one line: the versions tried, the link's own
+ * settings by its kind, power and wiring, and probe. */
+static void silence_hint(const online *o, char *buf, size_t cap)
+{
+    unsigned both = (1u << XF_PROTOCOL_V1) | (1u << XF_PROTOCOL_V2);
+    const char *tried = ((o->versions_sent & both) == both) ? "protocol versions 1 and 2 tried"
+                        : o->opt->version_auto              ? "one protocol version tried: give a longer --timeout"
+                                                            : "one protocol version sent: --protocol auto tries both";
+    const char *check = (o->link.spec.kind == XF_LINK_KIND_SERIAL) ? "the device and --baud"
+                        : (o->link.spec.kind == XF_LINK_KIND_UDP)
+                            ? "the address, the GCU's UDP port and the local port it answers to (--local-port)"
+                            : "the address and TCP port";
+    snprintf(buf, cap, " (%s): check %s, the GCU's power and wiring, then try 'xfgcu probe' on this link", tried,
+             check);
+}
+
 /* The one line when a wait (online.wait_ms) ends with no GCU. */
 static int waited_in_vain(const online *o, uint32_t start, const char *why)
 {
     const char *where = o->desc[0] ? o->desc : o->option;
+    char hint[256] = "";
     if (cli_stop_requested()) {
         return cli_fail_link("%s: interrupted while waiting for the GCU on %s", o->context, where);
     }
-    return cli_fail_link("no answer from the GCU on %s within %.1f s%s%s", where,
-                         cli_seconds(xf_ms_since(xf_posix_now_ms(), start)), why ? ": " : "", why ? why : "");
+    if (o->client_on) { /* the link opened: the GCU is silent */
+        silence_hint(o, hint, sizeof(hint));
+    }
+    return cli_fail_link("no answer from the GCU on %s within %.1f s%s%s%s", where,
+                         cli_seconds(xf_ms_since(xf_posix_now_ms(), start)), why ? ": " : "", why ? why : "", hint);
 }
 
 static int open_link(online *o, uint32_t start)
@@ -186,6 +206,9 @@ static void trace_packet(const online *o, xf_direction dir, const uint8_t *data,
 static void online_on_bytes(void *user, xf_direction dir, const uint8_t *data, size_t len, uint32_t now_ms)
 {
     online *o = (online *)user;
+    if (dir == XF_DIR_HOST && data[XF_OFF_VERSION] < 8u) {
+        o->versions_sent |= 1u << data[XF_OFF_VERSION];
+    }
     if (o->opt->trace) {
         trace_packet(o, dir, data, len, now_ms);
     }
@@ -215,6 +238,9 @@ static int start_client(online *o, const online_hooks *hooks)
     cc.rate_hz = (uint16_t)o->opt->rate_hz;
     cc.command_timeout_ms = (uint32_t)o->opt->timeout_ms;
     cc.reorder_ms = (uint16_t)o->opt->reorder_ms;
+    /* given: the user's bound, 0 included; a serial line and TCP keep order, so there is nothing to judge */
+    cc.reorder_fixed = (uint8_t)(o->opt->has_reorder != 0 || xf_link_keeps_order(&o->link.spec));
+    cc.version_auto = o->opt->version_auto;
     if (hooks != NULL) {
         o->hooks = *hooks;
     }
@@ -249,6 +275,7 @@ static int wait_first_reply(online *o, uint32_t wait_start)
     uint32_t start = xf_posix_now_ms();
     uint32_t limit = (uint32_t)o->opt->timeout_ms;
     const char *why;
+    char hint[256];
     while (xf_client_link(&o->client) != XF_LINK_UP) {
         if (cli_stop_requested()) {
             return cli_fail_link("%s: interrupted while waiting for the GCU on %s", o->context, o->desc);
@@ -262,8 +289,9 @@ static int wait_first_reply(online *o, uint32_t wait_start)
             if (o->wait_ms > 0u) {
                 return waited_in_vain(o, wait_start, why);
             }
-            return cli_fail_link("no answer from the GCU on %s within %u ms%s%s", o->desc, (unsigned)limit,
-                                 why ? ": " : "", why ? why : "");
+            silence_hint(o, hint, sizeof(hint));
+            return cli_fail_link("no answer from the GCU on %s within %u ms%s%s%s", o->desc, (unsigned)limit,
+                                 why ? ": " : "", why ? why : "", hint);
         }
         online_poll(o, 20);
     }
@@ -295,22 +323,28 @@ int online_open(online *o, const cli_link *opt, const char *context, const onlin
     return rc;
 }
 
-/* --json of point and rate: the mode's result, one line. */
-static void mode_json(const online *o, const xf_cmd_result *r)
+int online_run_mode(online *o, uint8_t order, int json, xf_cmd_result *r)
 {
-    json_t *obj = online_result_json(r);
-    if (obj != NULL) {
-        json_object_set_new(obj, "step", json_string("mode"));
-        json_object_set_new(obj, "link", json_string(o->desc));
+    xf_command cmd;
+    int rc;
+    xf_client_clear_control(&o->client); /* nothing the mode before would read its own way */
+    xf_command_init(&cmd, order);
+    rc = online_run(o, &cmd, r, NULL, NULL);
+    if (rc == XFGCU_EXIT_OK && json) {
+        json_t *obj = online_result_json(r);
+        if (obj != NULL) {
+            json_object_set_new(obj, "step", json_string("mode"));
+            json_object_set_new(obj, "link", json_string(o->desc));
+        }
+        (void)cli_json_line(obj);
     }
-    (void)cli_json_line(obj);
+    return rc;
 }
 
 int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, const char *what, int json,
                        online_mode_fn then, const void *args)
 {
     online *o = online_new();
-    xf_command cmd;
     xf_cmd_result r;
     int rc = (o != NULL) ? XFGCU_EXIT_OK : XFGCU_EXIT_USAGE;
     cli_signals_init();
@@ -318,12 +352,7 @@ int online_run_in_mode(const cli_link *opt, const char *context, uint8_t order, 
         rc = online_open(o, opt, context, NULL);
     }
     if (rc == XFGCU_EXIT_OK) {
-        xf_client_clear_control(&o->client); /* nothing the mode before would read its own way */
-        xf_command_init(&cmd, order);
-        rc = online_run(o, &cmd, &r, NULL, NULL);
-    }
-    if (rc == XFGCU_EXIT_OK && json) {
-        mode_json(o, &r);
+        rc = online_run_mode(o, order, json, &r);
     }
     if (rc == XFGCU_EXIT_OK) {
         rc = online_result_exit(o, what, &r);
@@ -516,4 +545,81 @@ void online_attitude_text(const xf_telemetry *t, char *buf, size_t cap)
 {
     snprintf(buf, cap, "roll %.2f pitch %.2f yaw %.2f deg", (double)xf_cdeg(t->cam_roll), (double)xf_cdeg(t->cam_pitch),
              (double)xf_cdeg(t->cam_yaw));
+}
+
+/* ---- the client's health ------------------------------------------------------------ */
+
+json_t *online_health_json(const online *o)
+{
+    const xf_health *h = xf_client_health(&o->client);
+    json_t *obj = json_object();
+    if (obj == NULL) {
+        return NULL;
+    }
+    json_object_set_new(obj, "version_setting",
+                        o->opt->version_auto ? json_string("auto") : json_integer(o->opt->protocol));
+    json_object_set_new(obj, "version_sent", json_integer(h->version_sent));
+    json_object_set_new(obj, "version_answered", h->version_answered ? json_integer(h->version_answered) : json_null());
+    json_object_set_new(obj, "gcu_version", h->replies ? json_integer(xf_client_gcu_version(&o->client)) : json_null());
+    json_object_set_new(obj, "in_order", json_boolean(h->in_order));
+    json_object_set_new(obj, "out_of_turn", json_integer((json_int_t)h->out_of_turn));
+    json_object_set_new(obj, "reorder_ms", json_integer(h->reorder_ms));
+    json_object_set_new(obj, "reorder_fixed", json_boolean(o->opt->has_reorder || xf_link_keeps_order(&o->link.spec)));
+    json_object_set_new(obj, "replies", json_integer((json_int_t)h->replies));
+    json_object_set_new(obj, "given_up", json_integer((json_int_t)xf_client_parser_stats(&o->client)->given_up));
+    return obj;
+}
+
+void online_health_text(const online *o, char *buf, size_t cap)
+{
+    const xf_health *h = xf_client_health(&o->client);
+    char version[64];
+    if (h->version_answered != 0u) {
+        snprintf(version, sizeof(version), "protocol version %u answered (%s)", (unsigned)h->version_answered,
+                 o->opt->version_auto ? "auto" : "--protocol");
+    } else {
+        snprintf(version, sizeof(version), "no protocol version answered yet (sending %u)", (unsigned)h->version_sent);
+    }
+    snprintf(buf, cap, "%s, link %s, reorder bound %u ms%s, %lu replies out of turn, %lu frames given up", version,
+             h->in_order ? "in order" : "not shown in order", (unsigned)h->reorder_ms,
+             o->opt->has_reorder ? " (--reorder)" : "", (unsigned long)h->out_of_turn,
+             (unsigned long)xf_client_parser_stats(&o->client)->given_up);
+}
+
+/* ---- packets outside the client (probe's questions) -------------------------------- */
+
+xf_err online_raw_send(online *o, const uint8_t *data, size_t len)
+{
+    xf_err err = o->hal.write(o->hal.ctx, data, len);
+    if (err == XF_OK) {
+        online_on_bytes(o, XF_DIR_HOST, data, len, xf_posix_now_ms());
+    }
+    return err;
+}
+
+unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const uint8_t *data, size_t len), void *user)
+{
+    xf_parser parser;
+    uint8_t buf[256];
+    uint32_t start = xf_posix_now_ms(), waited;
+    unsigned n = 0;
+    (void)xf_parser_init(&parser, XF_DIR_GCU);
+    while ((waited = xf_ms_since(xf_posix_now_ms(), start)) < ms) {
+        struct pollfd pfd;
+        size_t got_len = 0, taken = 0, used = 0;
+        xf_frame frame;
+        pfd.fd = xf_hal_fd(&o->hal);
+        pfd.events = POLLIN;
+        (void)poll(&pfd, pfd.fd >= 0 ? 1u : 0u, (int)(ms - waited));
+        if (o->hal.read(o->hal.ctx, buf, sizeof(buf), &got_len) != XF_OK) {
+            break;
+        }
+        while (xf_parser_feed(&parser, buf + taken, got_len - taken, &used, &frame) == XF_PARSE_FRAME) {
+            taken += used;
+            online_on_bytes(o, XF_DIR_GCU, frame.data, frame.len, xf_posix_now_ms());
+            got(user, frame.data, frame.len);
+            n++;
+        }
+    }
+    return n;
 }

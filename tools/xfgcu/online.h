@@ -58,14 +58,15 @@ typedef struct online {
     xf_tap tap;
     xf_hal hal; /* what the client uses: raw, or tapped */
     xf_client client;
-    uint32_t up_ms;        /* how long the first reply took */
-    uint32_t t0_ms;        /* xf_posix_now_ms() when the link opened: --trace's and --json's times count from here */
-    online_hooks hooks;    /* the command's callbacks, called after --trace's */
-    int client_on;         /* the client was started: online_free() lets it settle first */
-    unsigned submit_flags; /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
-    uint32_t wait_ms;      /* set before online_open() (monitor --wait): 0, --timeout as usual; else how long the
-                              link may take to open and the GCU to answer first, ONLINE_WAIT_FOREVER: until a signal */
-    int wait_note;         /* print one note on stderr when the wait goes on past --timeout (a person is watching) */
+    uint32_t up_ms;         /* how long the first reply took */
+    uint32_t t0_ms;         /* xf_posix_now_ms() when the link opened: --trace's and --json's times count from here */
+    online_hooks hooks;     /* the command's callbacks, called after --trace's */
+    int client_on;          /* the client was started: online_free() lets it settle first */
+    unsigned submit_flags;  /* xf_client_submit_opt() flags: XF_SUBMIT_ANY_MODEL for send --force */
+    uint32_t wait_ms;       /* set before online_open() (monitor --wait): 0, --timeout as usual; else how long the
+                               link may take to open and the GCU to answer first, ONLINE_WAIT_FOREVER: until a signal */
+    int wait_note;          /* print one note on stderr when the wait goes on past --timeout (a person is watching) */
+    unsigned versions_sent; /* a bit per version byte the client has sent (1u << version): what a silence tried */
 } online;
 
 /** online.wait_ms: wait for the GCU until SIGINT or SIGTERM. */
@@ -86,6 +87,14 @@ online *online_new(void);
  * --reorder, with a note if it does not; then close the link and free @p o (may be NULL).
  */
 void online_free(online *o);
+
+/**
+ * Switch the gimbal's mode with @p order, run as send runs it, with no control quantities (the
+ * mode before would read them its own way); with @p json, print its result as one JSON line
+ * (online_result_json() with "step": "mode" and "link"), whatever it is. @return an exit code
+ * (a usage error only; the result is in *@p r)
+ */
+int online_run_mode(online *o, uint8_t order, int json, xf_cmd_result *r);
 
 /** What point and rate do once the gimbal is in their mode. @return an exit code. */
 typedef int (*online_mode_fn)(online *o, const void *args);
@@ -147,6 +156,31 @@ void online_result_text(const xf_cmd_result *r, char *buf, size_t cap);
  * failure ("send zoom-in: the GCU answered failed cameras 0x02 on tcp ...").
  */
 int online_result_exit(const online *o, const char *what, const xf_cmd_result *r);
+
+/* ---- what the user sees of the client's health --------------------------------------- */
+
+/**
+ * The client's judgement of the link and the version the GCU answers, as JSON: version_setting
+ * ("auto", 1 or 2: --protocol), version_sent, version_answered (null before an answer),
+ * gcu_version (the version byte of its replies), in_order, out_of_turn, reorder_ms (the bound in
+ * force), reorder_fixed (--reorder given), replies, given_up (frames the receive parser gave up).
+ * NULL if out of memory.
+ */
+json_t *online_health_json(const online *o);
+/** The same as one line of text: "protocol version 2 answered (auto), link in order, reorder bound 0 ms, ...". */
+void online_health_text(const online *o, char *buf, size_t cap);
+
+/**
+ * Send one packet on the client's link, outside the client (a probe's question): its bytes as
+ * given, traced with --trace. The client is not stepped meanwhile. @return the link's error
+ */
+xf_err online_raw_send(online *o, const uint8_t *data, size_t len);
+/**
+ * Read the link outside the client for @p ms milliseconds (the client is not stepped): each valid
+ * GCU packet goes to @p got (traced with --trace); other bytes are dropped. @return the number of
+ * GCU packets read
+ */
+unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const uint8_t *data, size_t len), void *user);
 
 /** The telemetry's attitude as "roll 0.00 pitch -30.00 yaw 45.00 deg". */
 void online_attitude_text(const xf_telemetry *t, char *buf, size_t cap);
