@@ -26,7 +26,7 @@
  *   1 for freestanding targets without a C library (riscv64-unknown-elf
  *   -nostdlib, say): small loops of our own, and `<string.h>` is never
  *   included.
- * - ::XF_MEMCPY, ::XF_MEMSET, ::XF_MEMCHR (xf_mem.h): define to use your own
+ * - ::XF_MEMCPY, ::XF_MEMMOVE, ::XF_MEMSET, ::XF_MEMCHR (xf_mem.h): define to use your own
  *   (an optimised or DMA copy).
  *
  * Every option is checked here: a value out of range stops the build with an
@@ -193,21 +193,12 @@
 #define XF_EMIT_DEFINITIONS 0
 #endif
 
-/* Internal: a function kept out of line (GCC, clang), so that its caller's
- * fast path needs no stack frame (the parser's one-byte feed). */
-/* Internal: a function inlined where it is called (GCC, clang), so that a
- * fast path written once serves two callers (the parser's one and two
- * bytes) without a call; left to the compiler when optimising for size
- * (-Os), where the copy would cost flash. */
+/* Internal: a function kept out of line (GCC, clang), so that its caller stays small: the
+ * parser's rare and bulk work, away from the byte it takes most often. */
 #if defined(__GNUC__)
-#define XF__COLD __attribute__((noinline)) static
+#define XF__NOINLINE __attribute__((noinline)) static
 #else
-#define XF__COLD static
-#endif
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
-#define XF__INLINE __attribute__((always_inline)) static inline
-#else
-#define XF__INLINE static inline
+#define XF__NOINLINE static
 #endif
 
 /**

@@ -146,6 +146,10 @@ static void test_bytes(void)
     b1[0] = 0x5A;
     CHECK(XF_MEMCHR(b1, 0x5A, sizeof(b1)) == (const void *)b1);
     CHECK(XF_MEMCHR(b4, 0x5A, sizeof(b4)) == NULL);
+    XF_MEMMOVE(b4, b4 + 1, 3); /* overlapping, down (how the parser moves bytes) then up */
+    CHECK(b4[0] == 0xE5u && b4[2] == 0x00u && b4[3] == 0x00u);
+    XF_MEMMOVE(b4 + 1, b4, 3);
+    CHECK(b4[0] == 0xE5u && b4[1] == 0xE5u && b4[3] == 0x00u);
 }
 
 /* ---- xf_crc.h ------------------------------------------------------------- */
