@@ -3,9 +3,9 @@
 
 CRC-16/XMODEM: G = x^16 + x^12 + x^5 + 1, MSB first, init 0, no final XOR.
 
-  xf__crc_table16    the vendor's nibble table: the CRC of each 4-bit value, times 2^16
-                     (the CRC loop keeps the CRC in the top half of a 32-bit word)
-  xf__crc_table256   the CRC of each byte value (XF_CRC_TABLE_256), 16-bit entries that the
+  xf__crc_table      by default the vendor's nibble table: the CRC of each 4-bit value, times
+                     2^16 (the CRC loop keeps the CRC in the top half of a 32-bit word); with
+                     XF_CRC_TABLE_256, the CRC of each byte value, in 16-bit entries that the
                      loop shifts up as it reads them (512 bytes instead of 1 KB)
 
 Usage: scripts/gen_crc_tables.py            write the header
@@ -51,11 +51,11 @@ def generate():
         "/* clang-format off */",
         "#if XF_CRC_TABLE_256",
         "/* The CRC of each byte value. */",
-        "static const uint16_t xf__crc_table256[256] = {",
+        "static const uint16_t xf__crc_table[256] = {",
     ]
     o += lines([crc_of(b, 8) for b in range(256)], "0x%04Xu", 8, "    ")
     o += ["};", "#else", "/* The vendor's table: the CRC of each 4-bit value, times 2^16. */",
-          "static const uint32_t xf__crc_table16[16] = {"]
+          "static const uint32_t xf__crc_table[16] = {"]
     o += lines([crc_of(n, 4) << 16 for n in range(16)], "0x%08Xu", 8, "    ")
     o += ["};", "#endif"]
     o += ["/* clang-format on */", "", "#endif /* XF_CRC_TABLES_H */", ""]

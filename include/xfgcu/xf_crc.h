@@ -49,66 +49,53 @@ XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
  */
 #if XF_CRC_TABLE_256
 #define XF__CRC_BITS 8u  /* bits folded per lookup */
-#define XF__CRC_UP   16u /* the 256 entries are 16-bit (512 bytes), shifted up as they are read */
-typedef uint16_t xf__crc_entry;
-static inline const xf__crc_entry *xf__crc_table(void) { return xf__crc_table256; }
+#define XF__CRC_UP   16u /* its 16-bit entries (512 bytes) go to the top half as they are read */
 #else
-#define XF__CRC_BITS 4u /* the vendor's table: the CRC of each 4-bit value, kept shifted up (64 bytes) */
+#define XF__CRC_BITS 4u /* the vendor's table, its entries kept shifted up (64 bytes) */
 #define XF__CRC_UP   0u
-typedef uint32_t xf__crc_entry;
-static inline const xf__crc_entry *xf__crc_table(void) { return xf__crc_table16; }
 #endif
 
 /* Fold the top byte of c out through the table: one lookup, or two with
  * the nibble table. */
-static inline uint32_t xf__crc_fold(uint32_t c, const xf__crc_entry *table)
+static inline uint32_t xf__crc_fold(uint32_t c)
 {
-    c = (c << XF__CRC_BITS) ^ ((uint32_t)table[c >> (32u - XF__CRC_BITS)] << XF__CRC_UP);
+    c = (c << XF__CRC_BITS) ^ ((uint32_t)xf__crc_table[c >> (32u - XF__CRC_BITS)] << XF__CRC_UP);
 #if !XF_CRC_TABLE_256
-    c = (c << 4) ^ table[c >> 28];
+    c = (c << 4) ^ xf__crc_table[c >> 28];
 #endif
     return c;
 }
 
 /* One byte, the CRC in the top half of c. */
-static inline uint32_t xf__crc_step(uint32_t c, const xf__crc_entry *table, uint8_t b)
+static inline uint32_t xf__crc_step(uint32_t c, uint8_t b) { return xf__crc_fold(c ^ ((uint32_t)b << 24)); }
+
+/* Four bytes as one big-endian number (the parser reads its window of the last four so too). */
+static inline uint32_t xf__be32(const uint8_t *d)
 {
-    return xf__crc_fold(c ^ ((uint32_t)b << 24), table);
+    return ((uint32_t)d[0] << 24) | ((uint32_t)d[1] << 16) | ((uint32_t)d[2] << 8) | d[3];
 }
 
 /* Four bytes, read big-endian into the whole register. */
-static inline uint32_t xf__crc_word(uint32_t c, const xf__crc_entry *table, const uint8_t *d)
+static inline uint32_t xf__crc_word(uint32_t c, const uint8_t *d)
 {
-    c ^= ((uint32_t)d[0] << 24) | ((uint32_t)d[1] << 16) | ((uint32_t)d[2] << 8) | d[3];
-    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c, table), table), table), table);
-}
-
-/* len bytes into a CRC kept in the top half of c. */
-static inline uint32_t xf__crc_run(uint32_t c, const uint8_t *data, size_t len)
-{
-    const xf__crc_entry *table = xf__crc_table();
-    size_t i = 0;
-    for (; i + 16u <= len; i += 16u) {
-        c = xf__crc_word(xf__crc_word(c, table, data + i), table, data + i + 4u);
-        c = xf__crc_word(xf__crc_word(c, table, data + i + 8u), table, data + i + 12u);
-    }
-    if (i + 8u <= len) {
-        c = xf__crc_word(xf__crc_word(c, table, data + i), table, data + i + 4u);
-        i += 8u;
-    }
-    if (i + 4u <= len) {
-        c = xf__crc_word(c, table, data + i);
-        i += 4u;
-    }
-    for (; i < len; i++) {
-        c = xf__crc_step(c, table, data[i]);
-    }
-    return c;
+    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c ^ xf__be32(d)))));
 }
 
 XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
 {
-    return (uint16_t)(xf__crc_run((uint32_t)crc << 16, data, len) >> 16);
+    uint32_t c = (uint32_t)crc << 16;
+    size_t i = 0;
+    for (; i + 16u <= len; i += 16u) { /* (unrolled: the loop costs more than a fold) */
+        c = xf__crc_word(xf__crc_word(c, data + i), data + i + 4u);
+        c = xf__crc_word(xf__crc_word(c, data + i + 8u), data + i + 12u);
+    }
+    for (; i + 4u <= len; i += 4u) {
+        c = xf__crc_word(c, data + i);
+    }
+    for (; i < len; i++) {
+        c = xf__crc_step(c, data[i]);
+    }
+    return (uint16_t)(c >> 16);
 }
 
 XF_API uint16_t xf_crc16(const uint8_t *data, size_t len) { return xf_crc16_update(0, data, len); }

@@ -13,7 +13,7 @@
 /* clang-format off */
 #if XF_CRC_TABLE_256
 /* The CRC of each byte value. */
-static const uint16_t xf__crc_table256[256] = {
+static const uint16_t xf__crc_table[256] = {
     0x0000u, 0x1021u, 0x2042u, 0x3063u, 0x4084u, 0x50A5u, 0x60C6u, 0x70E7u,
     0x8108u, 0x9129u, 0xA14Au, 0xB16Bu, 0xC18Cu, 0xD1ADu, 0xE1CEu, 0xF1EFu,
     0x1231u, 0x0210u, 0x3273u, 0x2252u, 0x52B5u, 0x4294u, 0x72F7u, 0x62D6u,
@@ -49,7 +49,7 @@ static const uint16_t xf__crc_table256[256] = {
 };
 #else
 /* The vendor's table: the CRC of each 4-bit value, times 2^16. */
-static const uint32_t xf__crc_table16[16] = {
+static const uint32_t xf__crc_table[16] = {
     0x00000000u, 0x10210000u, 0x20420000u, 0x30630000u, 0x40840000u, 0x50A50000u, 0x60C60000u, 0x70E70000u,
     0x81080000u, 0x91290000u, 0xA14A0000u, 0xB16B0000u, 0xC18C0000u, 0xD1AD0000u, 0xE1CE0000u, 0xF1EF0000u,
 };

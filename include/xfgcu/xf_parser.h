@@ -50,19 +50,18 @@ typedef struct xf_parser_stats {
                                  may be a frame lost (docs/codec.md); 0 means no frame was */
 } xf_parser_stats;
 
-/* Private: what the parser is doing, stored; each byte's rules depend on it. */
-typedef enum xf__mode {
-    XF__HUNT = 0, /* no candidate: at most the last three bytes held (they may begin a header) */
-    XF__BUSY,     /* candidates pending, a slot free: a valid header becomes a candidate */
-    XF__FULL      /* every slot taken: a valid header is given up */
-} xf__mode;
+/* Private: what the parser is doing, stored, and each byte's rules depend on it. HUNT: no
+ * candidate, at most the last three bytes held (they may begin a header); BUSY: candidates
+ * pending and a slot free, so a valid header becomes a candidate; FULL: every slot taken, so a
+ * valid header is given up. */
+typedef enum xf__mode { XF__HUNT, XF__BUSY, XF__FULL } xf__mode;
 
 /** Parser state. Treat the members as private except `stats`. */
 typedef struct xf_parser {
-    xf_parser_stats stats;          /**< counters, readable at any time; the application may zero them */
-    uint32_t last4;                 /**< private: the last four bytes fed since the last frame or reset, the latest in
-                                         the low byte; zeros before them (no header begins there) */
-    uint16_t pair;                  /**< private: the header pair of the direction parsed, h0 in the high byte */
+    xf_parser_stats stats; /**< counters, readable at any time; the application may zero them */
+    uint32_t last4;        /**< private: the last four bytes fed since the last frame or reset, the latest in
+                                the low byte; zeros before them (no header begins there) */
+    uint32_t pair;         /**< private: the header pair of the direction parsed, placed as in last4: h0 h1 0 0 */
     uint8_t buf[XF_PACKET_MAX_LEN]; /**< private: with candidates pending, the bytes held, the first at index 0 */
     uint8_t at[XF_PARSER_SLOTS];    /**< private: where each pending candidate begins in buf, in order of start */
     uint8_t held;                   /**< private: bytes held (xf_parser_pending()); with no candidate at most
@@ -186,21 +185,21 @@ XF_API xf_parse_status xf_parser_flush(xf_parser *p, xf_frame *frame);
 
 #if XF_EMIT_DEFINITIONS
 
-#define XF__K XF_PARSER_SLOTS
 /* Chunks shorter than this go byte by byte: for so few bytes the accelerator's search and copy
  * cost more than the rule path's tests. */
 #define XF__BULK 8u
-XF_STATIC_ASSERT(XF_PACKET_MAX_LEN <= 255u && XF_PARSER_SLOTS <= 255, indices_fit_a_byte);
-/* No header pair begins inside another's first four bytes (h1 and a valid length's high byte
- * are no h0), so the rule path looks at most one pair every four bytes... every byte may still
- * complete one: the pair test runs on each. */
+/* last4 starts at zero, and its zeros stand for no byte at all: right only because no header
+ * begins with a zero. */
 XF_STATIC_ASSERT(XF_GCU_HEADER0 != 0u && XF_HOST_HEADER0 != 0u, zeros_begin_no_header);
 
 XF_API size_t xf_parser_size(void) { return sizeof(xf_parser); }
 
 XF_API unsigned long xf_options_word(void) { return XF_OPTIONS_WORD; }
 
-/* Nothing held, no candidate, no byte before this point begins a header (rule 1's floor). */
+/* The mode that n candidates pending make (rule 3). */
+static uint8_t xf__mode_of(unsigned n) { return (uint8_t)(!n ? XF__HUNT : n < XF_PARSER_SLOTS ? XF__BUSY : XF__FULL); }
+
+/* Nothing held, no candidate, and no byte before this point begins a header (rule 1's floor). */
 static void xf__empty(xf_parser *p)
 {
     p->last4 = 0;
@@ -218,9 +217,9 @@ XF_API xf_err xf_parser_init_checked(xf_parser *p, xf_direction dir, unsigned lo
         return XF_ERR_ARG;
     }
     XF_MEMSET(p, 0, sizeof(*p));
-    p->pair = (dir == XF_DIR_HOST) ? (XF_HOST_HEADER0 << 8 | XF_HOST_HEADER1) : (XF_GCU_HEADER0 << 8 | XF_GCU_HEADER1);
-    xf__empty(p);
-    return XF_OK;
+    p->pair = (dir == XF_DIR_HOST) ? (XF_HOST_HEADER0 << 24 | XF_HOST_HEADER1 << 16)
+                                   : (XF_GCU_HEADER0 << 24 | XF_GCU_HEADER1 << 16);
+    return XF_OK; /* (all zero: empty and hunting, as xf__empty leaves it) */
 }
 
 XF_API size_t xf_parser_pending(const xf_parser *p) { return (p == NULL) ? 0u : p->held; }
@@ -238,213 +237,167 @@ static unsigned xf__len(const xf_parser *p, unsigned k) { return p->buf[p->at[k]
 
 static unsigned xf__end(const xf_parser *p, unsigned k) { return p->at[k] + xf__len(p, k); }
 
-/* The mode that n candidates pending leave (rule 3). */
-static uint8_t xf__busy(unsigned n) { return (uint8_t)((n < XF__K) ? XF__BUSY : XF__FULL); }
-
-/* The last byte completed a valid header (w: the last four bytes) with nothing pending: the first
- * candidate, its header written at index 0. */
-static void xf__first(xf_parser *p, uint32_t w)
-{
-    XF_ASSERT(p->mode == XF__HUNT && p->held == 4u);
-    p->buf[0] = (uint8_t)(w >> 24);
-    p->buf[1] = (uint8_t)(w >> 16);
-    p->buf[2] = (uint8_t)(w >> 8);
-    p->buf[3] = 0;
-    p->at[0] = 0;
-    p->n = 1;
-    p->next = (uint8_t)(w >> 8);
-    p->mode = xf__busy(1);
-}
-
-/* The last byte completed a valid header behind the candidates pending, with a slot free: the
- * last candidate in order of start. */
-static void xf__behind(xf_parser *p)
+/* Rule 3: the last byte completed a valid header (w: the last four bytes) and a slot is free: a
+ * candidate, the last in order of start. The first since none was pending gets its header
+ * written at index 0 (hunting, the bytes are in last4 only). */
+static void xf__admit(xf_parser *p, uint32_t w)
 {
     const unsigned k = p->n;
-    XF_ASSERT(p->mode == XF__BUSY && k > 0u && k < XF__K && p->held >= 8u);
+    XF_ASSERT(p->mode != XF__FULL && k < XF_PARSER_SLOTS && p->held >= ((k == 0u) ? 4u : 8u));
+    if (k == 0u) {
+        p->buf[0] = (uint8_t)(w >> 24);
+        p->buf[1] = (uint8_t)(w >> 16);
+        p->buf[2] = (uint8_t)(w >> 8);
+        p->buf[3] = 0;
+    }
     p->at[k] = (uint8_t)(p->held - 4u);
     p->n = (uint8_t)(k + 1u);
-    if (xf__end(p, k) < p->next) {
-        p->next = (uint8_t)xf__end(p, k);
-    }
-    p->mode = xf__busy(k + 1u);
+    p->next = (k == 0u || xf__end(p, k) < p->next) ? (uint8_t)xf__end(p, k) : p->next;
+    p->mode = xf__mode_of(k + 1u);
 }
 
-/* The last byte completed a header pair (w: the last four bytes), after the checks of rule 2:
- * rules 1 and 3. */
-XF__NOINLINE void xf__header(xf_parser *p, uint32_t w)
-{
-    const unsigned len = (w >> 8) & 0xFFu;
-    const bool valid = (w & 0xFFu) == 0u && len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN;
-    XF_ASSERT((w >> 16) == p->pair);
-    if (!valid) {
-        p->stats.length_errors++;
-    } else if (p->mode == XF__HUNT) {
-        xf__first(p, w);
-    } else if (p->mode == XF__BUSY) {
-        xf__behind(p);
-    } else {
-        p->stats.given_up++; /* XF__FULL: a frame that begins here is lost */
-    }
-}
-
-/* Candidate k ended intact: return it; everything else held overlaps it and goes (rule 2), the
- * bytes before it skipped. */
-static void xf__emit(xf_parser *p, unsigned k, xf_frame *frame)
-{
-    XF_ASSERT(k < p->n && xf__end(p, k) == p->held && xf_crc16(p->buf + p->at[k], xf__len(p, k)) == 0u);
-    frame->data = p->buf + p->at[k];
-    frame->len = xf__len(p, k);
-    p->stats.frames++;
-    p->stats.bytes_skipped += p->at[k];
-    xf__empty(p);
-}
-
-/* Candidate k ended and its CRC failed: it goes; the others keep their order. */
-static void xf__drop(xf_parser *p, unsigned k)
-{
-    XF_ASSERT(k < p->n && xf__end(p, k) == p->held);
-    p->stats.crc_errors++;
-    for (p->n--; k < p->n && k + 1u < XF__K; k++) { /* (the bound is for the compiler) */
-        p->at[k] = p->at[k + 1u];
-    }
-}
-
-/* After failed checks: with no candidate left, hunting with the last four bytes held (the rule
- * path drops the first unless they are a header); else the bytes before the earliest candidate
- * are skipped, it moves to index 0, and next is the soonest end. */
+/* After failed checks: the bytes before the earliest candidate left are skipped, and it moves to
+ * index 0; with none left, the last four bytes stay (rule 4 then drops the first unless they are
+ * a header). next: the soonest end. */
 static void xf__settle(xf_parser *p)
 {
     const unsigned shift = (p->n > 0u) ? p->at[0] : p->held - 4u;
     unsigned k, soon = 2u * XF_PACKET_MAX_LEN;
     p->stats.bytes_skipped += shift;
-    if (p->n == 0u) {
-        p->held = 4;
-        p->mode = XF__HUNT;
-        return;
-    }
     XF_MEMMOVE(p->buf, p->buf + shift, p->held - shift);
     p->held = (uint8_t)(p->held - shift);
-    for (k = 0; k < p->n && k < XF__K; k++) { /* (the bound is for the compiler) */
+    for (k = 0; k < p->n && k < XF_PARSER_SLOTS; k++) { /* (the bound is for the compiler) */
         p->at[k] = (uint8_t)(p->at[k] - shift);
         soon = (xf__end(p, k) < soon) ? xf__end(p, k) : soon;
     }
-    XF_ASSERT(soon > p->held && soon <= XF_PACKET_MAX_LEN);
+    XF_ASSERT(p->n == 0u || (soon > p->held && soon <= XF_PACKET_MAX_LEN));
     p->next = (uint8_t)soon;
-    p->mode = xf__busy(p->n);
+    p->mode = xf__mode_of(p->n);
 }
 
-/* The last byte held ends one candidate or more: check them, earliest start first (rule 2); the
- * first intact one is returned (1), the failed ones go. */
-XF__NOINLINE int xf__ends(xf_parser *p, xf_frame *frame)
+/* Rule 2: the last byte held ends one candidate or more: check them, earliest start first. The
+ * first intact one is returned (1) and everything held goes with it (it all overlaps the frame),
+ * the bytes before it skipped; a failed one goes, and the others keep their order. */
+static int xf__ends(xf_parser *p, xf_frame *frame)
 {
-    unsigned k = 0;
+    unsigned k = 0, j;
     XF_ASSERT(p->mode != XF__HUNT && p->n > 0u && p->held == p->next);
     while (k < p->n) {
         const bool ends_here = xf__end(p, k) == p->held;
+        const bool intact = ends_here && xf_crc16(p->buf + p->at[k], xf__len(p, k)) == 0u;
+        if (intact) {
+            frame->data = p->buf + p->at[k];
+            frame->len = xf__len(p, k);
+            p->stats.frames++;
+            p->stats.bytes_skipped += p->at[k];
+            xf__empty(p);
+            return 1;
+        }
         if (!ends_here) {
             k++;
-        } else if (xf_crc16(p->buf + p->at[k], xf__len(p, k)) == 0u) {
-            xf__emit(p, k, frame);
-            return 1;
-        } else {
-            xf__drop(p, k);
+            continue;
+        }
+        p->stats.crc_errors++;
+        for (p->n--, j = k; j < p->n && j + 1u < XF_PARSER_SLOTS; j++) { /* (the bound is for the compiler) */
+            p->at[j] = p->at[j + 1u];
         }
     }
     xf__settle(p);
     return 0;
 }
 
-/* The rule path: one byte through every rule, in their order (docs/codec.md). 1 when it completes
- * a frame. */
-static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
+/* A byte that needs a look (w: the last four bytes, the byte stored), the rules in their order:
+ * 2, the candidates that end with it; 1 and 3, the header pair it completes; 4, hunting, three
+ * bytes held at most. 1 when it completes a frame. */
+XF__NOINLINE int xf__look(xf_parser *p, uint32_t w, xf_frame *frame)
 {
-    const uint32_t w = (p->last4 << 8) | b;
-    p->last4 = w;
-    if (p->mode == XF__HUNT) {
-        p->held++; /* (in last4 only) */
-    } else {
-        p->buf[p->held++] = b;
-        if (p->held == p->next && xf__ends(p, frame)) { /* rule 2: the candidates that end here */
-            return 1;
-        }
+    const unsigned len = (w >> 8) & 0xFFu;
+    const bool pair = (w & 0xFFFF0000u) == p->pair;
+    const bool valid = pair && (w & 0xFFu) == 0u && len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN;
+    if (p->mode != XF__HUNT && p->held == p->next && xf__ends(p, frame)) {
+        return 1;
     }
-    if ((w >> 16) == p->pair) { /* then the header pair it completes */
-        xf__header(p, w);
+    if (pair && !valid) {
+        p->stats.length_errors++;
+    } else if (valid && p->mode == XF__FULL) {
+        p->stats.given_up++; /* a frame that begins here is lost */
+    } else if (valid) {
+        xf__admit(p, w);
     }
-    if (p->mode == XF__HUNT && p->held > 3u) { /* rule 4: the last three bytes held, the one before goes */
+    if (p->mode == XF__HUNT && p->held > 3u) {
         p->held = 3;
         p->stats.bytes_skipped++;
     }
     return 0;
 }
 
+/* The rule path: one byte through every rule (docs/codec.md). It is stored (with candidates
+ * pending) or counted, and looked at when it may end a candidate, complete a header pair, or
+ * make four bytes held while hunting. 1 when it completes a frame. */
+static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
+{
+    const uint32_t w = (p->last4 << 8) | b;
+    const bool busy = p->mode != XF__HUNT;
+    p->last4 = w;
+    if (busy) {
+        p->buf[p->held] = b;
+    }
+    p->held++;
+    if ((busy && p->held == p->next) || (w & 0xFFFF0000u) == p->pair || (!busy && p->held > 3u)) {
+        return xf__look(p, w, frame);
+    }
+    return 0;
+}
+
 /* The accelerator, which decides nothing: how many of the n bytes at d the rule path would only
  * store, since none of them ends a candidate (they come before the soonest end's last byte) and
- * none can complete a header pair (no h0 three bytes before it). */
+ * none can complete a header pair (no h0 three bytes before it); hunting, it counts them. */
 static size_t xf__quiet(const xf_parser *p, const uint8_t *d, size_t n)
 {
-    const unsigned h0 = p->pair >> 8u;
-    const uint32_t w = p->last4;
+    const unsigned h0 = p->pair >> 24u, w = p->last4;
+    size_t near; /* the first byte of d that a pair begun among the last three bytes held could complete */
+    for (near = 0; near < 3u && ((w >> (16u - 8u * near)) & 0xFFu) != h0; near++) {
+    }
+    const size_t left = (p->mode == XF__HUNT) ? n : (size_t)(p->next - p->held - 1u); /* before the soonest end */
+    const size_t m = (left < n) ? left : n;
     const uint8_t *hit;
-    size_t m = n;
-    if (p->mode != XF__HUNT && (size_t)(p->next - p->held - 1u) < m) {
-        m = (size_t)(p->next - p->held - 1u);
-    }
-    if (((w >> 16) & 0xFFu) == h0 || m == 0u) {
-        return 0;
-    }
-    if (((w >> 8) & 0xFFu) == h0 || (w & 0xFFu) == h0) {
-        return (((w >> 8) & 0xFFu) == h0 || m == 1u) ? 1u : 2u;
+    if (m <= near || near < 3u) {
+        return (near < m) ? near : m;
     }
     hit = (const uint8_t *)XF_MEMCHR(d, (int)h0, m);
     return (hit == NULL || (size_t)(hit - d) + 3u > m) ? m : (size_t)(hit - d) + 3u;
 }
 
-/* Store the m bytes at d as the rule path would, in bulk. */
-static void xf__keep(xf_parser *p, const uint8_t *d, size_t m)
+/* The accelerator's copy: store the m bytes at d as the rule path would, in bulk (hunting, the
+ * last three held and the others skipped, rule 4); returns m. */
+static size_t xf__keep(xf_parser *p, const uint8_t *d, size_t m)
 {
-    uint32_t w = p->last4;
+    const size_t keep = (p->held + m < 3u) ? p->held + m : 3u;
     size_t i;
-    if (p->mode == XF__HUNT) { /* rule 4 */
-        const size_t keep = (p->held + m < 3u) ? p->held + m : 3u;
+    if (p->mode == XF__HUNT) {
         p->stats.bytes_skipped += (uint32_t)(p->held + m - keep);
         p->held = (uint8_t)keep;
-    } else {
+    } else if (m > 0u) {
         XF_ASSERT(p->held + m < p->next);
         XF_MEMCPY(p->buf + p->held, d, m);
         p->held = (uint8_t)(p->held + m);
     }
-    for (i = (m > 4u) ? m - 4u : 0u; i < m; i++) {
-        w = (w << 8) | d[i];
+    for (i = 0; i < m && m < 4u; i++) {
+        p->last4 = (p->last4 << 8) | d[i];
     }
-    p->last4 = w;
-}
-
-/* The accelerator on the n bytes at d: the bytes it took. */
-static inline size_t xf__bulk(xf_parser *p, const uint8_t *d, size_t n)
-{
-    const size_t m = xf__quiet(p, d, n);
-    if (m > 0u) {
-        xf__keep(p, d, m);
-    }
+    p->last4 = (m < 4u) ? p->last4 : xf__be32(d + m - 4u);
     return m;
 }
 
 /* Any number of bytes but one: each through the rule path, up to a frame's last byte, the
- * accelerator taking what it can first while XF__BULK or more are left. */
+ * accelerator taking what it can first while XF__BULK bytes or more are left. */
 XF__NOINLINE xf_parse_status xf__feed(xf_parser *p, const uint8_t *data, size_t len, size_t *consumed, xf_frame *frame)
 {
     size_t i = 0;
     int found = 0;
     while (i < len && !found) {
-        if (len - i >= XF__BULK) {
-            i += xf__bulk(p, data + i, len - i);
-            if (i == len) {
-                break;
-            }
-        }
-        found = xf__byte(p, data[i++], frame);
+        i += (len - i >= XF__BULK) ? xf__keep(p, data + i, xf__quiet(p, data + i, len - i)) : 0u;
+        found = i < len && xf__byte(p, data[i++], frame);
     }
     p->stats.bytes_in += (uint32_t)i;
     if (consumed != NULL) {
@@ -461,13 +414,13 @@ XF_API xf_parse_status xf_parser_feed(xf_parser *p, const uint8_t *data, size_t 
     if (len != 1u) {
         return xf__feed(p, data, len, consumed, frame);
     }
-    /* A byte fed alone (an interrupt handler's feed) goes to the rule path with no loop around it,
+    /* A byte fed alone (an interrupt handler's feed) takes the rule path with no loop around it,
      * and so with no stack frame. */
     p->stats.bytes_in++;
     if (consumed != NULL) {
         *consumed = 1;
     }
-    return xf__byte(p, data[0], frame) ? XF_PARSE_FRAME : XF_PARSE_MORE;
+    return (xf_parse_status)xf__byte(p, data[0], frame); /* 1 is XF_PARSE_FRAME, 0 XF_PARSE_MORE */
 }
 
 /* cppcheck-suppress constParameter ; frame stays writable: a parser that holds frames back may fill it */
