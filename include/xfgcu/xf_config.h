@@ -15,8 +15,8 @@
  *   receives GCU replies (72 or 73 bytes) may set 84 to save RAM; longer
  *   packets are then counted as length errors.
  * - ::XF_PARSER_SLOTS: candidates the parser checks at once, 1..16
- *   (default 4): more resist more crafted false headers, at 3 bytes of RAM
- *   each (docs/codec.md).
+ *   (default 4): more resist more crafted false headers, at 1 byte of RAM
+ *   each and more work per byte on such a stream (docs/codec.md).
  * - ::XF_ASSERT: define to check the codec's internal invariants (the tests
  *   and fuzzers do); by default it compiles to nothing.
  * - `XF_IMPLEMENTATION`: defined in exactly one translation unit (the
@@ -89,10 +89,10 @@
 #endif
 /**
  * Candidates (a header pair and a valid length) the parser checks at once,
- * 1..16 (default 4). A header that arrives while this many are pending is
- * not looked at (xf_parser_stats::given_up counts the times the parser
- * stops looking); the parser's credit allows four at once anyway, more only
- * as it checks bytes (docs/codec.md). Each slot costs 3 bytes of RAM.
+ * 1..16 (default 4). A valid header that arrives while this many are pending
+ * is not followed (xf_parser_stats::given_up counts them); the parser's
+ * worst cost per byte grows with it (docs/codec.md). Each slot costs 1 byte
+ * of RAM.
  */
 #ifndef XF_PARSER_SLOTS
 #define XF_PARSER_SLOTS 4

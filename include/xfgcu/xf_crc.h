@@ -69,16 +69,11 @@ static inline uint32_t xf__crc_fold(uint32_t c)
 /* One byte, the CRC in the top half of c. */
 static inline uint32_t xf__crc_step(uint32_t c, uint8_t b) { return xf__crc_fold(c ^ ((uint32_t)b << 24)); }
 
-/* Four bytes as one big-endian number (the parser reads its window of the last four so too). */
-static inline uint32_t xf__be32(const uint8_t *d)
-{
-    return ((uint32_t)d[0] << 24) | ((uint32_t)d[1] << 16) | ((uint32_t)d[2] << 8) | d[3];
-}
-
 /* Four bytes, read big-endian into the whole register. */
 static inline uint32_t xf__crc_word(uint32_t c, const uint8_t *d)
 {
-    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c ^ xf__be32(d)))));
+    c ^= ((uint32_t)d[0] << 24) | ((uint32_t)d[1] << 16) | ((uint32_t)d[2] << 8) | d[3];
+    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c))));
 }
 
 XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)

@@ -242,13 +242,10 @@ static unsigned xf__end(const xf_parser *p, unsigned k) { return p->at[k] + xf__
  * written at index 0 (hunting, the bytes are in last4 only). */
 static void xf__admit(xf_parser *p, uint32_t w)
 {
-    const unsigned k = p->n;
+    unsigned j, k = p->n;
     XF_ASSERT(p->mode != XF__FULL && k < XF_PARSER_SLOTS && p->held >= ((k == 0u) ? 4u : 8u));
-    if (k == 0u) {
-        p->buf[0] = (uint8_t)(w >> 24);
-        p->buf[1] = (uint8_t)(w >> 16);
-        p->buf[2] = (uint8_t)(w >> 8);
-        p->buf[3] = 0;
+    for (j = 0; k == 0u && j < 4u; j++) { /* the first: the window is its header */
+        p->buf[j] = (uint8_t)(w >> (24u - 8u * j));
     }
     p->at[k] = (uint8_t)(p->held - 4u);
     p->n = (uint8_t)(k + 1u);
@@ -314,6 +311,7 @@ XF__NOINLINE int xf__look(xf_parser *p, uint32_t w, xf_frame *frame)
     const unsigned len = (w >> 8) & 0xFFu;
     const bool pair = (w & 0xFFFF0000u) == p->pair;
     const bool valid = pair && (w & 0xFFu) == 0u && len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN;
+    XF_ASSERT(p->mode == xf__mode_of(p->n) && p->held <= XF_PACKET_MAX_LEN && p->last4 == w);
     if (p->mode != XF__HUNT && p->held == p->next && xf__ends(p, frame)) {
         return 1;
     }
@@ -361,6 +359,7 @@ static size_t xf__quiet(const xf_parser *p, const uint8_t *d, size_t n)
     const size_t left = (p->mode == XF__HUNT) ? n : (size_t)(p->next - p->held - 1u); /* before the soonest end */
     const size_t m = (left < n) ? left : n;
     const uint8_t *hit;
+    XF_ASSERT(p->mode == XF__HUNT || p->next > p->held);
     if (m <= near || near < 3u) {
         return (near < m) ? near : m;
     }
@@ -373,6 +372,7 @@ static size_t xf__quiet(const xf_parser *p, const uint8_t *d, size_t n)
 static size_t xf__keep(xf_parser *p, const uint8_t *d, size_t m)
 {
     const size_t keep = (p->held + m < 3u) ? p->held + m : 3u;
+    uint32_t w = p->last4;
     size_t i;
     if (p->mode == XF__HUNT) {
         p->stats.bytes_skipped += (uint32_t)(p->held + m - keep);
@@ -382,10 +382,11 @@ static size_t xf__keep(xf_parser *p, const uint8_t *d, size_t m)
         XF_MEMCPY(p->buf + p->held, d, m);
         p->held = (uint8_t)(p->held + m);
     }
-    for (i = 0; i < m && m < 4u; i++) {
-        p->last4 = (p->last4 << 8) | d[i];
+    for (i = 0; i < m && m < 4u; i++) { /* (a run of four or more replaces the window) */
+        w = (w << 8) | d[i];
     }
-    p->last4 = (m < 4u) ? p->last4 : xf__be32(d + m - 4u);
+    p->last4 =
+        (m < 4u) ? w : (uint32_t)d[m - 4u] << 24 | (uint32_t)d[m - 3u] << 16 | (uint32_t)d[m - 2u] << 8 | d[m - 1u];
     return m;
 }
 
