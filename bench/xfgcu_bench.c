@@ -68,19 +68,19 @@
  *   cpairs       8A 5E FF 00 and 125 pairs and an 8A, repeated: the pairs inside a
  *                pending candidate (a 255-byte claim that ends where the next begins)
  *   mixed        three 72-byte claims 24 bytes apart with pairs between them, repeated:
- *                a claim every 24 bytes (the credit admits fewer) and a bad length
- *                every two
+ *                a claim every 24 bytes (three pending at once) and a bad length every
+ *                two
  *   mixed79      a 79-byte claim and 8 pairs, repeated (20 bytes): a claim every 20
- *                bytes (the credit admits fewer), each product ending with 11 single bytes
- *                (the dearest remainder of a short claim), a bad length every two
- *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): candidates as
- *                fast as the parser's credit admits them, each checked with a
- *                product, and every byte between them looked at
+ *                bytes (four pending at once, every slot taken by default), a bad
+ *                length every two
+ *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): a claim every
+ *                40 bytes, and every byte between them an h0 (a look at each); named
+ *                after the admission rule of an earlier parser it was built against
  *   chain        two 72-byte claims 4 bytes apart and 32 pairs, four times, then
  *                three claims and 32 pairs, repeated: each unit's second claim fails
  *                as the next unit's first header completes, so that one is a first
- *                candidate (free of credit) every 72 bytes, with one behind it
- *                whenever the credit allows and a bad length every two bytes
+ *                candidate every 72 bytes, with one or two behind it, and a bad length
+ *                every two bytes
  *   hostile      0..31 bytes of noise biased to header and length values before every
  *                frame, and before half of them one to three false headers with bogus
  *                lengths (each followed by 0..7 such bytes): how many frames a parser
@@ -468,17 +468,15 @@ static void xb_generate(xb_kind kind, xb_out *o)
             break;
         }
         case XB_MIXED79:
-            /* a claim of 79 bytes every 20, pairs between: a check every 20 bytes whose
-             * product ends with 11 single bytes (79 - 4 = 4 * 16 + 11), and a bad length
-             * every two */
+            /* a claim of 79 bytes every 20, pairs between: a check every 20 bytes and a bad
+             * length every two */
             xb_false_cand(o, 79);
             for (i = 0; i < 8u; i++) {
                 xb_pair(o);
             }
             break;
         case XB_CREDIT:
-            /* a claim of 79 bytes every 40 with h0 bytes between: more candidates than the
-             * credit admits, so one is admitted whenever a check has earned enough */
+            /* a claim of 79 bytes every 40 with h0 bytes between: a look at every byte */
             xb_false_cand(o, 79);
             for (i = 0; i < 36u; i++) {
                 xb_put1(o, XF_GCU_HEADER0);
