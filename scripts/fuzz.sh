@@ -76,8 +76,8 @@ run() {
   fi
   if [ -n "$record" ]; then
     printf 'binary %s %s %s %s\n' "$h" \
-      "$(awk -F: '/^stat::number_of_executed_units/ {gsub(/ /, "", $2); print $2}' "$log")" \
-      "$(awk -F: '/^stat::new_units_added/ {gsub(/ /, "", $2); print $2}' "$log")" "$result" >>"$record"
+      "$(awk '/^stat::number_of_executed_units/ {print $NF}' "$log")" \
+      "$(awk '/^stat::new_units_added/ {print $NF}' "$log")" "$result" >>"$record"
   fi
 }
 

@@ -199,7 +199,9 @@ XF_API unsigned long xf_options_word(void) { return XF_OPTIONS_WORD; }
 /* The mode that n candidates pending make (rule 3). */
 static uint8_t xf__mode_of(unsigned n) { return (uint8_t)(!n ? XF__HUNT : n < XF_PARSER_SLOTS ? XF__BUSY : XF__FULL); }
 
-/* Nothing held, no candidate, and no byte before this point begins a header (rule 1's floor). */
+/* Nothing held, no candidate, and no byte before this point begins a header (rule 1's floor):
+ * without the zeroed window, a frame's last bytes could begin a false candidate that would then
+ * claim the next frame's bytes and hold its slot. */
 static void xf__empty(xf_parser *p)
 {
     p->last4 = 0;
@@ -242,8 +244,9 @@ static unsigned xf__end(const xf_parser *p, unsigned k) { return p->at[k] + xf__
  * written at index 0 (hunting, the bytes are in last4 only). */
 static void xf__admit(xf_parser *p, uint32_t w)
 {
-    unsigned j, k = p->n;
-    XF_ASSERT(p->mode != XF__FULL && k < XF_PARSER_SLOTS && p->held >= ((k == 0u) ? 4u : 8u));
+    const unsigned k = (p->n < XF_PARSER_SLOTS) ? p->n : XF_PARSER_SLOTS - 1u; /* (the bound is for the compiler) */
+    unsigned j;
+    XF_ASSERT(p->mode != XF__FULL && p->n < XF_PARSER_SLOTS && p->held >= ((k == 0u) ? 4u : 8u));
     for (j = 0; k == 0u && j < 4u; j++) { /* the first: the window is its header */
         p->buf[j] = (uint8_t)(w >> (24u - 8u * j));
     }
@@ -305,7 +308,10 @@ static int xf__ends(xf_parser *p, xf_frame *frame)
 
 /* A byte that needs a look (w: the last four bytes, the byte stored), the rules in their order:
  * 2, the candidates that end with it; 1 and 3, the header pair it completes; 4, hunting, three
- * bytes held at most. 1 when it completes a frame. */
+ * bytes held at most. 1 when it completes a frame. Why the checks come first: a candidate that
+ * fails on this byte frees its slot for a header this byte completes (looked at first, that
+ * header would be given up with every slot taken, and its frame lost), and a frame returned
+ * here drops whatever its last bytes begin. */
 XF__NOINLINE int xf__look(xf_parser *p, uint32_t w, xf_frame *frame)
 {
     const unsigned len = (w >> 8) & 0xFFu;
@@ -349,7 +355,9 @@ static inline int xf__byte(xf_parser *p, uint8_t b, xf_frame *frame)
 
 /* The accelerator, which decides nothing: how many of the n bytes at d the rule path would only
  * store, since none of them ends a candidate (they come before the soonest end's last byte) and
- * none can complete a header pair (no h0 three bytes before it); hunting, it counts them. */
+ * none can complete a header pair (no h0 three bytes before it). It stops at any h0, not only at
+ * h0 h1: a stricter search would have to re-state the pair test, and one that misses a pair lets
+ * a frame's header go by unseen (the fuzzers compare every chunking with the model). */
 static size_t xf__quiet(const xf_parser *p, const uint8_t *d, size_t n)
 {
     const unsigned h0 = p->pair >> 24u, w = p->last4;
