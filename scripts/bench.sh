@@ -110,6 +110,7 @@ N=100000
 declare -A res found delay given
 results="$bdir/results.txt"
 : >"$results"
+echo "commit $(git rev-parse --short HEAD)$(git diff --quiet HEAD -- include src bench || echo +changes)" >>"$results"
 hdr() {
   printf '%-6s %-12s %6s %6s %6s %6s %6s %6s %6s %6s %6s %15s %7s\n' "$@"
 }

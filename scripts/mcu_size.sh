@@ -14,6 +14,7 @@ out=build/mcu
 mkdir -p "$out"
 results="$out/results.txt"
 : >"$results"
+echo "commit $(git rev-parse --short HEAD)$(git diff --quiet HEAD -- include src examples || echo +changes)" >>"$results"
 over=()
 # gate VALUE LIMIT WHAT: check a figure against its limit
 gate() {

@@ -340,6 +340,15 @@ static void feed_chunks(harness *h, const stream *s, size_t from, size_t to, siz
     }
 }
 
+/* A GCU harness on s, fed in chunks of c, compared with the model after
+ * every call and at the end. */
+static void feed_checked(harness *h, pr_model *m, const stream *s, size_t c)
+{
+    harness_model(h, m, s);
+    feed_chunks(h, s, 0, s->len, c);
+    check_output(h, s, m);
+}
+
 typedef enum feed_mode { FEED_WHOLE, FEED_BYTES, FEED_CHUNKS, FEED_SMALL_CHUNKS } feed_mode;
 
 /* Build a stream from @p seed; the model must return every frame the
@@ -995,9 +1004,7 @@ static void test_adversarial_lengths(void **state)
     }
     gl = make_frame(&r, XF_DIR_GCU, 0, g);
     put(&s, g, gl);
-    harness_model(&h, &m, &s);
-    feed_chunks(&h, &s, 0, s.len, 1000);
-    check_output(&h, &s, &m);
+    feed_checked(&h, &m, &s, 1000);
     if (XF_PACKET_MAX_LEN == 255) {
         /* the second frame always comes out, last; the first only if its header found a slot
          * free, which with few slots it does not */
@@ -1058,9 +1065,7 @@ static void test_slots_edges(void **state)
         for (c = 0; c < sizeof(chunks) / sizeof(chunks[0]); c++) {
             harness h;
             pr_model m;
-            harness_model(&h, &m, &s);
-            feed_chunks(&h, &s, 0, s.len, chunks[c]);
-            check_output(&h, &s, &m);
+            feed_checked(&h, &m, &s, chunks[c]);
             assert_int_equal(h.nframes, (kase == 1u) ? 0u : 1u);
             assert_int_equal(h.p.stats.given_up, (kase == 1u) ? 1u : 0u);
             assert_int_equal(h.p.stats.length_errors, (kase == 1u) ? 1u : 0u);
@@ -1132,9 +1137,7 @@ static void test_crafted_storms(void **state)
     for (c = 0; c < sizeof(chunks) / sizeof(chunks[0]); c++) {
         harness h;
         pr_model m;
-        harness_model(&h, &m, &s);
-        feed_chunks(&h, &s, 0, s.len, chunks[c]);
-        check_output(&h, &s, &m);
+        feed_checked(&h, &m, &s, chunks[c]);
         assert_true(h.p.stats.length_errors > 0u && h.p.stats.crc_errors > 0u);
         if (XF_PACKET_MAX_LEN == 255) {
             assert_true(h.nframes >= 2u); /* the frames after the h0 run and the pairs */
