@@ -136,8 +136,8 @@ M = [
      'xf__quiet', 'for (near = 0;', 'for (near = 3;'),
     ('accel_takes_pair_end', 'the accelerator takes the byte that completes a pair begun in its run',
      'xf__quiet', '(size_t)(hit - d) + 3u;', '(size_t)(hit - d) + 4u;'),
-    ('accel_window_stale', 'after a run of four bytes or more, the window keeps the bytes before it',
-     'xf__keep', '(m < 4u) ? w :', '(m > 0u) ? w :'),
+    ('accel_window_stale', "after the accelerator's run, the window keeps the bytes before it",
+     'xf__keep', 'p->last4 = w;', ';'),
     ('accel_hunt_skip_uncounted', 'hunting, the bytes the accelerator drops are not counted in bytes_skipped',
      'xf__keep', 'p->stats.bytes_skipped += (uint32_t)(p->held + m - keep);', ';'),
     # the call's bookkeeping

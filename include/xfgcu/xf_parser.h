@@ -390,11 +390,10 @@ static size_t xf__keep(xf_parser *p, const uint8_t *d, size_t m)
         XF_MEMCPY(p->buf + p->held, d, m);
         p->held = (uint8_t)(p->held + m);
     }
-    for (i = 0; i < m && m < 4u; i++) { /* (a run of four or more replaces the window) */
+    for (i = (m > 4u) ? m - 4u : 0u; i < m; i++) { /* the window: the last four bytes */
         w = (w << 8) | d[i];
     }
-    p->last4 =
-        (m < 4u) ? w : (uint32_t)d[m - 4u] << 24 | (uint32_t)d[m - 3u] << 16 | (uint32_t)d[m - 2u] << 8 | d[m - 1u];
+    p->last4 = w;
     return m;
 }
 
