@@ -12,7 +12,7 @@ import re
 import sys
 from collections import defaultdict
 
-FUNC_RE = re.compile(r'^(?:XF_API|XF__HOT_INLINE|XF__COLD|static)\b[^=(]*?\b(\w+)\s*\(')
+FUNC_RE = re.compile(r'^(?:XF_API|XF__NOINLINE|static)\b[^=(]*?\b(\w+)\s*\(')
 
 
 def functions_of(path, cache={}):

@@ -20,7 +20,7 @@
  *                                          prints the number of intact frames first.
  *                                          KIND: valid | noisy | uart4 | uart3 | adversarial | dense | storm | h0run
  *                                          | pairs | cpairs | mixed | mixed79 | credit
- *                                          | chain
+ *                                          | chain | hostile
  *   xfgcu_bench pack N                     pack N host packets; prints N
  *   xfgcu_bench unpack N                   unpack N GCU packets; prints N
  *   xfgcu_bench time KIND N_BYTES [REPS]   wall-clock parse throughput of a generated
@@ -68,19 +68,23 @@
  *   cpairs       8A 5E FF 00 and 125 pairs and an 8A, repeated: the pairs inside a
  *                pending candidate (a 255-byte claim that ends where the next begins)
  *   mixed        three 72-byte claims 24 bytes apart with pairs between them, repeated:
- *                a claim every 24 bytes (the credit admits fewer) and a bad length
- *                every two
+ *                a claim every 24 bytes (three pending at once) and a bad length every
+ *                two
  *   mixed79      a 79-byte claim and 8 pairs, repeated (20 bytes): a claim every 20
- *                bytes (the credit admits fewer), each product ending with 11 single bytes
- *                (the dearest remainder of a short claim), a bad length every two
- *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): candidates as
- *                fast as the parser's credit admits them, each checked with a
- *                product, and every byte between them looked at
+ *                bytes (four pending at once, every slot taken by default), a bad
+ *                length every two
+ *   credit       a 79-byte claim and 36 h0 bytes, repeated (40 bytes): a claim every
+ *                40 bytes, and every byte between them an h0 (a look at each); named
+ *                after the admission rule of an earlier parser it was built against
  *   chain        two 72-byte claims 4 bytes apart and 32 pairs, four times, then
  *                three claims and 32 pairs, repeated: each unit's second claim fails
  *                as the next unit's first header completes, so that one is a first
- *                candidate (free of credit) every 72 bytes, with one behind it
- *                whenever the credit allows and a bad length every two bytes
+ *                candidate every 72 bytes, with one or two behind it, and a bad length
+ *                every two bytes
+ *   hostile      0..31 bytes of noise biased to header and length values before every
+ *                frame, and before half of them one to three false headers with bogus
+ *                lengths (each followed by 0..7 such bytes): how many frames a parser
+ *                gives up on hostile but not crafted-to-the-byte noise
  *   Which crafted stream costs most depends on the parser: bench.sh's table says.
  * "Frames inserted" counts the intact ones only: written whole, no bit flipped,
  * no byte dropped. valid, noisy, adversarial and dense are the same bytes as
@@ -255,12 +259,13 @@ typedef enum xb_kind {
     XB_MIXED79,
     XB_CREDIT,
     XB_CHAIN,
+    XB_HOSTILE,
     XB_KINDS
 } xb_kind;
 
 static const char *const xb_kind_names[XB_KINDS] = {"valid", "noisy",   "adversarial", "dense", "uart4",
                                                     "uart3", "storm",   "h0run",       "pairs", "cpairs",
-                                                    "mixed", "mixed79", "credit",      "chain"};
+                                                    "mixed", "mixed79", "credit",      "chain", "hostile"};
 
 static int xb_kind_of(const char *s, xb_kind *k)
 {
@@ -344,6 +349,36 @@ static void xb_uart(xb_out *o, xb_rng *r, uint32_t ber)
         o->frames++;
     }
     xb_put(o, f, n);
+}
+
+/* Noise biased to the header's values: h0 (1 in 4), h1, 0 and a valid length (1 in 8 each). */
+static void xb_biased(xb_out *o, xb_rng *r, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t v = xb_below(r, 8);
+        xb_put1(o, (v < 2u)    ? XF_GCU_HEADER0
+                   : (v == 2u) ? XF_GCU_HEADER1
+                   : (v == 3u) ? 0u
+                   : (v == 4u) ? xb_len(r)
+                               : (uint8_t)xb_next(r));
+    }
+}
+
+/* Hostile noise: 0..31 biased noise bytes before every frame, and before half of them one to
+ * three false headers with bogus lengths in [72, 255], each followed by 0..7 biased bytes: a
+ * frame behind up to three claims that overlap it, and the claims of the noise. */
+static void xb_hostile(xb_out *o, xb_rng *r)
+{
+    xb_biased(o, r, xb_below(r, 32));
+    if (xb_below(r, 2) == 0) {
+        uint32_t k, claims = 1u + xb_below(r, 3);
+        for (k = 0; k < claims; k++) {
+            xb_false_cand(o, xb_len(r));
+            xb_biased(o, r, xb_below(r, 8));
+        }
+    }
+    xb_real(o, r);
 }
 
 /* Fill o (o->cap bytes) with a stream of the given kind; the same seed
@@ -433,17 +468,15 @@ static void xb_generate(xb_kind kind, xb_out *o)
             break;
         }
         case XB_MIXED79:
-            /* a claim of 79 bytes every 20, pairs between: a check every 20 bytes whose
-             * product ends with 11 single bytes (79 - 4 = 4 * 16 + 11), and a bad length
-             * every two */
+            /* a claim of 79 bytes every 20, pairs between: a check every 20 bytes and a bad
+             * length every two */
             xb_false_cand(o, 79);
             for (i = 0; i < 8u; i++) {
                 xb_pair(o);
             }
             break;
         case XB_CREDIT:
-            /* a claim of 79 bytes every 40 with h0 bytes between: more candidates than the
-             * credit admits, so one is admitted whenever a check has earned enough */
+            /* a claim of 79 bytes every 40 with h0 bytes between: a look at every byte */
             xb_false_cand(o, 79);
             for (i = 0; i < 36u; i++) {
                 xb_put1(o, XF_GCU_HEADER0);
@@ -471,6 +504,7 @@ static void xb_generate(xb_kind kind, xb_out *o)
             xb_put1(o, XF_GCU_HEADER0);
             break;
         }
+        case XB_HOSTILE: xb_hostile(o, &r); break;
         default: /* XB_DENSE */ xb_false_cand(o, xb_len(&r)); break;
         }
     }
@@ -1053,7 +1087,7 @@ static int xb_floor_selftest(const xb_out *o, const size_t *chunks, size_t nchun
  * inserted; more is a false candidate whose CRC matched, possible but very
  * rare), when the byte counters do not add up, or when the floor misses a
  * frame of valid. On the crafted streams (adversarial, dense, storm, h0run,
- * pairs, cpairs, mixed, mixed79, credit, chain) the parser may give up candidates by design:
+ * pairs, cpairs, mixed, mixed79, credit, chain, hostile) the parser may give up candidates by design:
  * found / inserted is printed, not checked. The frames found in each
  * chunking and the worst delay are printed. */
 static int xb_cmd_selftest(void)

@@ -18,8 +18,7 @@
  *     bytes_skipped + xf_parser_pending();
  *   - every frame is the model's next frame and ends exactly where the call's
  *     consumed bytes end (no latency: the call that feeds a frame's last
- *     byte returns it); its data is inside the parser struct or exactly the
- *     caller's data [consumed - len, consumed); xf_packet_check() == XF_OK for
+ *     byte returns it); its data is inside the parser struct; xf_packet_check() == XF_OK for
  *     the direction, unpack == check, pack(unpack(frame)) == frame, the other
  *     direction's unpack says XF_ERR_HEADER, command / feedback decode-encode
  *     round trips.
@@ -299,19 +298,15 @@ static inline void fz_after_call(fz_run *R, const pr_counts *want)
     fz_same_counts(R, want);
 }
 
-/* A frame returned by xf_parser_feed, whose data were d and consumed used. */
-static inline void fz_take_frame(fz_run *R, const xf_frame *f, const uint8_t *d, size_t used)
+/* A frame returned by xf_parser_feed. */
+static inline void fz_take_frame(fz_run *R, const xf_frame *f)
 {
     const uint8_t *lo = (const uint8_t *)&R->p;
     const pr_frame *want;
     FZ_CHECK(f->data != NULL);
     FZ_CHECK(f->len >= XF_PACKET_MIN_LEN && f->len <= XF_PACKET_MAX_LEN);
-    /* In the parser, or (a packet that arrived whole) exactly the bytes of
-     * the caller's data that this call consumed last. */
-    if (!(f->data >= lo && f->data + f->len <= lo + sizeof(R->p))) {
-        FZ_CHECK(d != NULL && used >= f->len);
-        FZ_CHECK(f->data == d + used - f->len);
-    }
+    /* In the parser: a frame's bytes never point into the caller's data. */
+    FZ_CHECK(f->data >= lo && f->data + f->len <= lo + sizeof(R->p));
     /* The model's next frame, returned by the call that fed its last byte. */
     FZ_CHECK(R->nframes < R->m->nframes);
     want = &R->m->frames[R->nframes];
@@ -382,7 +377,7 @@ static inline void fz_feed_checked(const uint8_t *s, size_t n, xf_direction dir,
             R.fed += used;
             left -= used;
             if (r == XF_PARSE_FRAME) {
-                fz_take_frame(&R, &f, d, used);
+                fz_take_frame(&R, &f);
             }
             if (d != NULL) {
                 d += used;

@@ -214,7 +214,7 @@ static void gen_raw(const char *dir)
     b.n -= 20;
     write_file(dir, h, "mixed-directions-truncated", &b);
 
-    /* frames that wrap round the parser's ring after 100 bytes of noise */
+    /* frames after 100 bytes of noise (named after the ring of an earlier parser, which they wrapped) */
     b.n = 0;
     put_bytes(&b, "02 61 0B 25");
     for (i = 0; i < 100; i++) {

@@ -9,7 +9,10 @@
 #                                    the replay_* tests, fuzz/replay.cmake.)
 #   scripts/fuzz.sh long [SECONDS]   a long campaign: SECONDS (default 600) per binary, on a
 #                                    writable corpus in build/fuzz/corpus-long/ that persists
-#                                    between campaigns (seeded from fuzz/corpus/).
+#                                    between campaigns (seeded from fuzz/corpus/). Its record
+#                                    (commit, date, per binary: executions, new inputs, result)
+#                                    goes to build/fuzz/campaign.txt, which scripts/perf_page.sh
+#                                    puts in docs/performance.md.
 #   scripts/fuzz.sh corpus           regenerate the committed seed corpus and the hand-made
 #                                    regressions (sem-*) of the parser's semantics (fuzz/gen_corpus.c).
 #   scripts/fuzz.sh build            just build.
@@ -57,17 +60,24 @@ opts() {
 }
 
 failed=()
+record="" # when set, run() appends a line per harness to this file
 # run NAME LOG libFuzzer-args...: run a harness, remember a failure
 run() {
-  local h="$1" log="$2"; shift 2
+  local h="$1" log="$2" result=ok; shift 2
   local o; mapfile -t o < <(opts "$h")
   if "$bdir/fuzz/$h" "${o[@]}" "$@" >"$log" 2>&1; then
     grep -E '^(stat::number_of_executed_units|stat::new_units_added)' "$log" | tr '\n' ' ' || true
     echo
   else
+    result=FAILED
     echo "FAILED (log: $log)"
     grep -E 'invariant violated|ERROR:|SUMMARY:|Test unit written' "$log" | head -5 || true
     failed+=("$h")
+  fi
+  if [ -n "$record" ]; then
+    printf 'binary %s %s %s %s\n' "$h" \
+      "$(awk '/^stat::number_of_executed_units/ {print $NF}' "$log")" \
+      "$(awk '/^stat::new_units_added/ {print $NF}' "$log")" "$result" >>"$record"
   fi
 }
 
@@ -118,6 +128,10 @@ case "$mode" in
     replay
     all=("${main_harnesses[@]}")
     for v in "${variants[@]}"; do all+=("${main_harnesses[@]/%/$v}"); done
+    record="$bdir/campaign.txt"
+    { echo "commit $(git rev-parse --short HEAD)$(git diff --quiet HEAD -- include src fuzz tests || echo +changes)"
+      echo "date $(date -u +%Y-%m-%d)"
+      echo "seconds $secs"; } >"$record"
     for h in "${all[@]}"; do
       base=$(base_of "$h")
       work="$bdir/corpus-long/$base"

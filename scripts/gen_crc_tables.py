@@ -3,12 +3,10 @@
 
 CRC-16/XMODEM: G = x^16 + x^12 + x^5 + 1, MSB first, init 0, no final XOR.
 
-  xf__crc_table16    the vendor's nibble table: the CRC of each 4-bit value, times 2^16
-                     (the CRC loop keeps the CRC in the top half of a 32-bit word)
-  xf__crc_table256   the same for each byte value (XF_CRC_TABLE_256)
-  xf__crc_zero16     the CRC state a after 16 zero bytes is a * x^128 mod G, linear in a:
-                     [i][v] = (v * x^(4i)) * x^128 mod G, so that the product is four lookups
-                     (the parser's check of a candidate that began behind another)
+  xf__crc_table      by default the vendor's nibble table: the CRC of each 4-bit value, times
+                     2^16 (the CRC loop keeps the CRC in the top half of a 32-bit word); with
+                     XF_CRC_TABLE_256, the CRC of each byte value, in 16-bit entries that the
+                     loop shifts up as it reads them (512 bytes instead of 1 KB)
 
 Usage: scripts/gen_crc_tables.py            write the header
        scripts/gen_crc_tables.py --check    exit 1 if the header is not what this script makes
@@ -18,29 +16,6 @@ import os
 import sys
 
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "include", "xfgcu", "xf_crc_tables.h")
-
-
-G = 0x11021
-
-
-def mulmod(a, b):
-    """a * b mod G, polynomials over GF(2)."""
-    r = 0
-    while b:
-        if b & 1:
-            r ^= a
-        b >>= 1
-        a <<= 1
-        if a & 0x10000:
-            a ^= G
-    return r
-
-
-def xpow(e):
-    r = 1
-    for _ in range(e):
-        r = mulmod(r, 2)
-    return r
 
 
 def crc_of(value, bits):
@@ -75,20 +50,14 @@ def generate():
         "",
         "/* clang-format off */",
         "#if XF_CRC_TABLE_256",
-        "/* The CRC of each byte value, times 2^16. */",
-        "static const uint32_t xf__crc_table256[256] = {",
+        "/* The CRC of each byte value. */",
+        "static const uint16_t xf__crc_table[256] = {",
     ]
-    o += lines([crc_of(b, 8) << 16 for b in range(256)], "0x%08Xu", 8, "    ")
+    o += lines([crc_of(b, 8) for b in range(256)], "0x%04Xu", 8, "    ")
     o += ["};", "#else", "/* The vendor's table: the CRC of each 4-bit value, times 2^16. */",
-          "static const uint32_t xf__crc_table16[16] = {"]
+          "static const uint32_t xf__crc_table[16] = {"]
     o += lines([crc_of(n, 4) << 16 for n in range(16)], "0x%08Xu", 8, "    ")
-    o += ["};", "#endif", "",
-          "/* [i][v]: (v * x^(4i)) * x^128 mod G: 16 zero bytes, as a product. */",
-          "static const uint16_t xf__crc_zero16[4][16] = {"]
-    c = xpow(128)
-    for i in range(4):
-        o.append("    {" + ", ".join("0x%04X" % mulmod(v << (4 * i), c) for v in range(16)) + "},")
-    o += ["};"]
+    o += ["};", "#endif"]
     o += ["/* clang-format on */", "", "#endif /* XF_CRC_TABLES_H */", ""]
     return "\n".join(o)
 

@@ -14,9 +14,10 @@
 # build is configured there (tests and the benchmark's selftest on; tools, examples, docs, POSIX
 # links, install off: the parser tests need none of them), and the parser tests (ctest -R
 # 'parser|fuzz_replay|bench_selftest', which covers the fuzz-replay label) must pass unmutated.
-# Then, for each mutant, xf_parser.h is rewritten from the pristine copy with one exact string
-# replacement that must match exactly once (a pattern that no longer matches stops the run: the
-# list cannot rot silently), only the affected test programs are rebuilt, and ctest runs them:
+# Then, for each mutant, xf_parser.h is rewritten from the pristine copy with one short
+# replacement inside one named function, where its text must occur exactly once (a pattern that
+# no longer matches stops the run: the list cannot rot silently), only the affected test programs
+# are rebuilt, and ctest runs them:
 # first test_parser alone (it kills nearly every mutant in a second or two), then, if it
 # survived that, every parser test. A failing or timed-out test means KILLED.
 #
@@ -64,227 +65,86 @@ for tool in git cmake ctest python3; do
   command -v "$tool" >/dev/null || { echo "mutate.sh: $tool not found" >&2; exit 1; }
 done
 
-# The mutants, in Python so that the patterns are exact multi-line strings with no shell or sed
-# escaping. Each: name, what it breaks (one line), the exact text of xf_parser.h, its
-# replacement. Subcommands: list; check FILE NAME... (each pattern occurs exactly once);
-# apply PRISTINE NAME OUT.
+# The mutants, in Python so that the patterns need no shell or sed escaping. Each is addressed
+# by the function it changes, not by long text: its name (rule<N>_... for a rule of
+# docs/codec.md, accel_... for the accelerator, feed_... for the call's bookkeeping), what it
+# breaks (one line), the function, and a short exact text that must occur exactly once in that
+# function's body, with its replacement. A refactor elsewhere in the file leaves them alone;
+# a pattern that no longer matches stops the run, naming the mutant and the function.
+# Subcommands: list; check FILE NAME...; apply PRISTINE NAME OUT.
 mutants() {
   python3 - "$@" <<'PY'
+import re
 import sys
 
 M = [
-    ('flush_keeps',
-     'xf_parser_flush() keeps the bytes it holds (rule 5: flush drops them)',
-     '    xf__clear(p);\n    return XF_PARSE_MORE;\n',
-     '    return XF_PARSE_MORE;\n'),
-    ('consumed_whole',
-     'consumed = the whole chunk when a frame is returned, not just up to its last byte',
-     '    p->stats.bytes_in += (uint32_t)used;\n    if (consumed != NULL) {\n        *consumed = used;\n    }\n    return found ? XF_PARSE_FRAME : XF_PARSE_MORE;',
-     '    p->stats.bytes_in += (uint32_t)used;\n    if (consumed != NULL) {\n        *consumed = found ? len : used;\n    }\n    return found ? XF_PARSE_FRAME : XF_PARSE_MORE;'),
-    ('settle_latest_end',
-     'settle takes the latest end for next, not the soonest',
-     'soon = (xf__left(p, k) < xf__left(p, soon)) ? k : soon;',
-     'soon = (xf__left(p, k) > xf__left(p, soon)) ? k : soon;'),
-    ('crc_zeros_len',
-     'a candidate behind another is CRC-checked with len instead of len - 4 zero bytes',
-     'xf__crc_zeros(w, xf__len(p, k) - 4u)',
-     'xf__crc_zeros(w, xf__len(p, k))'),
-    ('length_error_uncounted',
-     'a header pair with a bad length is not counted in stats.length_errors (the byte path)',
-     '    } else {\n        p->stats.length_errors++;\n',
-     '    } else {\n'),
-    ('sum_no_wrap',
-     "the CRC is not carried round the ring's end",
-     '    if (e < s) {\n',
-     '    if (0) {\n'),
-    ('no_rotate',
-     "a frame that wraps round the ring's end is returned unrotated",
-     'if (i0 + len > XF_PARSER_RING) {',
-     'if (0) { /* MUTANT: never made contiguous */'),
-    ('emit_skip_uncounted',
-     "bytes before a returned frame's start are not counted in bytes_skipped at emit",
-     '        p->stats.bytes_skipped += (unsigned)XF__IX(i0 - p->at[0]);\n    }\n',
-     '    }\n'),
-    ('given_up_uncounted',
-     'running out of credit or slots is not counted in stats.given_up',
-     '    if (p->credit < XF__COST) {\n        p->stats.given_up++;',
-     '    if (0) {\n        p->stats.given_up++;'),
-    ('len_min_71',
-     'a length of 71 is taken for a valid one',
-     'return len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN; }',
-     'return len + 1u >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN; }'),
-    ('len_max_plus1',
-     'a length one past XF_PACKET_MAX_LEN is taken for a valid one',
-     'return len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN; }',
-     'return len >= XF_PACKET_MIN_LEN && len <= XF_PACKET_MAX_LEN + 1u; }'),
-    ('step_no_trim',
-     'with no candidate, the byte path keeps a fourth byte held',
-     '        xf__trim(p); /* no candidate (a bad length, or none): four bytes held */\n',
-     ''),
-    ('fast1_no_pair_test',
-     'a byte fed alone never completes a header pair',
-     '    if (p->ring[XF__IX(e - 3u)] != p->h0 || p->ring[XF__IX(e - 2u)] != xf__h1(p) || xf__deaf(p)) {\n        /* A UART',
-     '    if (1) {\n        /* A UART'),
-    ('fast1_no_end_test',
-     'a byte fed alone never ends a candidate',
-     '        if (XF__IX(e + 1u) != p->next) {\n            return xf__store1(p, d[0], consumed, used);',
-     '        if (p->n > 0u || XF__IX(e + 1u) != p->next) {\n            return xf__store1(p, d[0], consumed, used);'),
-    ('fast1_bad_len_uncounted',
-     'a byte fed alone that completes a pair with a bad length is not counted',
-     '        p->stats.length_errors++;\n        if (XF__IX(e + 1u) == p->next) {\n            xf__trim(p); /* no candidate: the first of four goes */\n        }\n        return xf__store1',
-     '        if (XF__IX(e + 1u) == p->next) {\n            xf__trim(p); /* no candidate: the first of four goes */\n        }\n        return xf__store1'),
-    ('fast1_bad_len_stale',
-     'a byte fed alone counts a bad length of a pair of stale ring bytes (fewer than three held)',
-     '    if ((d[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) && !xf__few(p) &&',
-     '    if ((d[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) &&'),
-    ('fast1_bad_len_no_trim',
-     'hunting, a byte fed alone that completes a pair with a bad length keeps a fourth byte held',
-     '            xf__trim(p); /* no candidate: the first of four goes */\n        }\n        return xf__store1',
-     '        }\n        return xf__store1'),
-    ('fast1_bad_len_skips_end',
-     'a byte fed alone that completes a pair with a bad length and ends a candidate is not checked',
-     '    if ((d[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) && !xf__few(p) &&\n        (XF__IX(e + 1u) != p->next || p->n == 0u)) {',
-     '    if ((d[0] != 0u || !xf__len_ok(p->ring[XF__IX(e - 1u)])) && !xf__few(p)) {'),
-    ('fast1_no_trim',
-     'a byte fed alone with no candidate keeps a fourth byte held',
-     '            xf__trim(p);\n            return xf__store1(p, d[0], consumed, used);',
-     '            return xf__store1(p, d[0], consumed, used);'),
-    ('scan_skips_low_byte',
-     "after a pair with a bad length the search skips its length's low byte (a pair it begins is missed)",
-     '            ++*errors;\n            i += 2u;',
-     '            ++*errors;\n            i += 3u;'),
-    ('scan_misses_last',
-     "a pair whose fourth byte is the region's last is not searched for",
-     '    while (i + 3u < r) {',
-     '    while (i + 4u < r) {'),
-    ('run_no_lookbehind',
-     "inside a candidate, pairs begun in the three bytes before the chunk's position are not searched for",
-     '(i < 3u) ? i : i - 3u, r, &p->stats.length_errors',
-     'i, r, &p->stats.length_errors'),
-    ('take_no_tail',
-     "a pair begun among the bytes held and completed by a chunk's first bytes is missed",
-     '        if (i < 3u && !xf__deaf(p) && xf__tail(p)) {',
-     '        if (0) {'),
-    ('no_give_back',
-     'hunting, the bytes held are not given back to the idle path (pairs they begin are missed)',
-     '    if (i >= 3u) {\n        XF_ASSERT(xf__held(p) <= 3u);',
-     '    if (0) {\n        XF_ASSERT(xf__held(p) <= 3u);'),
-    ('direct_no_crc',
-     'a whole packet at a chunk\'s start is returned without its CRC checked',
-     '    if ((xf__crc_run(0, d, len) >> 16) == 0u) {',
-     '    if (1) {'),
-    ('direct_ignores_pairs',
-     'a packet at a chunk\'s start is taken on the fresh path even with a header pair completing inside',
-     '        if (hit[1] == h1) {\n            m = 4;',
-     '        if (hit[1] == h1 && hit < d) {\n            m = 4;'),
-    ('direct_ignores_last_pair',
-     'a packet at a chunk\'s start is taken on the fresh path even when its last byte completes a header pair',
-     '    const uint8_t *hit = d, *stop = d + m - 3u;',
-     '    const uint8_t *hit = d, *stop = d + m - 4u;'),
-    ('fresh_damaged_dropped',
-     'a damaged packet at a chunk\'s start is skipped whole: its last three bytes (they may begin a header) not held',
-     '    p->stats.crc_errors++;\n    xf__keep(p, d, len);',
-     '    p->stats.crc_errors++;\n    p->stats.bytes_skipped += len;'),
-    ('fresh_open_next',
-     'a candidate opened on the fresh path looks at the byte after its last one',
-     '        p->n = 1;\n        p->next = (uint8_t)len;',
-     '        p->n = 1;\n        p->next = (uint8_t)(len + 1u);'),
-    ('keep_four',
-     'with no candidate, four bytes of a chunk are held, not three',
-     '        d += m - 3u;\n        m = 3;',
-     '        d += m - 4u;\n        m = 4;'),
-    ('admit_next_last',
-     'a candidate admitted behind others never brings next forward, even when it ends sooner',
-     '            p->next = (uint8_t)xf__fin(p, k);\n',
-     ''),
-    ('ends_first_only',
-     'of the candidates that end on the same byte, only the first is checked',
-     '            xf__drop(p, k);\n        }\n    } while (k < p->n);',
-     '            xf__drop(p, k);\n            break;\n        }\n    } while (k < p->n);'),
-    ('feed_no_tail',
-     'the in-frame path of a chunk misses a pair begun among the bytes held',
-     '    if (len > 0u && p->n > 0u && !xf__tail(p)) {',
-     '    if (len > 0u && p->n > 0u) {'),
-    ('feed_end_unchecked',
-     "the in-frame path stores the soonest end's last byte without checking the candidates",
-     '        if (m == left) {\n            found = xf__look(p, 0, frame);',
-     '        if (0) {\n            found = xf__look(p, 0, frame);'),
-    ('pair1_no_held_check',
-     'a byte fed alone completes a pair of stale ring bytes when fewer than three are held',
-     '|| xf__few(p)) {\n        return xf__feed1(p, b, consumed, used, frame);',
-     ') {\n        return xf__feed1(p, b, consumed, used, frame);'),
-    ('settle_keeps_all',
-     'with no candidate left after a check, every byte stays held: none is skipped',
-     '        if (held > 3u) {',
-     '        if (0) {'),
-    ('trim_uncounted',
-     'a byte dropped while hunting is not counted in bytes_skipped',
-     '    p->next = XF__IX(p->next + 1u); /* (and so the first byte held: xf__head) */\n    p->stats.bytes_skipped++;\n',
-     '    p->next = XF__IX(p->next + 1u); /* (and so the first byte held: xf__head) */\n'),
-    ('idle_skip_uncounted',
-     'bytes skipped before a header found in the chunk are not counted',
-     '    p->stats.bytes_skipped += xf__held(p) + (uint32_t)(s - *i);',
-     '    p->stats.bytes_skipped += xf__held(p);'),
-    ('drop_skip_uncounted',
-     'when the first candidate fails, the bytes before the next one are not counted in bytes_skipped',
-     '        p->stats.bytes_skipped += (unsigned)XF__IX(p->at[XF__K > 1 ? 1 : 0] - p->at[0]); /* (one slot: never) */\n',
-     ''),
-    ('credit_no_cost',
-     'a candidate admitted behind others costs no credit',
-     '        p->credit = (uint8_t)(p->credit - XF__COST);\n',
-     ''),
-    ('credit_no_earn',
-     "the bytes CRC'd while candidates are pending earn no credit",
-     '    xf__earn(p, (unsigned)XF__IX(e - s));\n',
-     ''),
-    ('credit_fresh_no_earn',
-     'a whole packet checked on the fresh path earns no credit (its bytes would in the byte path)',
-     '    xf__earn(p, len); /* as xf__sum at its end */\n',
-     ''),
-    ('credit_slots_open',
-     'taking the last slot leaves the credit as it is: headers are looked at with every slot taken',
-     'if (n == XF__K) {',
-     'if (n > XF__K) { /* MUTANT: never */'),
-    ('credit_lone_deaf',
-     'a header after nothing pending is refused when the credit is short',
-     'return p->credit < XF__COST && p->n > 0u; }',
-     'return p->credit < XF__COST; }'),
-    ('credit_cap_four',
-     "the credit holds four candidates' cost, not three",
-     '#define XF__CAP  (3u * XF__COST)',
-     '#define XF__CAP  (4u * XF__COST)'),
-    ('credit_clear_keeps',
-     'a reset or flush keeps the credit as it was instead of a full one',
-     '    xf__empty(p);\n    p->credit = XF__CAP;\n',
-     '    xf__empty(p);\n'),
-    ('look_ignores_credit',
-     'the byte that ends a candidate looks at the pair it completes even when the credit is short',
-     '    if (pair && !xf__deaf(p)) {',
-     '    if (pair) {'),
-    ('fresh_given_up_uncounted',
-     'a candidate opened on the fresh path is not taken: with the credit short, given_up does not count it',
-     '    xf__taken(p, 1);',
-     '    (void)0;'),
-    ('emit_skip_second',
-     'a returned frame that began second: the bytes before it are not counted in bytes_skipped',
-     '    if (k > 0u) { /* the bytes before it',
-     '    if (k > 1u) { /* the bytes before it'),
-    ('plain_no_end',
-     'a few bytes fed together: a byte that ends a candidate is stored unchecked',
-     "    } else if (XF__IX(e + 1u) == p->next && p->n > 0u) {\n        return 0; /* a candidate's end */",
-     "    } else if (0) {\n        return 0; /* a candidate's end */"),
-    ('plain_no_few',
-     'a few bytes fed together: a pair of stale ring bytes (fewer than three held) counts a bad length',
-     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p) ||',
-     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) ||'),
-    ('plain_end_pair',
-     'a few bytes fed together: a bad length on a byte that also ends a candidate skips the check',
-     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p) ||\n            (XF__IX(e + 1u) == p->next && p->n > 0u)) {',
-     '        if ((b == 0u && xf__len_ok(p->ring[XF__IX(e - 1u)])) || xf__few(p)) {'),
-    ('two_middle_unlooked',
-     'three bytes fed together: the middle one is stored without a look',
-     '    if (len == 3u && !xf__plain(p, data[1])) {',
-     '    if (len == 3u && !xf__plain(p, data[1]) && 0) {'),
+    # rule 1: what a candidate is
+    ('rule1_len_min_71', 'a length of 71 is taken for a valid one',
+     'xf__look', 'len >= XF_PACKET_MIN_LEN', 'len + 1u >= XF_PACKET_MIN_LEN'),
+    ('rule1_len_max_plus1', 'a length one past XF_PACKET_MAX_LEN is taken for a valid one (builds with 84)',
+     'xf__look', 'len <= XF_PACKET_MAX_LEN', 'len <= XF_PACKET_MAX_LEN + 1u'),
+    ("rule1_high_byte_ignored", "a length's high byte is not checked (0x0148 taken for 0x48)",
+     'xf__look', '(w & 0xFFu) == 0u && ', ''),
+    ('rule1_bad_length_uncounted', 'a header pair with a bad length is not counted in length_errors',
+     'xf__look', 'p->stats.length_errors++;', ';'),
+    ('rule1_no_floor', "the bytes before a returned frame's end may begin a header",
+     'xf__empty', 'p->last4 = 0;', ';'),
+    # rule 2: the checks, earliest start first, the first intact one returned
+    ('rule2_crc_unchecked', 'a candidate is returned without its CRC checked',
+     'xf__ends', 'xf_crc16(p->buf + p->at[k], xf__len(p, k)) == 0u', '1'),
+    ('rule2_crc_error_uncounted', 'a failed candidate is not counted in crc_errors',
+     'xf__ends', 'p->stats.crc_errors++;', ';'),
+    ('rule2_skips_next', 'after a candidate that does not end here, the next one is skipped',
+     'xf__ends', 'k++;', 'k += 2u;'),
+    ('rule2_end_late', "a candidate is checked one byte after its last",
+     'xf__end', 'p->at[k] + xf__len(p, k)', 'p->at[k] + xf__len(p, k) + 1u'),
+    ('rule2_next_not_soonest', "next is the last candidate's end, not the soonest",
+     'xf__settle', 'soon = (xf__end(p, k) < soon) ? xf__end(p, k) : soon;', 'soon = xf__end(p, k);'),
+    ('rule2_admit_keeps_next', 'a candidate admitted behind others never brings next forward',
+     'xf__admit', '(k == 0u || xf__end(p, k) < p->next)', '(k == 0u)'),
+    ('rule2_end_unlooked', 'a byte that ends a candidate, but completes no header pair, is not looked at',
+     'xf__byte', '(busy && p->held == p->next) || ', ''),
+    ('rule2_looks_after_frame', "the byte that completes a frame is looked at as a header's too",
+     'xf__look', 'xf__ends(p, frame)) {\n        return 1;', 'xf__ends(p, frame)) {\n        (void)0;'),
+    ('rule2_no_move', 'when the earliest candidate fails, the others are not moved to the buffer\'s start',
+     'xf__settle', 'XF_MEMMOVE(p->buf, p->buf + shift, p->held - shift);', ';'),
+    # rule 3: first come, first served
+    ('rule3_given_up_uncounted', 'a valid header that finds every slot taken is not counted in given_up',
+     'xf__look', 'p->stats.given_up++;', ';'),
+    ('rule3_one_slot_less', 'the slots are full one candidate early',
+     'xf__mode_of', 'n < XF_PARSER_SLOTS', 'n + 1u < XF_PARSER_SLOTS'),
+    ('rule3_start_off', "a candidate behind others is taken to begin one byte late",
+     'xf__admit', 'p->at[k] = (uint8_t)(p->held - 4u);', 'p->at[k] = (uint8_t)(p->held - 3u);'),
+    # rule 4: the bytes held, and the bytes skipped where they are dropped
+    ('rule4_hunt_holds_four', 'hunting, four bytes are held, not three',
+     'xf__look', 'p->held > 3u', 'p->held > 4u'),
+    ('rule4_hunt_skip_uncounted', 'hunting, the byte dropped is not counted in bytes_skipped',
+     'xf__look', 'p->stats.bytes_skipped++;', ';'),
+    ('rule4_settle_skip_uncounted', 'the bytes before the earliest candidate left are not counted in bytes_skipped',
+     'xf__settle', 'p->stats.bytes_skipped += shift;', ';'),
+    ('rule4_frame_skip_uncounted', "the bytes before a returned frame are not counted in bytes_skipped",
+     'xf__ends', 'p->stats.bytes_skipped += p->at[k];', ';'),
+    # rule 5: end of input
+    ('rule5_flush_keeps', 'xf_parser_flush() keeps the bytes it holds',
+     'xf_parser_flush', 'xf_parser_reset(p);', ';'),
+    ('rule5_reset_skip_uncounted', 'a reset does not count the bytes it drops in bytes_skipped',
+     'xf_parser_reset', 'p->stats.bytes_skipped += p->held;', ';'),
+    # the accelerator: it must take no byte the rule path would look at, and store what it takes
+    ('accel_takes_end', "the accelerator takes the soonest candidate's last byte",
+     'xf__quiet', '(size_t)(p->next - p->held - 1u)', '(size_t)(p->next - p->held)'),
+    ('accel_no_lookbehind', 'the accelerator ignores an h0 among the last three bytes held',
+     'xf__quiet', 'for (near = 0;', 'for (near = 3;'),
+    ('accel_takes_pair_end', 'the accelerator takes the byte that completes a pair begun in its run',
+     'xf__quiet', '(size_t)(hit - d) + 3u;', '(size_t)(hit - d) + 4u;'),
+    ('accel_window_stale', "after the accelerator's run, the window keeps the bytes before it",
+     'xf__keep', 'p->last4 = w;', ';'),
+    ('accel_hunt_skip_uncounted', 'hunting, the bytes the accelerator drops are not counted in bytes_skipped',
+     'xf__keep', 'p->stats.bytes_skipped += (uint32_t)(p->held + m - keep);', ';'),
+    # the call's bookkeeping
+    ('feed_consumed_whole', 'consumed is the whole chunk when a frame is returned',
+     'xf__feed', '*consumed = i;', '*consumed = len;'),
+    ('feed_one_byte_uncounted', 'a byte fed alone is not counted in bytes_in',
+     'xf_parser_feed', 'p->stats.bytes_in++;', ';'),
 ]
 by_name = {m[0]: m for m in M}
 assert len(by_name) == len(M), "two mutants share a name"
@@ -298,33 +158,55 @@ def pick(names):
     return [by_name[n] for n in names] if names else M
 
 
+def body(text, fn):
+    """(start, end) of the definition of function fn: from the line at file level that names it
+    before a parenthesis and ends with `)` or `}` (a prototype ends with `;`) to the closing brace
+    in column 0, or to the end of that line for a one-line function."""
+    m = re.search(r"^[A-Za-z_][^\n]*\b%s\([^\n]*[)}][ \t]*$" % re.escape(fn), text, re.M)
+    if m is None:
+        return None
+    one_line = text.find("\n", m.start())
+    if text[m.start():one_line].rstrip().endswith("}"):
+        return m.start(), one_line
+    close = re.compile(r"^}", re.M).search(text, m.start())
+    return (m.start(), close.end()) if close else None
+
+
+def where(text, name, fn, old, new):
+    """The offset of old in fn's body, or an error message."""
+    span = body(text, fn)
+    if span is None:
+        return "mutant %s: no function %s in the parser" % (name, fn)
+    n = text.count(old, span[0], span[1])
+    if n != 1 or old == new:
+        return "mutant %s: its pattern occurs %d times in %s (must be exactly once)" % (name, n, fn)
+    return text.index(old, span[0], span[1])
+
+
 cmd, args = sys.argv[1], sys.argv[2:]
 if cmd == "list":
     for m in pick(args):
-        print("%s\t%s" % (m[0], m[1]))
+        print("%s\t%s\t%s" % (m[0], m[2], m[1]))
 elif cmd == "check":
     text = open(args[0]).read()
-    bad = []
-    for name, _, old, new in pick(args[1:]):
-        n = text.count(old)
-        if n != 1 or old == new:
-            bad.append("  %s: its pattern occurs %d times in %s (must be exactly once)" % (name, n, args[0]))
+    bad = [w for w in (where(text, m[0], m[2], m[3], m[4]) for m in pick(args[1:])) if isinstance(w, str)]
     if bad:
-        sys.exit("mutate.sh: stale mutants; update them to the current parser:\n" + "\n".join(bad))
+        sys.exit("mutate.sh: stale mutants; update them to the current parser:\n  " + "\n  ".join(bad))
 elif cmd == "apply":
-    name, _, old, new = pick([args[1]])[0]
+    name, _, fn, old, new = pick([args[1]])[0]
     text = open(args[0]).read()
-    if text.count(old) != 1:
-        sys.exit("mutate.sh: mutant %s no longer matches exactly once" % name)
+    at = where(text, name, fn, old, new)
+    if isinstance(at, str):
+        sys.exit("mutate.sh: " + at)
     with open(args[2], "w") as f:
-        f.write(text.replace(old, new, 1))
+        f.write(text[:at] + new + text[at + len(old):])
 else:
     sys.exit("mutate.sh: internal: unknown subcommand " + cmd)
 PY
 }
 
 if [ "$list_only" = 1 ]; then
-  mutants list ${names[@]+"${names[@]}"} | awk -F'\t' '{ printf "%-26s %s\n", $1, $2 }'
+  mutants list ${names[@]+"${names[@]}"} | awk -F'\t' '{ printf "%-28s %-16s %s\n", $1, $2, $3 }'
   exit 0
 fi
 
@@ -450,7 +332,7 @@ echo "   all ${#tests[@]} pass ($((SECONDS - t0))s so far)"
 
 # ---- the mutants ---------------------------------------------------------------------------------
 declare -A result killers desc
-while IFS=$'\t' read -r n d; do desc[$n]=$d; done < <(mutants list "${selected[@]}")
+while IFS=$'\t' read -r n f d; do desc[$n]="$d ($f)"; done < <(mutants list "${selected[@]}")
 status=0
 for m in "${selected[@]}"; do
   blog=$logs/$m.build.log
@@ -458,7 +340,7 @@ for m in "${selected[@]}"; do
   : >"$blog"
   : >"$tlog"
   mutants apply "$pristine" "$m" "$src/$hdr_rel"
-  printf '== %-26s ' "$m"
+  printf '== %-28s ' "$m"
   failed=""
   res=""
   if [ "$full" = 0 ]; then
@@ -498,9 +380,9 @@ cp "$pristine" "$src/$hdr_rel"
 
 # ---- the table -------------------------------------------------------------------------------------
 echo
-printf '%-26s %-9s %s\n' "MUTANT" "RESULT" "WHAT IT BREAKS  [killed by]"
+printf '%-28s %-9s %s\n' "MUTANT" "RESULT" "WHAT IT BREAKS (FUNCTION)  [killed by]"
 for m in "${selected[@]}"; do
-  printf '%-26s %-9s %s  [%s]\n' "$m" "${result[$m]}" "${desc[$m]}" "${killers[$m]}"
+  printf '%-28s %-9s %s  [%s]\n' "$m" "${result[$m]}" "${desc[$m]}" "${killers[$m]}"
 done
 killed=0
 for m in "${selected[@]}"; do [ "${result[$m]}" = KILLED ] && killed=$((killed + 1)); done

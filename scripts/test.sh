@@ -24,11 +24,11 @@ describe() {
     fuzz)      echo "libFuzzer harnesses over the saved corpus, and a short run" ;;
     matrix)    echo "gcc/clang x C99/C11, headers alone as C and C++, a user TU at -O0..-O3/-Os" ;;
     docs)      echo "API reference (Doxygen, warnings are errors), man page current, nothing outside" ;;
-    lint)      echo "generated files current, cppcheck, clang-tidy, clang-format, the parser's size" ;;
-    mcu)       echo "Cortex-M4 firmware and RISC-V builds, their flash and RAM" ;;
+    lint)      echo "generated files current, cppcheck, clang-tidy, clang-format, the parser's lines (a gate)" ;;
+    mcu)       echo "Cortex-M4 firmware and RISC-V builds, their flash and RAM (gates)" ;;
     firmware)  echo "the MCU example under qemu-system-arm against xfgcu sim (ctest -L firmware)" ;;
     bigendian) echo "codec and client tests on s390x under qemu-user" ;;
-    bench)     echo "parser instructions per byte (callgrind), client latency and CPU, send's time" ;;
+    bench)     echo "parser instructions per byte (callgrind; its promises gated), client latency and CPU, send's time" ;;
     mutation)  echo "named mutants of the parser, each killed by its tests (scripts/mutate.sh)" ;;
     *) return 1 ;;
   esac
@@ -109,4 +109,9 @@ done
 printf '\n%-10s %6s  %s\n' stage seconds verdict
 printf '%s\n' "${rows[@]}"
 printf '%-10s %6s  %s\n' total "$(($(date +%s) - t0))" "$([ $failed -eq 0 ] && echo pass || echo "FAIL ($failed)")"
+# the whole suite's time, for docs/performance.md (scripts/perf_page.py): only a full, passing run
+if [ $# -eq 0 ] && [ $failed -eq 0 ]; then
+  printf 'commit %s\ndate %s\nseconds %s\ncores %s\n' "$(git rev-parse --short HEAD)" "$(date -u +%Y-%m-%d)" \
+    "$(($(date +%s) - t0))" "$jobs" >build/test-time.txt
+fi
 [ $failed -eq 0 ]

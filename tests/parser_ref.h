@@ -19,20 +19,10 @@
  *       [s, e) zero: the frame [s, e) is returned, every pending candidate
  *       is dropped, floor = e, and nothing else about byte q is examined;
  *       else crc_errors++ and that candidate is removed;
- *    2. then, with none pending or credit >= PR_COST, a header pair
- *       completed by byte q at s = q - 3 >= floor: a bad length is a length
- *       error; a valid one becomes pending (and pays, below), and
- *       given_up++ when the credit left is below PR_COST. While it is and
- *       candidates are pending, no header is looked at (a frame that
- *       begins then is lost, and no bad length is counted).
- *  - The credit starts at PR_CAP. It is earned by the bytes of a busy
- *    period (from the start of the candidate that began one, with none
- *    pending): at byte e where candidates end (before step 1), or where one
- *    is admitted behind others, credit = min(PR_CAP, credit + e - mark),
- *    mark = e; the first candidate of a busy period sets mark = s and costs
- *    nothing; one admitted behind others costs PR_COST. When a candidate
- *    takes the last of the K slots, the credit left is at most
- *    PR_COST - 1 (no header is looked at while every slot is taken).
+ *    2. then a header pair completed by byte q at s = q - 3 >= floor: a bad
+ *       length is a length error; a valid one becomes pending when fewer
+ *       than K are (first come, first served), else given_up++ (a frame
+ *       that begins there is lost).
  *  - Held bytes (pending) = e - head, head = the earliest pending start;
  *    with none pending, max(floor, e - 3): the last three bytes, which may
  *    begin a header, whatever they are.
@@ -49,9 +39,6 @@
 #include <string.h>
 
 #include "xfgcu/xf_protocol.h" /* header bytes, XF_PACKET_MIN_LEN, xf_direction */
-
-#define PR_COST 63u            /* the credit a candidate costs (XF__COST) */
-#define PR_CAP  (3u * PR_COST) /* the most credit (XF__CAP) */
 
 /** Counters at one point of the stream (those of xf_parser_stats, and the held bytes). */
 typedef struct pr_counts {
@@ -125,7 +112,7 @@ static inline int pr_run(const uint8_t *s, size_t n, xf_direction dir, unsigned 
     const uint8_t h0 = (uint8_t)((dir == XF_DIR_HOST) ? XF_HOST_HEADER0 : XF_GCU_HEADER0);
     const uint8_t h1 = (uint8_t)((dir == XF_DIR_HOST) ? XF_HOST_HEADER1 : XF_GCU_HEADER1);
     pr_frame *cand; /* the pending candidates, in order of start (a new one always starts last) */
-    size_t ncand = 0, floor = 0, frame_bytes = 0, e, i, credit = PR_CAP, mark = 0;
+    size_t ncand = 0, floor = 0, frame_bytes = 0, e, i;
     pr_counts c;
 
     memset(m, 0, sizeof(*m));
@@ -149,12 +136,6 @@ static inline int pr_run(const uint8_t *s, size_t n, xf_direction dir, unsigned 
         int framed = 0;
         c.bytes_in++;
         /* 1. the pending candidates that end here, earliest start first */
-        for (i = 0; i < ncand && cand[i].start + cand[i].len != e; i++) {
-        }
-        if (i < ncand) { /* one ends here: the busy period's bytes so far are earned */
-            credit = (credit + e - mark < PR_CAP) ? credit + e - mark : PR_CAP;
-            mark = e;
-        }
         for (i = 0; i < ncand && !framed;) {
             if (cand[i].start + cand[i].len != e) {
                 i++;
@@ -172,23 +153,16 @@ static inline int pr_run(const uint8_t *s, size_t n, xf_direction dir, unsigned 
             }
         }
         /* 2. a header pair completed by byte q, at q - 3 */
-        if (!framed && (ncand == 0u || credit >= PR_COST) && q >= floor + 3u && s[q - 3u] == h0 && s[q - 2u] == h1) {
+        if (!framed && q >= floor + 3u && s[q - 3u] == h0 && s[q - 2u] == h1) {
             pr_frame nc;
             nc.start = q - 3u;
             nc.len = (size_t)s[q - 1u] | ((size_t)s[q] << 8);
             if (nc.len < XF_PACKET_MIN_LEN || nc.len > max_len) {
                 c.length_errors++;
-            } else {
-                if (ncand == 0u) {
-                    mark = nc.start;
-                } else {
-                    credit = (credit + e - mark < PR_CAP) ? credit + e - mark : PR_CAP;
-                    mark = e;
-                    credit -= PR_COST;
-                }
+            } else if (ncand < K) {
                 cand[ncand++] = nc;
-                credit = (ncand == K && credit >= PR_COST) ? PR_COST - 1u : credit;
-                c.given_up += (credit < PR_COST);
+            } else {
+                c.given_up++;
             }
         }
         c.pending = (uint32_t)pr_held(e, floor, cand, ncand);

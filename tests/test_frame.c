@@ -59,7 +59,7 @@ static void test_gcu_frame_decodes_like_unpack(void **state)
     xf_frame f;
     xf_gcu_packet a, b;
     (void)state;
-    /* noise first, so the frame comes out of the ring, then whole in the caller's bytes */
+    /* noise first, then the same packet twice: each frame comes out of the parser's buffer */
     memset(stream, 0x11, 5);
     len = 5;
     memcpy(stream + len, one, n);

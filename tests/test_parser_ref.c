@@ -136,8 +136,8 @@ static void test_clean_three(void **state)
                 assert_int_equal(m.at[i].bytes_skipped, 0);
                 assert_int_equal(m.at[i].crc_errors + m.at[i].length_errors, 0);
             }
-            /* with one slot, each frame's candidate takes the last one */
-            assert_int_equal(m.final.given_up, (k_values[k] == 1u) ? 3u : 0u);
+            /* a frame alone never finds every slot taken, even with one slot */
+            assert_int_equal(m.final.given_up, 0);
             assert_int_equal(m.final.pending, 0);
             pr_free(&m);
         }
@@ -250,33 +250,30 @@ static void test_length_errors(void **state)
     pr_free(&m);
 }
 
-/* Headers back to back, from a full credit: the slots or the credit run
- * out after B = min(K, 4) of them (the first is free, and PR_CAP pays for three). */
-static unsigned burst(unsigned K) { return (K < 4u) ? K : 4u; }
-
-/* First come, first served: B false candidates that end after a frame take
- * every slot or spend the credit, so the headers after them (one more false
- * one, then the frame's) are not looked at and the frame is lost; running
- * out counts once in given_up. With K + 2 slots the frame has the last one
- * when K + 2 <= 4; beyond, the credit still runs out before it. */
+/* First come, first served: K false candidates that end after a frame take
+ * every slot, so the headers after them (one more false one, then the
+ * frame's) are given up, each counted, and the frame is lost. With K + 2
+ * slots both are admitted, and the frame comes out. */
 static void test_first_come_first_served(void **state)
 {
     size_t k;
     (void)state;
     for (k = 0; k < ARRAY_LEN(k_values); k++) {
-        const unsigned K = k_values[k], B = burst(K);
+        const unsigned K = k_values[k];
         stream s = {{0}, 0};
         size_t i, f;
         pr_model m;
-        for (i = 0; i <= B; i++) {
+        for (i = 0; i <= K; i++) {
             put_hex(&s, "8A 5E FF 00");
         }
         f = put_packet(&s, 72, 0x11);
         run(&s, K, 255, 1, &m);
         check_identities(&s, &m, 255);
-        assert_int_equal(m.at[4u * B - 1u].given_up, 0);
-        assert_int_equal(m.at[4u * B].given_up, 1); /* the B-th runs out */
-        assert_int_equal(m.final.given_up, 1);
+        assert_int_equal(m.at[4u * K + 3u].given_up, 0);
+        assert_int_equal(m.at[4u * K + 4u].given_up, 1); /* the claim after the K-th */
+        assert_int_equal(m.at[f + 3u].given_up, 1);
+        assert_int_equal(m.at[f + 4u].given_up, 2); /* the frame's */
+        assert_int_equal(m.final.given_up, 2);
         assert_int_equal(m.nframes, 0);
         assert_int_equal(m.final.crc_errors + m.final.length_errors, 0); /* none ends in the stream */
         assert_int_equal(m.at[s.n].pending, s.n);                        /* held from the first */
@@ -285,47 +282,40 @@ static void test_first_come_first_served(void **state)
 
         run(&s, K + 2u, 255, 1, &m);
         check_identities(&s, &m, 255);
-        if (K + 2u <= 4u) {
-            assert_int_equal(m.nframes, 1);
-            assert_int_equal(m.frames[0].start, f);
-            assert_int_equal(m.at[f + 71u].frames, 0);
-            assert_int_equal(m.at[f + 72u].frames, 1);
-            assert_int_equal(m.at[f + 3u].given_up, 0);
-            assert_int_equal(m.at[f + 4u].given_up, 1); /* the frame's took the last slot */
-            assert_int_equal(m.final.bytes_skipped, 4u * (K + 1u));
-        } else {
-            assert_int_equal(m.nframes, 0);
-            assert_int_equal(m.at[16].given_up, 1); /* the fourth spent the credit */
-        }
+        assert_int_equal(m.nframes, 1);
+        assert_int_equal(m.frames[0].start, f);
+        assert_int_equal(m.at[f + 71u].frames, 0);
+        assert_int_equal(m.at[f + 72u].frames, 1);
+        assert_int_equal(m.final.given_up, 0);
+        assert_int_equal(m.final.bytes_skipped, 4u * (K + 1u));
         pr_free(&m);
     }
 }
 
-/* B false candidates that end sooner than a frame starting after them: the
- * frame finds every slot taken, or the credit spent, and is lost (the
- * documented loss); with K + 1 slots it takes the last, unless the credit
- * ran out first (B = 4). */
+/* K false candidates that end sooner than a frame starting after them: the
+ * frame finds every slot taken and is lost (the documented loss); with
+ * K + 1 slots it takes the last. */
 static void test_k_false_ending_sooner(void **state)
 {
     size_t k, x;
     (void)state;
     for (k = 0; k < ARRAY_LEN(k_values); k++) {
         for (x = 0; x < ARRAY_LEN(max_values); x++) {
-            const unsigned K = k_values[k], B = burst(K), max = max_values[x];
+            const unsigned K = k_values[k], max = max_values[x];
             stream s = {{0}, 0};
             size_t i, f;
             pr_model m;
-            for (i = 0; i < B; i++) {
+            for (i = 0; i < K; i++) {
                 put_hex(&s, "8A 5E 54 00"); /* 84: ends at 84 + 4i */
             }
-            f = put_packet(&s, 84, 0x11); /* at 4B, ends at 4B + 84: after all of them */
+            f = put_packet(&s, 84, 0x11); /* at 4K, ends at 4K + 84: after all of them */
             put_fill(&s, 0x00, 100);
             run(&s, K, max, 1, &m);
             check_identities(&s, &m, max);
-            assert_int_equal(m.at[f - 1u].given_up, 0);
-            assert_int_equal(m.at[f].given_up, 1);
+            assert_int_equal(m.at[f + 3u].given_up, 0);
+            assert_int_equal(m.at[f + 4u].given_up, 1); /* when the frame's header completes */
             assert_int_equal(m.nframes, 0);
-            assert_int_equal(m.final.crc_errors, B);
+            assert_int_equal(m.final.crc_errors, K);
             assert_int_equal(m.at[84].crc_errors, 1); /* the first false one, at its end */
             assert_int_equal(m.final.given_up, 1);
             assert_int_equal(m.final.bytes_skipped, s.n);
@@ -333,28 +323,26 @@ static void test_k_false_ending_sooner(void **state)
 
             run(&s, K + 1u, max, 1, &m);
             check_identities(&s, &m, max);
-            assert_int_equal(m.final.given_up, 1);
-            assert_int_equal(m.final.crc_errors, B); /* they all end before the frame */
-            assert_int_equal(m.nframes, (B < 4u) ? 1u : 0u);
-            if (B < 4u) {
-                assert_int_equal(m.frames[0].start, f);
-                assert_int_equal(m.at[f + 84u].frames, 1);
-            }
+            assert_int_equal(m.final.given_up, 0);
+            assert_int_equal(m.final.crc_errors, K); /* they all end before the frame */
+            assert_int_equal(m.nframes, 1);
+            assert_int_equal(m.frames[0].start, f);
+            assert_int_equal(m.at[f + 84u].frames, 1);
             pr_free(&m);
         }
     }
 }
 
-/* The credit. Eight false 72-byte claims back to back: B are admitted (the
- * rest are not looked at), whatever the slots. The first one's check, at
- * byte 72, earns the bytes since the last admission: a frame whose header
- * ends after it is admitted, and found. */
-static void test_credit(void **state)
+/* A check frees a slot. Eight false 72-byte claims back to back: min(K, 8)
+ * are admitted, each of the others given up when its header completes. The
+ * first one's check, at byte 72, frees its slot: a frame whose header
+ * completes after it is admitted, and found, whatever K. */
+static void test_slot_freed_by_check(void **state)
 {
     size_t k;
     (void)state;
     for (k = 0; k < ARRAY_LEN(k_values); k++) {
-        const unsigned K = k_values[k], B = burst(K);
+        const unsigned K = k_values[k], B = (K < 8u) ? K : 8u;
         stream s = {{0}, 0};
         size_t i, f;
         pr_model m;
@@ -366,11 +354,13 @@ static void test_credit(void **state)
         put_fill(&s, 0x00, 100);
         run(&s, K, 255, 1, &m);
         check_identities(&s, &m, 255);
-        assert_int_equal(m.at[4u * B].given_up, 1);
+        assert_int_equal(m.at[4u * B].given_up, 0);
+        assert_int_equal(m.at[32].given_up, 8u - B); /* the claims after the B-th */
         assert_int_equal(m.at[71].crc_errors, 0);
         assert_int_equal(m.at[72].crc_errors, 1);
-        assert_int_equal(m.at[72u + 4u * (B - 1u)].crc_errors, B); /* B admitted, the others not looked at */
+        assert_int_equal(m.at[72u + 4u * (B - 1u)].crc_errors, B); /* B admitted, B checked */
         assert_int_equal(m.final.crc_errors, B);
+        assert_int_equal(m.final.given_up, 8u - B);
         assert_int_equal(m.final.length_errors, 0);
         assert_int_equal(m.nframes, 1);
         assert_int_equal(m.frames[0].start, f);
@@ -391,14 +381,14 @@ static void test_same_end(void **state)
     put_packet(&s, 72, 0x11); /* at 12, ends at 84 */
     run(&s, 1, 255, 0, &m);
     check_identities(&s, &m, 255);
-    assert_int_equal(m.at[3].given_up, 0);
-    assert_int_equal(m.at[4].given_up, 1);
+    assert_int_equal(m.at[15].given_up, 0);
+    assert_int_equal(m.at[16].given_up, 1); /* the frame's header */
     assert_int_equal(m.nframes, 0);
     assert_int_equal(m.final.crc_errors, 1);
     pr_free(&m);
     run(&s, 2, 255, 0, &m);
     check_identities(&s, &m, 255);
-    assert_int_equal(m.final.given_up, 1);
+    assert_int_equal(m.final.given_up, 0);
     assert_int_equal(m.at[84].crc_errors, 1);
     assert_int_equal(m.at[84].frames, 1);
     assert_int_equal(m.frames[0].start, 12);
@@ -575,7 +565,7 @@ int main(void)
         cmocka_unit_test(test_length_errors),
         cmocka_unit_test(test_first_come_first_served),
         cmocka_unit_test(test_k_false_ending_sooner),
-        cmocka_unit_test(test_credit),
+        cmocka_unit_test(test_slot_freed_by_check),
         cmocka_unit_test(test_same_end),
         cmocka_unit_test(test_truncated_then_intact),
         cmocka_unit_test(test_held_prefixes),

@@ -15,8 +15,8 @@
  *   receives GCU replies (72 or 73 bytes) may set 84 to save RAM; longer
  *   packets are then counted as length errors.
  * - ::XF_PARSER_SLOTS: candidates the parser checks at once, 1..16
- *   (default 4): more resist more crafted false headers, at 3 bytes of RAM
- *   each (docs/codec.md).
+ *   (default 4): more resist more crafted false headers, at 1 byte of RAM
+ *   each and more work per byte on such a stream (docs/codec.md).
  * - ::XF_ASSERT: define to check the codec's internal invariants (the tests
  *   and fuzzers do); by default it compiles to nothing.
  * - `XF_IMPLEMENTATION`: defined in exactly one translation unit (the
@@ -26,7 +26,7 @@
  *   1 for freestanding targets without a C library (riscv64-unknown-elf
  *   -nostdlib, say): small loops of our own, and `<string.h>` is never
  *   included.
- * - ::XF_MEMCPY, ::XF_MEMSET, ::XF_MEMCHR (xf_mem.h): define to use your own
+ * - ::XF_MEMCPY, ::XF_MEMMOVE, ::XF_MEMSET, ::XF_MEMCHR (xf_mem.h): define to use your own
  *   (an optimised or DMA copy).
  *
  * Every option is checked here: a value out of range stops the build with an
@@ -89,10 +89,10 @@
 #endif
 /**
  * Candidates (a header pair and a valid length) the parser checks at once,
- * 1..16 (default 4). A header that arrives while this many are pending is
- * not looked at (xf_parser_stats::given_up counts the times the parser
- * stops looking); the parser's credit allows four at once anyway, more only
- * as it checks bytes (docs/codec.md). Each slot costs 3 bytes of RAM.
+ * 1..16 (default 4). A valid header that arrives while this many are pending
+ * is not followed (xf_parser_stats::given_up counts them); the parser's
+ * worst cost per byte grows with it (docs/codec.md). Each slot costs 1 byte
+ * of RAM.
  */
 #ifndef XF_PARSER_SLOTS
 #define XF_PARSER_SLOTS 4
@@ -193,21 +193,12 @@
 #define XF_EMIT_DEFINITIONS 0
 #endif
 
-/* Internal: a function kept out of line (GCC, clang), so that its caller's
- * fast path needs no stack frame (the parser's one-byte feed). */
-/* Internal: a function inlined where it is called (GCC, clang), so that a
- * fast path written once serves two callers (the parser's one and two
- * bytes) without a call; left to the compiler when optimising for size
- * (-Os), where the copy would cost flash. */
+/* Internal: a function kept out of line (GCC, clang), so that its caller stays small: the
+ * parser's rare and bulk work, away from the byte it takes most often. */
 #if defined(__GNUC__)
-#define XF__COLD __attribute__((noinline)) static
+#define XF__NOINLINE __attribute__((noinline)) static
 #else
-#define XF__COLD static
-#endif
-#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
-#define XF__INLINE __attribute__((always_inline)) static inline
-#else
-#define XF__INLINE static inline
+#define XF__NOINLINE static
 #endif
 
 /**

@@ -40,91 +40,60 @@ XF_API uint16_t xf_crc16(const uint8_t *data, size_t len);
 #include "xf_crc_tables.h" /* generated: scripts/gen_crc_tables.py */
 
 /*
- * The CRC lives in the top half of a 32-bit register, with the table
- * entries pre-shifted to match: the next index is then simply the top bits
- * (no mask), and one shift both advances the CRC and drops what leaves it.
+ * The CRC lives in the top half of a 32-bit register, and each table entry
+ * goes there as it is read: the next index is then simply the top bits (no
+ * mask), and one shift both advances the CRC and drops what leaves it.
  * Data goes in by XOR at the top, a byte or four at a time: four bytes fill
  * the register, the two after the CRC's riding in its low half until they
  * are folded (instruction counts and sizes: docs/performance.md).
  */
 #if XF_CRC_TABLE_256
-#define XF__CRC_BITS 8u /* bits folded per lookup */
-static inline const uint32_t *xf__crc_table(void) { return xf__crc_table256; }
+#define XF__CRC_BITS 8u  /* bits folded per lookup */
+#define XF__CRC_UP   16u /* its 16-bit entries (512 bytes) go to the top half as they are read */
 #else
-#define XF__CRC_BITS 4u /* the vendor's table: the CRC of each 4-bit value, times 2^16 */
-static inline const uint32_t *xf__crc_table(void) { return xf__crc_table16; }
+#define XF__CRC_BITS 4u /* the vendor's table, its entries kept shifted up (64 bytes) */
+#define XF__CRC_UP   0u
 #endif
 
 /* Fold the top byte of c out through the table: one lookup, or two with
  * the nibble table. */
-static inline uint32_t xf__crc_fold(uint32_t c, const uint32_t *table)
+static inline uint32_t xf__crc_fold(uint32_t c)
 {
-    c = (c << XF__CRC_BITS) ^ table[c >> (32u - XF__CRC_BITS)];
+    c = (c << XF__CRC_BITS) ^ ((uint32_t)xf__crc_table[c >> (32u - XF__CRC_BITS)] << XF__CRC_UP);
 #if !XF_CRC_TABLE_256
-    c = (c << 4) ^ table[c >> 28];
+    c = (c << 4) ^ xf__crc_table[c >> 28];
 #endif
     return c;
 }
 
 /* One byte, the CRC in the top half of c. */
-static inline uint32_t xf__crc_step(uint32_t c, const uint32_t *table, uint8_t b)
-{
-    return xf__crc_fold(c ^ ((uint32_t)b << 24), table);
-}
+static inline uint32_t xf__crc_step(uint32_t c, uint8_t b) { return xf__crc_fold(c ^ ((uint32_t)b << 24)); }
 
 /* Four bytes, read big-endian into the whole register. */
-static inline uint32_t xf__crc_word(uint32_t c, const uint32_t *table, const uint8_t *d)
+static inline uint32_t xf__crc_word(uint32_t c, const uint8_t *d)
 {
     c ^= ((uint32_t)d[0] << 24) | ((uint32_t)d[1] << 16) | ((uint32_t)d[2] << 8) | d[3];
-    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c, table), table), table), table);
-}
-
-/* len bytes into a CRC kept in the top half of c (the parser keeps each
- * candidate's CRC in this form). */
-static inline uint32_t xf__crc_run(uint32_t c, const uint8_t *data, size_t len)
-{
-    const uint32_t *table = xf__crc_table();
-    size_t i = 0;
-    for (; i + 16u <= len; i += 16u) {
-        c = xf__crc_word(xf__crc_word(c, table, data + i), table, data + i + 4u);
-        c = xf__crc_word(xf__crc_word(c, table, data + i + 8u), table, data + i + 12u);
-    }
-    if (i + 8u <= len) {
-        c = xf__crc_word(xf__crc_word(c, table, data + i), table, data + i + 4u);
-        i += 8u;
-    }
-    if (i + 4u <= len) {
-        c = xf__crc_word(c, table, data + i);
-        i += 4u;
-    }
-    for (; i < len; i++) {
-        c = xf__crc_step(c, table, data[i]);
-    }
-    return c;
+    return xf__crc_fold(xf__crc_fold(xf__crc_fold(xf__crc_fold(c))));
 }
 
 XF_API uint16_t xf_crc16_update(uint16_t crc, const uint8_t *data, size_t len)
 {
-    return (uint16_t)(xf__crc_run((uint32_t)crc << 16, data, len) >> 16);
-}
-
-XF_API uint16_t xf_crc16(const uint8_t *data, size_t len) { return xf_crc16_update(0, data, len); }
-
-/* The CRC state a after n zero bytes, a * x^(8n) mod G: a product by x^128
- * (four lookups) per 16 bytes, the rest one by one. The parser checks a
- * candidate that began behind another with it (docs/codec.md). */
-static uint16_t xf__crc_zeros(uint16_t a, unsigned n)
-{
-    uint32_t c;
-    for (; n >= 16u; n -= 16u) {
-        const uint16_t(*m)[16] = xf__crc_zero16;
-        a = (uint16_t)(m[0][a & 15u] ^ m[1][(a >> 4) & 15u] ^ m[2][(a >> 8) & 15u] ^ m[3][a >> 12]);
+    uint32_t c = (uint32_t)crc << 16;
+    size_t i = 0;
+    for (; i + 16u <= len; i += 16u) { /* (unrolled: the loop costs more than a fold) */
+        c = xf__crc_word(xf__crc_word(c, data + i), data + i + 4u);
+        c = xf__crc_word(xf__crc_word(c, data + i + 8u), data + i + 12u);
     }
-    for (c = (uint32_t)a << 16; n > 0u; n--) {
-        c = xf__crc_step(c, xf__crc_table(), 0);
+    for (; i + 4u <= len; i += 4u) {
+        c = xf__crc_word(c, data + i);
+    }
+    for (; i < len; i++) {
+        c = xf__crc_step(c, data[i]);
     }
     return (uint16_t)(c >> 16);
 }
+
+XF_API uint16_t xf_crc16(const uint8_t *data, size_t len) { return xf_crc16_update(0, data, len); }
 
 #endif /* XF_EMIT_DEFINITIONS */
 

@@ -1,6 +1,6 @@
 /**
  * @file
- * @brief The three byte-block functions the codec and client use, from
+ * @brief The four byte-block functions the codec and client use, from
  * `<string.h>` or, with ::XF_NO_LIBC, from small loops of our own.
  *
  * Each can be replaced by defining the macro before any xfgcu header (or in
@@ -21,6 +21,23 @@ static inline void *xf__memcpy(void *dst, const void *src, size_t n)
     const uint8_t *s = (const uint8_t *)src;
     while (n-- > 0u) {
         *d++ = *s++;
+    }
+    return dst;
+}
+
+/* Overlapping blocks, the destination first (the only way the parser moves bytes). */
+static inline void *xf__memmove(void *dst, const void *src, size_t n)
+{
+    uint8_t *d = (uint8_t *)dst;
+    const uint8_t *s = (const uint8_t *)src;
+    if (d <= s) {
+        while (n-- > 0u) {
+            *d++ = *s++;
+        }
+    } else {
+        while (n-- > 0u) {
+            d[n] = s[n];
+        }
     }
     return dst;
 }
@@ -47,6 +64,9 @@ static inline void *xf__memchr(const void *src, int v, size_t n)
 #ifndef XF_MEMCPY
 #define XF_MEMCPY xf__memcpy
 #endif
+#ifndef XF_MEMMOVE
+#define XF_MEMMOVE xf__memmove
+#endif
 #ifndef XF_MEMSET
 #define XF_MEMSET xf__memset
 #endif
@@ -58,6 +78,10 @@ static inline void *xf__memchr(const void *src, int v, size_t n)
 /** The memcpy the codec and client use: memcpy, or a loop of ours with ::XF_NO_LIBC; define it to use your own. */
 #ifndef XF_MEMCPY
 #define XF_MEMCPY memcpy
+#endif
+/** The memmove the parser uses: memmove, or a loop of ours with ::XF_NO_LIBC; define it to use your own. */
+#ifndef XF_MEMMOVE
+#define XF_MEMMOVE memmove
 #endif
 /** The memset the codec and client use: memset, or a loop of ours with ::XF_NO_LIBC; define it to use your own. */
 #ifndef XF_MEMSET

@@ -146,6 +146,10 @@ static void test_bytes(void)
     b1[0] = 0x5A;
     CHECK(XF_MEMCHR(b1, 0x5A, sizeof(b1)) == (const void *)b1);
     CHECK(XF_MEMCHR(b4, 0x5A, sizeof(b4)) == NULL);
+    XF_MEMMOVE(b4, b4 + 1, 3); /* overlapping, down (how the parser moves bytes) then up */
+    CHECK(b4[0] == 0xE5u && b4[2] == 0x00u && b4[3] == 0x00u);
+    XF_MEMMOVE(b4 + 1, b4, 3);
+    CHECK(b4[0] == 0xE5u && b4[1] == 0xE5u && b4[3] == 0x00u);
 }
 
 /* ---- xf_crc.h ------------------------------------------------------------- */
@@ -1072,9 +1076,11 @@ static void test_parser_edges(void)
     i = p.stats.bytes_skipped;
     xf_parser_reset(&p);
     CHECK(xf_parser_pending(&p) == 0u && p.stats.bytes_skipped == i + 20u);
-    /* then a whole packet in one chunk: returned where it lies */
+    /* then a whole packet in one chunk: returned from the parser's own bytes, a copy */
     CHECK(xf_parser_feed(&p, vendor_packet, sizeof(vendor_packet), &used, &f) == XF_PARSE_FRAME);
-    CHECK(used == sizeof(vendor_packet) && f.data == vendor_packet && f.len == sizeof(vendor_packet));
+    CHECK(used == sizeof(vendor_packet) && f.len == sizeof(vendor_packet));
+    CHECK(f.data >= p.buf && f.data + f.len <= p.buf + sizeof(p.buf) && xf_crc16(f.data, f.len) == 0u &&
+          f.data[2] == vendor_packet[2] && f.data[70] == vendor_packet[70]);
     CHECK(p.stats.frames == 2u && p.stats.bytes_in == 72u + 7u + 20u + 72u);
 
     /* the frame decoders refuse what the parser would not return */
