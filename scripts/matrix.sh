@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 out=build/matrix
 mkdir -p "$out"
 warn=(-Wall -Wextra -Werror -pedantic-errors -Wconversion -Wshadow -Wundef -Wstrict-prototypes
-      -Wmissing-prototypes -Wcast-align -Wdouble-promotion -Wformat=2)
+      -Wmissing-prototypes -Wcast-align -Wcast-qual -Wdouble-promotion -Wformat=2)
 n=0
 for cc in gcc clang; do
   for std in c99 c11; do

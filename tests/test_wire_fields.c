@@ -239,13 +239,13 @@ static int units_value(const xf_wire_field *f, int32_t r, uint8_t version, doubl
 {
     float m = 0.0f;
     if (strcmp(f->unit, "deg/s") == 0) {
-        *out = xf_gcu_rate_dps((int16_t)r, version);
+        *out = (double)xf_gcu_rate_dps((int16_t)r, version);
     } else if (strcmp(f->unit, "deg") == 0) {
-        *out = (f->width == 4u) ? xf_deg7(r) : xf_cdeg(r);
+        *out = (f->width == 4u) ? xf_deg7(r) : (double)xf_cdeg(r);
     } else if (strcmp(f->unit, "x") == 0) {
-        *out = xf_zoom_x((uint16_t)r);
+        *out = (double)xf_zoom_x((uint16_t)r);
     } else if (strcmp(f->name, "target_distance") == 0) {
-        *out = xf_distance_m(r, &m) ? m : r / 10.0; /* the library's no-measurement: the table's number */
+        *out = xf_distance_m(r, &m) ? (double)m : r / 10.0; /* the library's no-measurement: the table's number */
     } else if (strcmp(f->unit, "m") == 0) {
         *out = r / 1000.0; /* xf_mm_raw's inverse */
     } else if (strcmp(f->unit, "m/s^2") == 0 || strcmp(f->unit, "m/s") == 0) {

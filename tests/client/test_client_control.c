@@ -144,7 +144,7 @@ static void test_head_lock_rates_integrate(void **state)
     xf_client_set_rates(&r->c, 0.0f, 0.0f, 0.0f, r->now);
     ct_run(r, 40);
     assert_near(r->s.pitch - p0, 10.0, 0.5);
-    assert_angle_near(r->s.yaw, y0 - 20.0, 1.0);
+    assert_angle_near(r->s.yaw, y0 - 20.0f, 1.0);
     ct_run(r, 400);
     assert_near(xf_cdeg(t->cam_pitch), r->s.pitch, 0.011);
     assert_angle_near(xf_cdeg(t->cam_yaw), r->s.yaw, 0.011);

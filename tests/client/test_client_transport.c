@@ -103,7 +103,8 @@ static size_t downs_since(const tx *t, size_t from)
 
 /* ---- fixture ------------------------------------------------------------------------- */
 
-static const xf_simlink_kind kinds[3] = {XF_SIMLINK_PTY, XF_SIMLINK_UDP, XF_SIMLINK_TCP};
+/* not const: cmocka hands each test its initial state as a void * */
+static xf_simlink_kind kinds[3] = {XF_SIMLINK_PTY, XF_SIMLINK_UDP, XF_SIMLINK_TCP};
 
 static int setup(void **state)
 {

@@ -553,7 +553,7 @@ static void test_v206_behaviours(void **state)
         f->now += 200;
         send_carrier(f, NULL, 9000, 0, NULL); /* the carrier turns to 90 deg */
     }
-    assert_near(ct_angle_diff(f->s.yaw, 90.0 + f->s.hold_yaw_offset), 0.0, 0.01);
+    assert_near(ct_angle_diff((double)f->s.yaw, 90.0 + (double)f->s.hold_yaw_offset), 0.0, 0.01);
     /* orthoview straight from head lock: yaw stays */
     xf_command_init(&cmd, XF_ORDER_HEAD_LOCK);
     send_carrier(f, &cmd, 9000, 0, NULL);

@@ -311,7 +311,7 @@ static void test_rates_by_main_screen_zoom(void **state)
             f->now += 100;
             send_carrier(f, NULL, 0, 100, &r);
         }
-        assert_near(ct_angle_diff(f->s.yaw, yaw), cam == 2 ? 2.5 : 10.0, 0.01);
+        assert_near(ct_angle_diff((double)f->s.yaw, (double)yaw), cam == 2 ? 2.5 : 10.0, 0.01);
         assert_near(xf_gcu_rate_dps(r.main.rate_z, r.version), cam == 2 ? 2.5 : 10.0, 0.02);
     }
     xf_sim_set_main_camera(&f->s, 7); /* no such camera: camera 1 */

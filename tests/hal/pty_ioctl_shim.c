@@ -18,6 +18,7 @@
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
@@ -53,8 +54,11 @@ int ioctl(int fd, unsigned long request, ...)
     arg = va_arg(ap, void *);
     va_end(ap);
     if (real == NULL) {
-        real = (ioctl_fn)dlsym(RTLD_NEXT, "ioctl");
-        if (real == NULL) {
+        /* POSIX makes dlsym's answer a function's address; ISO C has no conversion from an
+         * object pointer to a function pointer, so its bits are copied. */
+        void *sym = dlsym(RTLD_NEXT, "ioctl");
+        memcpy(&real, &sym, sizeof(real));
+        if (sym == NULL) {
             errno = ENOSYS;
             return -1;
         }

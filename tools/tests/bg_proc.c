@@ -41,7 +41,8 @@ void sleep_ms(long ms)
  * spawn (the child inherits it; the test's own files are not limited). */
 static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
 {
-    char *argv[40];
+    const char *args[40];
+    char **argv;
     int argc = 0, rc;
     posix_spawn_file_actions_t fa;
     struct rlimit was, lim;
@@ -53,11 +54,10 @@ static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
     f = fopen(b->out, "w"); /* there for bg_finish() even when stdout goes elsewhere */
     assert_non_null(f);
     fclose(f);
-    argv[argc++] = (char *)XFGCU_EXE;
     while ((a = va_arg(ap, const char *)) != NULL && argc < 38) {
-        argv[argc++] = (char *)a;
+        args[argc++] = a;
     }
-    argv[argc] = NULL;
+    argv = spawn_argv(argc, args);
     assert_int_equal(posix_spawn_file_actions_init(&fa), 0);
     if (o->stdin_fd >= 0) {
         posix_spawn_file_actions_adddup2(&fa, o->stdin_fd, 0);
@@ -88,6 +88,7 @@ static void bg_spawn(bg *b, const bg_opts *o, const char *tag, va_list ap)
         assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
     }
     rc = posix_spawn(&b->pid, XFGCU_EXE, &fa, NULL, argv, environ);
+    free(argv);
     assert_int_equal(setrlimit(RLIMIT_FSIZE, &was), 0);
     posix_spawn_file_actions_destroy(&fa);
     if (err_end >= 0) {

@@ -67,17 +67,33 @@ static void make_pipe(int fds[2])
     assert_int_not_equal(fcntl(fds[1], F_SETFD, FD_CLOEXEC), -1);
 }
 
+char **spawn_argv(int argc, const char *const *args)
+{
+    size_t bytes = ((size_t)argc + 2u) * sizeof(char *) + sizeof(XFGCU_EXE);
+    char **argv;
+    char *text;
+    int i;
+    for (i = 0; i < argc; i++) {
+        bytes += strlen(args[i]) + 1u;
+    }
+    argv = malloc(bytes);
+    assert_non_null(argv);
+    text = (char *)(argv + argc + 2);
+    argv[0] = strcpy(text, XFGCU_EXE);
+    text += sizeof(XFGCU_EXE);
+    for (i = 0; i < argc; i++) {
+        argv[i + 1] = strcpy(text, args[i]);
+        text += strlen(args[i]) + 1u;
+    }
+    argv[argc + 1] = NULL;
+    return argv;
+}
+
 static pid_t spawn(int argc, const char *const *args, int in[2], int out[2], int err[2])
 {
     posix_spawn_file_actions_t fa;
-    char **argv = calloc((size_t)argc + 2u, sizeof(*argv));
+    char **argv = spawn_argv(argc, args);
     pid_t pid = 0;
-    int i;
-    assert_non_null(argv);
-    argv[0] = (char *)XFGCU_EXE;
-    for (i = 0; i < argc; i++) {
-        argv[i + 1] = (char *)args[i];
-    }
     assert_int_equal(posix_spawn_file_actions_init(&fa), 0);
     posix_spawn_file_actions_adddup2(&fa, in[0], 0);
     posix_spawn_file_actions_adddup2(&fa, out[1], 1);

@@ -25,6 +25,13 @@ tool_result run_tool_bytes(int argc, const char *const *args, const char *input,
 tool_result run_tool(const char *input, ...);
 void tool_result_free(tool_result *r);
 
+/**
+ * The argv that posix_spawn() takes (char *const[], NULL-terminated): XFGCU_EXE then the @p argc
+ * strings of @p args, copied into one allocation with the pointers, so that no const is cast
+ * away. The caller free()s it.
+ */
+char **spawn_argv(int argc, const char *const *args);
+
 /** Number of lines (newline-terminated) in @p text. */
 size_t count_lines(const char *text);
 /**

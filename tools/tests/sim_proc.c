@@ -82,17 +82,18 @@ static int read_line(int fd, char *buf, size_t cap, long ms)
     return -1;
 }
 
-static pid_t spawn_sim(int argc, char **argv, int out[2])
+static pid_t spawn_sim(int argc, const char *const *args, int out[2])
 {
     posix_spawn_file_actions_t fa;
+    char **argv = spawn_argv(argc, args);
     pid_t pid = 0;
     int rc;
-    (void)argc;
     assert_int_equal(posix_spawn_file_actions_init(&fa), 0);
     posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_adddup2(&fa, out[1], 1);
     rc = posix_spawn(&pid, XFGCU_EXE, &fa, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
+    free(argv);
     assert_int_equal(rc, 0);
     return pid;
 }
@@ -138,7 +139,7 @@ static void parse_ready(sim_proc *s)
 
 void sim_start(sim_proc *s, sim_link link, ...)
 {
-    char *argv[40];
+    const char *argv[40];
     int argc = 0, out[2];
     va_list ap;
     const char *a;
@@ -149,20 +150,18 @@ void sim_start(sim_proc *s, sim_link link, ...)
     }
     memset(s, 0, sizeof(*s));
     s->link = link;
-    argv[argc++] = (char *)XFGCU_EXE;
-    argv[argc++] = (char *)"sim";
-    argv[argc++] = (char *)(link == SIM_TCP ? "--tcp" : link == SIM_UDP ? "--udp" : "--pty");
+    argv[argc++] = "sim";
+    argv[argc++] = link == SIM_TCP ? "--tcp" : link == SIM_UDP ? "--udp" : "--pty";
     if (link != SIM_PTY) {
-        argv[argc++] = (char *)"0";
+        argv[argc++] = "0";
     }
-    argv[argc++] = (char *)"--duration";
-    argv[argc++] = (char *)SIM_LIFETIME;
+    argv[argc++] = "--duration";
+    argv[argc++] = SIM_LIFETIME;
     va_start(ap, link);
     while ((a = va_arg(ap, const char *)) != NULL && argc < 38) {
-        argv[argc++] = (char *)a;
+        argv[argc++] = a;
     }
     va_end(ap);
-    argv[argc] = NULL;
     assert_int_equal(pipe(out), 0);
     fcntl(out[0], F_SETFD, FD_CLOEXEC);
     fcntl(out[1], F_SETFD, FD_CLOEXEC);

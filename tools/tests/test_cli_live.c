@@ -423,13 +423,14 @@ static void test_monitor_terminal(void **state)
     char port[8];
     int master = posix_openpt(O_RDWR | O_NOCTTY), slave, wstatus = 0;
     posix_spawn_file_actions_t fa;
-    const char *argv[] = {XFGCU_EXE, "--udp",     "127.0.0.1", "--gcu-port", NULL, "--local-port",
-                          "0",       "--timeout", "200",       "monitor",    NULL};
+    const char *args[] = {"--udp", "127.0.0.1", "--gcu-port", NULL, "--local-port", "0", "--timeout", "200", "monitor"};
+    char **argv;
     pid_t pid;
     bg sim;
     (void)state;
     free_port(SOCK_DGRAM, port, sizeof(port));
-    argv[4] = port;
+    args[3] = port;
+    argv = spawn_argv((int)(sizeof(args) / sizeof(args[0])), args);
     assert_true(master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0);
     slave = open(ptsname(master), O_RDWR | O_NOCTTY);
     assert_true(slave >= 0);
@@ -437,8 +438,9 @@ static void test_monitor_terminal(void **state)
     posix_spawn_file_actions_adddup2(&fa, slave, 0);
     posix_spawn_file_actions_adddup2(&fa, slave, 1);
     posix_spawn_file_actions_adddup2(&fa, slave, 2);
-    assert_int_equal(posix_spawn(&pid, XFGCU_EXE, &fa, NULL, (char *const *)argv, environ), 0);
+    assert_int_equal(posix_spawn(&pid, XFGCU_EXE, &fa, NULL, argv, environ), 0);
     posix_spawn_file_actions_destroy(&fa);
+    free(argv);
     close(slave);
     seen[0] = '\0';
     pty_read_until(master, seen, sizeof(seen), 20000, "Ctrl-C to stop", NULL); /* past --timeout */

@@ -481,7 +481,7 @@ static void test_capture_replay(void **state)
     /* what the summary counted is in the file, each answered; 50 packets per second: never more,
      * and not a fifth of it fewer even on a loaded machine */
     assert_true(host == sent && gcu == received && host - gcu <= 2);
-    assert_true(host <= 50.0 * secs + 2.0 && host >= 10);
+    assert_true((double)host <= 50.0 * secs + 2.0 && host >= 10);
     tool_result_free(&r);
     r = run_tool(NULL, "replay", file, "--brief", NULL);
     assert_int_equal(r.status, 0);

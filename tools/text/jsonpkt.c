@@ -257,7 +257,7 @@ json_t *jsonpkt_parse(const char *text, size_t len, const char *where, text_err 
 /* ---- input ----------------------------------------------------------------- */
 
 typedef struct reader {
-    const json_t *obj;
+    json_t *obj; /* not changed: jansson's key iteration takes a non-const object */
     const char *where;
     text_err *err;
     text_view view;
@@ -292,7 +292,7 @@ static int check_keys(const reader *r)
     const char *key;
     json_t *value;
     const char *side = (r->dir == XF_DIR_HOST) ? "host" : "gcu";
-    json_object_foreach((json_t *)r->obj, key, value)
+    json_object_foreach(r->obj, key, value)
     {
         const xf_wire_field *f = xf_wire_field_find(xf_wire_frames(r->dir), key);
         (void)value;
@@ -442,7 +442,7 @@ static int command_member(const reader *r, const xf_order_info *info, const char
 }
 
 /* Parameters from a "command" object: missing members take xf_command_init's defaults. */
-static int params_from_command(const reader *r, const json_t *c, uint8_t *out, size_t *n)
+static int params_from_command(const reader *r, json_t *c, uint8_t *out, size_t *n)
 {
     const xf_order_info *info = xf_order_lookup(r->order);
     const char *key;
@@ -458,7 +458,7 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
         return text_fail(r->err, r->where, "command must be an object of %s's parameters", xf_order_name(info->order));
     }
     xf_command_init(&cmd, r->order);
-    json_object_foreach((json_t *)c, key, value)
+    json_object_foreach(c, key, value)
     {
         xf_field f = XF_F_CAMERAS;
         int64_t v = 0;
@@ -483,7 +483,7 @@ static int params_from_command(const reader *r, const json_t *c, uint8_t *out, s
 /* Host: "command" builds the params when they are absent, and must agree with them when present. */
 static int read_command(reader *r)
 {
-    const json_t *c = json_object_get(r->obj, "command");
+    json_t *c = json_object_get(r->obj, "command");
     uint8_t bytes[XF_PARAMS_MAX];
     size_t n = 0;
     int rc;
@@ -613,7 +613,7 @@ static xf_err pack(xf_direction dir, const xf_host_packet *host, const xf_gcu_pa
     return (dir == XF_DIR_HOST) ? xf_host_pack(host, out, cap, len) : xf_gcu_pack(gcu, out, cap, len);
 }
 
-int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
+int jsonpkt_to_wire(json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
                     size_t cap, size_t *len, text_err *e)
 {
     reader r;

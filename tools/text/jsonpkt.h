@@ -41,9 +41,10 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_
 /**
  * Build the packet an object describes, its fields in @p view, into @p out (capacity @p cap, at
  * least XF_PACKET_MAX_LEN). @p where names the object's origin in messages ("encode --json",
- * "stdin line 3"). @return TEXT_OK, or TEXT_BAD with @p e saying why.
+ * "stdin line 3"). @p obj is not changed (it is not const because jansson's key iteration takes
+ * a non-const object). @return TEXT_OK, or TEXT_BAD with @p e saying why.
  */
-int jsonpkt_to_wire(const json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
+int jsonpkt_to_wire(json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
                     size_t cap, size_t *len, text_err *e);
 
 /**

@@ -465,7 +465,7 @@ static void point_leg(probe *p, const char *what, double pitch, double yaw)
 /* After neutral: wait until the attitude has stopped changing. */
 static void settle_leg(probe *p)
 {
-    probe_leg *l = new_leg(p, "neutral, until at rest", NAN, NAN);
+    probe_leg *l = new_leg(p, "neutral, until at rest", (double)NAN, (double)NAN); /* NAN is a float */
     uint32_t start = xf_posix_now_ms(), still = start, now = start;
     double pitch = pitch_now(p), yaw = yaw_now(p);
     while (!stop_now(p) && xf_ms_since(now, start) < SETTLE_MS && xf_ms_since(now, still) < STILL_MS) {
