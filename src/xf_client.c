@@ -76,17 +76,30 @@ static int xf__config_fault(const xf_client_config *cfg, xf_client_timing *t)
     return (cfg->command_timeout_ms < t->round_trip_ms) ? 4 : 0;
 }
 
+/* The @p i-th (from 0) of the NUL-ended texts packed in @p texts. The texts of a function are one
+ * array, not a literal each: literals share one section of this file, which a firmware that
+ * links any of them keeps whole. */
+static const char *xf__nth_text(const char *texts, unsigned i)
+{
+    for (; i > 0u; i--) {
+        while (*texts++ != '\0') {
+        }
+    }
+    return texts;
+}
+
+/* The lines of xf__config_fault(), 1 first. */
+static const char xf__config_lines[] =
+    "rate_hz: 1..200\0"
+    "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000; version_auto: 0 or 1\0"
+    "stale_ms: > 1000 / rate_hz + 2 reorder_ms (stale between packets); down_ms: > stale_ms\0"
+    "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)";
+
 const char *xf_client_config_problem(const xf_client_config *cfg)
 {
-    static const char *const lines[] = {
-        NULL,
-        "rate_hz: 1..200",
-        "protocol_version, operating_timeout_ms: >= 1; reorder_ms: <= 1000; version_auto: 0 or 1",
-        "stale_ms: > 1000 / rate_hz + 2 reorder_ms (stale between packets); down_ms: > stale_ms",
-        "command_timeout_ms: >= 2000 / rate_hz + 2 reorder_ms (a round trip)",
-    };
     xf_client_timing t;
-    return (cfg == NULL) ? NULL : lines[xf__config_fault(cfg, &t)]; /* NULL: the defaults */
+    int fault = (cfg == NULL) ? 0 : xf__config_fault(cfg, &t); /* NULL: the defaults */
+    return (fault == 0) ? NULL : xf__nth_text(xf__config_lines, (unsigned)fault - 1u);
 }
 
 static void xf__set_bound(xf_client *c);
@@ -165,8 +178,8 @@ static void xf__publish(xf_client *c, const xf_cmd_result *r)
     }
 }
 
-/* The result of the queue's head. */
-static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r)
+/* The result of the queue's head, with what the GCU's reply @p fb said (NULL: no reply). */
+static void xf__result_of(const xf_client *c, xf_cmd_status st, const xf_feedback *fb, xf_cmd_result *r)
 {
     XF_MEMSET(r, 0, sizeof(*r));
     r->id = xf__queued_id(c, 0);
@@ -175,6 +188,10 @@ static void xf__result_of(const xf_client *c, xf_cmd_status st, xf_cmd_result *r
     r->elapsed_ms = xf_ms_since(c->now_ms, c->head_ms); /* since first sent; never sent: how long it waited */
     if (c->active) {
         r->packets = c->packets;
+    }
+    if (fb != NULL) {
+        r->state = fb->state;
+        r->failed_cameras = fb->failed_cameras;
     }
 }
 
@@ -194,11 +211,7 @@ static void xf__guard(xf_client *c, uint8_t order, int wait)
 static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
 {
     xf_cmd_result r;
-    xf__result_of(c, st, &r);
-    if (fb != NULL) {
-        r.state = fb->state;
-        r.failed_cameras = fb->failed_cameras;
-    }
+    xf__result_of(c, st, fb, &r);
     if (c->active) {
         c->nulls_owed = 1; /* back to null packets: the next command of any order is separated */
         /* Replies of this order may still be in flight, unless every packet that carried it has
@@ -397,8 +410,7 @@ static void xf__match(xf_client *c, const xf_frame *f)
             xf_cmd_result r;
             c->operating = 1;
             c->operating_ms = c->now_ms;
-            xf__result_of(c, XF_CMD_OPERATING, &r);
-            r.state = fb.state;
+            xf__result_of(c, XF_CMD_OPERATING, &fb, &r);
             xf__publish(c, &r);
         }
         break;
@@ -451,7 +463,7 @@ static void xf__set_bound(xf_client *c)
 /* @p n replies came out of turn or twice (docs/protocol.md §7.4): counted, and the link is no
  * longer taken to keep order; for good when @p proof (a reply no link that keeps order and does
  * not duplicate can deliver), else until it has been steady again (XF__STEADY periods). */
-static void xf__out_of_turn(xf_client *c, uint32_t n, int proof)
+XF__NOINLINE void xf__out_of_turn(xf_client *c, uint32_t n, int proof)
 {
     c->health.out_of_turn += n;
     c->health.in_order = 0;
@@ -613,6 +625,7 @@ static xf_err xf__receive(xf_client *c)
 
 /* The runs the loops below write as consecutive 16-bit words. */
 XF_STATIC_ASSERT(XF_OFF_HOST_YAW_CTRL == XF_OFF_HOST_ROLL_CTRL + 4u, control_words_in_a_row);
+XF_STATIC_ASSERT(XF_OFF_HOST_RELATIVE_HEIGHT + 4u == XF_OFF_HOST_LONGITUDE + XF__GNSS_BYTES, gnss_bytes_in_a_row);
 XF_STATIC_ASSERT(XF_OFF_HOST_VEL_UP == XF_OFF_HOST_CARRIER_ROLL + 2u * (XF__CARRIER_WORDS - 1u),
                  carrier_words_in_a_row);
 
@@ -638,18 +651,11 @@ static void xf__put_carrier(const xf_client *c, uint8_t *buf)
 
 static void xf__put_gnss(const xf_client *c, uint8_t *buf)
 {
-    const xf_gnss *g = &c->gnss;
     if (!c->have_gnss || xf_ms_since(c->now_ms, c->gnss_ms) > c->cfg.gnss_max_age_ms) {
         return; /* "no sub frame data": bytes 37-68 all zero */
     }
     buf[XF_OFF_HOST_SUB_HEADER] = XF_SUB_HEADER;
-    xf__put_le(buf + XF_OFF_HOST_LONGITUDE, (uint32_t)g->longitude_e7, 4);
-    xf__put_le(buf + XF_OFF_HOST_LATITUDE, (uint32_t)g->latitude_e7, 4);
-    xf__put_le(buf + XF_OFF_HOST_ALTITUDE, (uint32_t)g->altitude_mm, 4);
-    buf[XF_OFF_HOST_SATELLITES] = g->satellites;
-    xf__put_le(buf + XF_OFF_HOST_GNSS_MS, g->ms_of_week, 4);
-    xf__put_le(buf + XF_OFF_HOST_GNSS_WEEK, (uint16_t)g->week, 2);
-    xf__put_le(buf + XF_OFF_HOST_RELATIVE_HEIGHT, (uint32_t)g->relative_height_mm, 4);
+    XF_MEMCPY(buf + XF_OFF_HOST_LONGITUDE, c->gnss, XF__GNSS_BYTES);
 }
 
 /* The kind of control quantities a mode reads (docs/protocol.md §11.1). */
@@ -686,8 +692,11 @@ static int xf__order_holds_ctrl(uint8_t order)
 xf_ctrl_status xf_client_control_status(const xf_client *c)
 {
     uint8_t reads;
-    if (c == NULL || c->ctrl_kind == XF__CTRL_NONE || c->ctrl_kind == XF__CTRL_DROPPED) {
-        return (c != NULL && c->ctrl_kind == XF__CTRL_DROPPED) ? XF_CTRL_DROPPED : XF_CTRL_NOT_SET;
+    if (c == NULL || c->ctrl_kind == XF__CTRL_NONE) {
+        return XF_CTRL_NOT_SET;
+    }
+    if (c->ctrl_kind == XF__CTRL_DROPPED) {
+        return XF_CTRL_DROPPED;
     }
     if (c->active && xf__order_holds_ctrl(c->queue[c->q_head].order)) {
         return XF_CTRL_COMMAND;
@@ -706,34 +715,33 @@ xf_ctrl_status xf_client_control_status(const xf_client *c)
  * read as what the application set; else zeros with ctrl_valid clear. */
 static void xf__put_control(xf_client *c, uint8_t *buf)
 {
-    int16_t v[3] = {0, 0, 0};
     size_t i;
+    float zoom;
+    int tripped;
     if (xf_client_control_status(c) != XF_CTRL_SENT) {
         return;
     }
     c->ctrl_mode = c->tele.gimbal_mode; /* the mode that reads it: a change drops it */
     buf[XF_OFF_HOST_STATUS] |= XF_STATUS_CTRL_VALID;
-    if (c->ctrl_kind == XF__CTRL_ANGLES) {
-        /* Roll and yaw go round: 240 deg is -120 deg, not a clamped 180. */
-        v[0] = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[0], -180.0f));
-        v[1] = xf_ctrl_angle_raw(c->ctrl[1]);
-        v[2] = xf_ctrl_angle_raw(xf_units_wrap360f(c->ctrl[2], -180.0f));
-    } else if (c->cfg.rate_watchdog_ms != 0u && xf_ms_since(c->now_ms, c->ctrl_ms) > c->cfg.rate_watchdog_ms) {
-        if (!c->health.watchdog_active) {
-            c->health.watchdog_active = 1;
-            c->health.watchdog_trips++;
-        }
-        /* zero rates, still valid: the gimbal holds still */
-    } else {
-        /* One raw unit is 0.1 deg/s divided by the main screen's zoom. */
-        float zoom =
-            xf_zoom_x((c->main_camera == 2u) ? c->tele.zoom_cam2 : c->tele.zoom_cam1); /* 0 before a sub frame: 1 */
-        for (i = 0; i < 3u; i++) {
-            v[i] = xf_ctrl_rate_raw(c->ctrl[i], zoom);
-        }
+    /* Rates not renewed within rate_watchdog_ms: zero rates, still valid, and the gimbal holds still. */
+    tripped = c->ctrl_kind == XF__CTRL_RATES && c->cfg.rate_watchdog_ms != 0u &&
+              xf_ms_since(c->now_ms, c->ctrl_ms) > c->cfg.rate_watchdog_ms;
+    if (tripped && !c->health.watchdog_active) {
+        c->health.watchdog_active = 1;
+        c->health.watchdog_trips++;
     }
-    for (i = 0; i < 3u; i++) {
-        xf__put_le(buf + XF_OFF_HOST_ROLL_CTRL + 2u * i /* roll, pitch, yaw */, (uint16_t)v[i], 2);
+    /* One raw unit of rate is 0.1 deg/s divided by the main screen's zoom (0 before a sub frame: 1). */
+    zoom = xf_zoom_x((c->main_camera == 2u) ? c->tele.zoom_cam2 : c->tele.zoom_cam1);
+    for (i = 0; i < 3u; i++) { /* roll, pitch, yaw */
+        float q = c->ctrl[i];
+        int16_t v;
+        if (c->ctrl_kind == XF__CTRL_ANGLES) {
+            /* Roll and yaw go round: 240 deg is -120 deg, not a clamped 180. */
+            v = xf_ctrl_angle_raw((i == 1u) ? q : xf_units_wrap360f(q, -180.0f));
+        } else {
+            v = tripped ? 0 : xf_ctrl_rate_raw(q, zoom);
+        }
+        xf__put_le(buf + XF_OFF_HOST_ROLL_CTRL + 2u * i, (uint16_t)v, 2);
     }
 }
 
@@ -883,20 +891,17 @@ static xf_err xf__send(xf_client *c)
     return XF_OK;
 }
 
+/* A command that ran too long ends: since it was first sent, or since the GCU said "operating".
+ * One that never started ends after twice the timeout: no reply to a null yet, or the last
+ * command's replies never settled (the guard gives up waiting for those after one). */
 static void xf__check_timeouts(xf_client *c)
 {
-    uint32_t limit, since;
+    uint32_t since = xf_ms_since(c->now_ms, c->operating ? c->operating_ms : c->head_ms);
+    uint32_t limit = c->operating ? c->cfg.operating_timeout_ms : c->cfg.command_timeout_ms;
     if (!c->active) {
-        if (c->q_count > 0u && xf_ms_since(c->now_ms, c->head_ms) / 2u >= c->cfg.command_timeout_ms) {
-            /* never started: no reply to a null yet, or the last command's replies never settled
-             * (twice the timeout: the guard gives up waiting for those after one) */
-            xf__finish(c, (c->health.link == XF_LINK_DOWN) ? XF_CMD_LINK_LOST : XF_CMD_TIMEOUT, NULL);
-        }
-        return;
+        since = (c->q_count > 0u) ? since / 2u : 0u; /* (0 < limit: xf__config_fault()) */
     }
-    since = c->operating ? c->operating_ms : c->head_ms;
-    limit = c->operating ? c->cfg.operating_timeout_ms : c->cfg.command_timeout_ms;
-    if (xf_ms_since(c->now_ms, since) >= limit) {
+    if (since >= limit) {
         xf__finish(c, (c->health.link == XF_LINK_DOWN) ? XF_CMD_LINK_LOST : XF_CMD_TIMEOUT, NULL);
     }
 }
@@ -963,7 +968,15 @@ void xf_client_set_carrier(xf_client *c, const xf_carrier *carrier, uint32_t now
 void xf_client_set_gnss(xf_client *c, const xf_gnss *gnss, uint32_t now_ms)
 {
     if (c != NULL && gnss != NULL) {
-        c->gnss = *gnss;
+#define XF__GNSS_AT(off) (c->gnss + ((off)-XF_OFF_HOST_LONGITUDE)) /* a field at its wire offset */
+        xf__put_le(XF__GNSS_AT(XF_OFF_HOST_LONGITUDE), (uint32_t)gnss->longitude_e7, 4);
+        xf__put_le(XF__GNSS_AT(XF_OFF_HOST_LATITUDE), (uint32_t)gnss->latitude_e7, 4);
+        xf__put_le(XF__GNSS_AT(XF_OFF_HOST_ALTITUDE), (uint32_t)gnss->altitude_mm, 4);
+        *XF__GNSS_AT(XF_OFF_HOST_SATELLITES) = gnss->satellites;
+        xf__put_le(XF__GNSS_AT(XF_OFF_HOST_GNSS_MS), gnss->ms_of_week, 4);
+        xf__put_le(XF__GNSS_AT(XF_OFF_HOST_GNSS_WEEK), (uint16_t)gnss->week, 2);
+        xf__put_le(XF__GNSS_AT(XF_OFF_HOST_RELATIVE_HEIGHT), (uint32_t)gnss->relative_height_mm, 4);
+#undef XF__GNSS_AT
         c->gnss_ms = now_ms;
         c->have_gnss = 1;
     }
@@ -1252,27 +1265,23 @@ xf_err xf_telemetry_convert(const xf_telemetry *t, xf_telemetry_units *u)
 }
 xf_link_state xf_client_link(const xf_client *c) { return (c == NULL) ? XF_LINK_DOWN : c->health.link; }
 
+/* The names of xf_link_state's values, in their order (0: down). */
+static const char xf__link_names[] = "down\0stale\0up";
+XF_STATIC_ASSERT(XF_LINK_DOWN == 0 && XF_LINK_STALE == 1 && XF_LINK_UP == 2, link_names_in_order);
+
 const char *xf_link_state_name(xf_link_state s)
 {
-    switch (s) {
-    case XF_LINK_UP: return "up";
-    case XF_LINK_STALE: return "stale";
-    default: return "down";
-    }
+    return xf__nth_text(xf__link_names, ((unsigned)s <= (unsigned)XF_LINK_UP) ? (unsigned)s : 0u);
 }
+
+/* The names of xf_cmd_status's values, in their order (0: unknown). */
+static const char xf__cmd_status_names[] =
+    "unknown\0queued\0sending\0operating\0ok\0failed\0timeout\0link lost\0cancelled\0refused";
+XF_STATIC_ASSERT(XF_CMD_UNKNOWN == 0 && XF_CMD_QUEUED == 1 && XF_CMD_OK == 4 && XF_CMD_LINK_LOST == 7 &&
+                     XF_CMD_REFUSED == 9,
+                 cmd_status_names_in_order);
 
 const char *xf_cmd_status_name(xf_cmd_status s)
 {
-    switch (s) {
-    case XF_CMD_QUEUED: return "queued";
-    case XF_CMD_SENDING: return "sending";
-    case XF_CMD_OPERATING: return "operating";
-    case XF_CMD_OK: return "ok";
-    case XF_CMD_FAILED: return "failed";
-    case XF_CMD_TIMEOUT: return "timeout";
-    case XF_CMD_LINK_LOST: return "link lost";
-    case XF_CMD_CANCELLED: return "cancelled";
-    case XF_CMD_REFUSED: return "refused";
-    default: return "unknown";
-    }
+    return xf__nth_text(xf__cmd_status_names, ((unsigned)s <= (unsigned)XF_CMD_REFUSED) ? (unsigned)s : 0u);
 }

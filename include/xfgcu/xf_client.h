@@ -406,50 +406,19 @@ typedef struct xf_cmd_record {
  * north, east, up; xf_host_main's units), converted once by
  * xf_client_set_carrier rather than kept as nine floats. */
 #define XF__CARRIER_WORDS 9u
+/* GNSS data as it goes on the wire: host bytes 38-60 (longitude .. relative height), written once
+ * by xf_client_set_gnss. */
+#define XF__GNSS_BYTES 23u
 
 /**
  * Client state: treat the members as private; use the functions. The
- * members are grouped by size (4, 2, then 1 byte), so that a 32-bit target
- * pads none of them.
+ * members are grouped by size (1, 2, then 4 bytes, the structs last), so
+ * that a 32-bit target pads none of them, and the ones the client reads
+ * most come first: a Cortex-M's 2-byte load reaches the first 32 bytes of a
+ * struct (bytes), 64 (halfwords) or 128 (words), beyond them it takes 4.
  */
 typedef struct xf_client {
-    xf_client_config cfg; /**< private: the configuration (a copy) */
-    xf_hal hal;           /**< private: the link (a copy) */
-    xf_parser parser;     /**< private: parser of the GCU's replies */
-    xf_telemetry tele;    /**< private: xf_client_telemetry() */
-    xf_health health;     /**< private: xf_client_health() */
-    xf_gnss gnss;         /**< private: the last GNSS data */
-    /* times, on xf_client_step's clock */
-    /** @var xf_client::gnss_ms
-     *  private: when the GNSS data was set */
-    /** @var xf_client::carrier_ms
-     *  private: when the carrier state was set */
-    uint32_t gnss_ms, carrier_ms, ctrl_ms; /**< private: when the control quantities were set */
-    uint32_t operating_ms;                 /**< private: when the GCU said "operating" */
-    uint32_t now_ms;                       /**< private: the time of the current step */
-    uint32_t next_send_ms;                 /**< private: when the next packet is due */
-    uint32_t window_start_ms;              /**< private: start of the current one-second window */
-    /** @var xf_client::last_tx_ms
-     *  private: when the last packet went out */
-    /** @var xf_client::sync_ms
-     *  private: when synced became 1 */
-    /** @var xf_client::head_ms
-     *  private: when the queue's head began to wait, or (running) was first sent */
-    uint32_t last_tx_ms, sync_ms, head_ms;
-    uint32_t guard_ms;                        /**< private: when the guard opened */
-    uint32_t version_ms;                      /**< private: when the client began to send the version it sends now */
-    uint32_t next_id;                         /**< private: the id the next submitted command gets; never 0 */
-    float ctrl[3];                            /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
-    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
-    uint16_t carrier[XF__CARRIER_WORDS];      /**< private: carrier state as it goes on the wire */
-    /** @var xf_client::window_sent
-     *  private: packets sent in the window */
-    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
-    uint16_t period_ms;                   /**< private: ms between packets */
-    uint16_t packets;                     /**< private: packets that carried the running command */
-    uint16_t answered;                    /**< private: replies of the running command's order so far */
     /* commands */
-    xf_cmd_slot queue[XF_CLIENT_QUEUE]; /**< private: commands queued or running, a ring */
     /** @var xf_client::q_head
      *  private: index of the oldest queued command */
     uint8_t q_head, q_count; /**< private: commands in the queue */
@@ -463,9 +432,7 @@ typedef struct xf_client {
                             reorder_ms or guard_multi) */
     uint8_t guard_wait;  /**< private: a reply of guard_order must come first (none had come when it ended) */
     uint8_t guard_multi; /**< private: the guard holds for every order (another guard was still open) */
-    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
-    uint8_t stream_on; /**< private: the external-track stream is on */
-    uint8_t stream[6]; /**< private: the stream's encoded parameters */
+    uint8_t stream_on;   /**< private: the external-track stream is on */
     /* inputs */
     /** @var xf_client::have_carrier
      *  private: carrier state was set */
@@ -489,6 +456,44 @@ typedef struct xf_client {
     /** @var xf_client::phase_ms
      *  private: the time from packet to reply in the first of the steady periods (xf__judge_round) */
     uint8_t phase_ms, round_rtt; /**< private: the time from the last packet to the first reply since; 255: later */
+    /* streamed external track: its parameter bytes, encoded once (order 0x1B's are 6) */
+    uint8_t stream[6]; /**< private: the stream's encoded parameters */
+    /** @var xf_client::window_sent
+     *  private: packets sent in the window */
+    uint16_t window_sent, window_replies; /**< private: replies in the window (saturating) */
+    uint16_t period_ms;                   /**< private: ms between packets */
+    uint16_t packets;                     /**< private: packets that carried the running command */
+    uint16_t answered;                    /**< private: replies of the running command's order so far */
+    uint16_t carrier[XF__CARRIER_WORDS];  /**< private: carrier state as it goes on the wire */
+    /* times, on xf_client_step's clock */
+    uint32_t now_ms;       /**< private: the time of the current step */
+    uint32_t next_send_ms; /**< private: when the next packet is due */
+    /** @var xf_client::last_tx_ms
+     *  private: when the last packet went out */
+    /** @var xf_client::sync_ms
+     *  private: when synced became 1 */
+    /** @var xf_client::head_ms
+     *  private: when the queue's head began to wait, or (running) was first sent */
+    uint32_t last_tx_ms, sync_ms, head_ms;
+    uint32_t next_id; /**< private: the id the next submitted command gets; never 0 */
+    /** @var xf_client::gnss_ms
+     *  private: when the GNSS data was set */
+    /** @var xf_client::carrier_ms
+     *  private: when the carrier state was set */
+    uint32_t gnss_ms, carrier_ms, ctrl_ms; /**< private: when the control quantities were set */
+    uint32_t operating_ms;                 /**< private: when the GCU said "operating" */
+    uint32_t window_start_ms;              /**< private: start of the current one-second window */
+    uint32_t guard_ms;                     /**< private: when the guard opened */
+    uint32_t version_ms;                   /**< private: when the client began to send the version it sends now */
+    float ctrl[3];                         /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
+    xf_client_config cfg;                  /**< private: the configuration (a copy) */
+    xf_health health;                      /**< private: xf_client_health() */
+    xf_hal hal;                            /**< private: the link (a copy) */
+    xf_telemetry tele;                     /**< private: xf_client_telemetry() */
+    xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
+    xf_parser parser;                         /**< private: parser of the GCU's replies */
+    xf_cmd_slot queue[XF_CLIENT_QUEUE];       /**< private: commands queued or running, a ring */
+    uint8_t gnss[XF__GNSS_BYTES];             /**< private: the last GNSS data, as it goes on the wire */
 } xf_client;
 
 /**

@@ -519,16 +519,20 @@ XF_API size_t xf_field_size(xf_field f)
     }
 }
 
+/* The parameter bytes of a table row: its fields' sizes. */
+static size_t xf__row_params_len(const xf_order_info *info)
+{
+    size_t i, n = 0;
+    for (i = 0; i < info->nfields; i++) {
+        n += xf_field_size((xf_field)info->fields[i]);
+    }
+    return n;
+}
+
 XF_API size_t xf_order_params_len(uint8_t order)
 {
     const xf_order_info *info = xf_order_lookup(order);
-    size_t i, n = 0;
-    if (info != NULL) {
-        for (i = 0; i < info->nfields; i++) {
-            n += xf_field_size((xf_field)info->fields[i]);
-        }
-    }
-    return n;
+    return (info != NULL) ? xf__row_params_len(info) : 0u;
 }
 
 XF_API void xf_command_init(xf_command *cmd, uint8_t order)
@@ -674,8 +678,8 @@ XF_API xf_err xf_command_encode(const xf_command *cmd, uint8_t version, uint8_t 
     if (err != XF_OK) {
         return err;
     }
-    info = xf_order_lookup(cmd->order);
-    n = xf_order_params_len(cmd->order);
+    info = xf_order_lookup(cmd->order); /* found: xf_command_check() looked it up */
+    n = xf__row_params_len(info);
     if (n > 0u && params == NULL) {
         return XF_ERR_ARG;
     }

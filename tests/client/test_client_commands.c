@@ -36,10 +36,12 @@ static void test_init_rates_and_args(void **state)
         xf_client_config_init(&cfg);
         cfg.rate_hz = bad[i];
         assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+        assert_string_equal(xf_client_config_problem(&cfg), "rate_hz: 1..200"); /* the first line, whole */
     }
     xf_client_config_init(&cfg);
     cfg.protocol_version = 0;
     assert_xf(xf_client_init(&c, &hal, &cfg), XF_ERR_RANGE);
+    assert_true(strncmp(xf_client_config_problem(&cfg), "protocol_version, ", 18) == 0);
     /* times that cannot work: a link never up, commands timing out unsent */
     xf_client_config_init(&cfg);
     cfg.stale_ms = 0;
