@@ -5,11 +5,16 @@ What is refused, in every tracked file:
 - an object file, archive, shared library or executable binary, known by its first bytes (ELF,
   ar, Mach-O, PE/COFF) or by its name (.o .obj .a .so .dylib .dll .exe .elf .bin);
 - a file with the executable bit that is not a script (no "#!" first line);
-- a file over 1 MiB, unless it is generated data listed in ALLOWED_LARGE below, with the reason.
+- a file over 1 MiB, unless it is generated data listed in ALLOWED_LARGE below, with the reason;
+- a test source (a .c, .h, .cpp or .py file under tests/, tools/tests/, python/tests/ or fuzz/)
+  over 1000 lines: the next engineer should be able to read a test file whole, so a long one is
+  split by concern (tests/README.md says how the folders are cut).
 
 Run from anywhere in the clone: scripts/check_tree.py. Exit 0 when clean, 1 with one line per
-offending file otherwise. `scripts/check_tree.py --self-test` shows, in a scratch repository, that
-each kind of file above is refused and that sources, scripts and fuzz inputs are not.
+offending file otherwise; when clean, it names the longest test source. `scripts/check_tree.py
+--self-test` shows, in a scratch repository, that each kind of file above is refused and that
+sources, scripts, fuzz inputs, a test source of exactly 1000 lines and a long non-test source are
+not.
 """
 import os
 import subprocess
@@ -30,6 +35,9 @@ MAGIC = [
     (b"MZ", "a DOS/Windows executable"),
 ]
 BINARY_SUFFIXES = (".o", ".obj", ".a", ".so", ".dylib", ".dll", ".exe", ".elf", ".bin", ".pyc")
+MAX_TEST_LINES = 1000
+TEST_DIRS = ("tests/", "tools/tests/", "python/tests/", "fuzz/")
+TEST_SUFFIXES = (".c", ".h", ".cpp", ".py")
 
 
 def tracked():
@@ -39,6 +47,15 @@ def tracked():
         if entry:
             meta, path = entry.split(b"\t", 1)
             yield meta.split()[0].decode(), path.decode()
+
+
+def test_lines(path):
+    """The number of lines of @path if it is a test source, else None."""
+    if not (path.startswith(TEST_DIRS) and path.endswith(TEST_SUFFIXES)):
+        return None
+    with open(path, "rb") as f:
+        data = f.read()
+    return data.count(b"\n") + (1 if data and not data.endswith(b"\n") else 0)
 
 
 def problem(mode, path):
@@ -58,6 +75,9 @@ def problem(mode, path):
     size = os.path.getsize(path)
     if size > MAX_BYTES and path not in ALLOWED_LARGE:
         return f"{size} bytes, over the {MAX_BYTES}-byte limit (list generated data in ALLOWED_LARGE)"
+    lines = test_lines(path)
+    if lines is not None and lines > MAX_TEST_LINES:
+        return f"a test source of {lines} lines, over {MAX_TEST_LINES}: split it by concern"
     return None
 
 
@@ -84,6 +104,10 @@ def self_test():
             "x.o": (b"whatever", 0o644),
             "run": (b"echo no shebang\n", 0o755),
             "big.dat": (bytes(MAX_BYTES + 1), 0o644),
+            "tests/long.c": (b"int x;\n" * (MAX_TEST_LINES + 1), 0o644),
+            "python/tests/test_long.py": (b"x = 1\n" * MAX_TEST_LINES + b"y = 2", 0o644),  # no final newline
+            "tests/edge.c": (b"int x;\n" * MAX_TEST_LINES, 0o644),
+            "src/long.c": (b"int x;\n" * (MAX_TEST_LINES + 1), 0o644),
         }
         for path, (data, mode) in files.items():
             os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
@@ -92,11 +116,11 @@ def self_test():
             os.chmod(path, mode)
         subprocess.run(["git", "add", "--", *files], check=True)
         refused = {path for mode, path in tracked() if problem(mode, path)}
-    want = {"prog", "lib.a", "x.o", "run", "big.dat"}
+    want = {"prog", "lib.a", "x.o", "run", "big.dat", "tests/long.c", "python/tests/test_long.py"}
     if refused != want:
         print(f"check_tree: self-test: refused {sorted(refused)}, expected {sorted(want)}", file=sys.stderr)
         return 1
-    print("check_tree: self-test passed (5 kinds refused, 3 ordinary files kept)")
+    print(f"check_tree: self-test passed ({len(want)} files refused, {len(files) - len(want)} kept)")
     return 0
 
 
@@ -109,7 +133,10 @@ def main():
     for path, why in bad:
         print(f"check_tree: {path}: {why}", file=sys.stderr)
     if not bad:
-        print("check_tree: no binaries, build products or oversized files are tracked")
+        links = ("120000", "160000")
+        longest = max((test_lines(path) or 0, path) for mode, path in tracked() if mode not in links)
+        print("check_tree: no binaries, build products, oversized files or test sources over "
+              f"{MAX_TEST_LINES} lines are tracked (the longest test source: {longest[1]}, {longest[0]} lines)")
     return 1 if bad else 0
 
 

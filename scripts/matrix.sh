@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The compiler matrix: gcc and clang, C99 and C11, -Werror -pedantic-errors -Wconversion, over
 # every library source and all public headers; the public headers as C++ (g++, clang++) too.
-# Then a user's translation unit (tests/matrix/user_tu.c: every public codec function, small and
-# large buffers) built by gcc, clang, g++ and clang++ at -O0/-O2/-O3/-Os (and the codec options
+# Then a user's program (tests/matrix/user_tu.c, the translation unit that defines
+# XF_IMPLEMENTATION, and user_tu_values.c, one that does not: every public codec function, small
+# and large buffers) built by gcc, clang, g++ and clang++ at -O0/-O2/-O3/-Os (and the codec options
 # at -O2/-O3), where gcc's -Warray-bounds / -Wstringop-overflow look into the inlined headers,
 # and each binary run. Any warning or failed run fails the script. MATRIX_JOBS=N: parallel
 # builds (default: the number of CPUs).
@@ -70,12 +71,16 @@ fi
 gcc -std=c99 -Wall -Wextra -Werror -Iinclude -c "$out/readme_example.c" -o "$out/readme_example.o"
 echo "README example: compiles"
 
-# ---- a user's translation unit -------------------------------------------------------------
+# ---- a user's program: its implementation translation unit and one other -------------------
 # tests/matrix/user_tu.c defines XF_IMPLEMENTATION and includes xfgcu/xfgcu.h, calls every public
-# codec function with buffers of 1, 4 and 16 bytes (which must fail cleanly) and of
-# XF_PACKET_MAX_LEN and 4096 bytes, and checks its results. First: does it still call every
-# public function and function-like macro of the headers xfgcu.h includes (non-xf__ names)?
-utu=tests/matrix/user_tu.c
+# codec function that takes the caller's buffers with buffers of 1, 4 and 16 bytes (which must
+# fail cleanly) and of XF_PACKET_MAX_LEN and 4096 bytes, and checks its results; its second file,
+# user_tu_values.c, includes xfgcu/xfgcu.h without XF_IMPLEMENTATION (declarations only, as a
+# user's other files do) and calls the rest, on values and tables. Both are compiled and linked
+# into one program (a second XF_IMPLEMENTATION, or none, fails the link). First: do they still
+# call every public function and function-like macro of the headers xfgcu.h includes (non-xf__
+# names)?
+utu=(tests/matrix/user_tu.c tests/matrix/user_tu_values.c)
 codec_headers() { # the headers xfgcu.h includes, and the ones they include, once each
   local todo=(xfgcu.h) seen=" " h inc
   while [ "${#todo[@]}" -gt 0 ]; do
@@ -99,10 +104,10 @@ mapfile -t api < <(
 )
 missing=()
 for f in "${api[@]}"; do
-  grep -qE "(^|[^A-Za-z0-9_])${f}[[:space:]]*\(" "$utu" || missing+=("$f")
+  grep -qE "(^|[^A-Za-z0-9_])${f}[[:space:]]*\(" "${utu[@]}" || missing+=("$f")
 done
 if [ "${#api[@]}" -lt 50 ] || [ "${#missing[@]}" -gt 0 ]; then
-  echo "matrix: FAIL: $utu does not call every public codec function (${#api[@]} found in" \
+  echo "matrix: FAIL: ${utu[*]} do not call every public codec function (${#api[@]} found in" \
     "${#hdrs[@]} headers); missing: ${missing[*]:-(the list itself looks wrong)}" >&2
   exit 1
 fi
@@ -126,13 +131,13 @@ for opt in XF_PARSER_SLOTS=1 XF_CRC_TABLE_256=1 XF_PACKET_MAX_LEN=84 XF_NO_LIBC=
   done
 done
 
-# utu_one NAME LABEL COMPILER FLAGS: build (any compiler output fails it), then run. Writes the
-# line to print in $out/user_tu.NAME.result and "ok" or "FAIL" in $out/user_tu.NAME.status.
+# utu_one NAME LABEL COMPILER FLAGS: build both files into one program (any compiler output fails
+# it), then run. Writes the line to print in $out/user_tu.NAME.result and "ok" or "FAIL" in $out/user_tu.NAME.status.
 utu_one() {
   local label="$2" cc="$3" flags="$4" bin="$out/user_tu.$1" t0 t1 rc=0 ndiag res status=FAIL
   t0=$(date +%s%N)
   # shellcheck disable=SC2086
-  "$cc" $flags -Iinclude "$utu" -o "$bin" >"$bin.build.log" 2>&1 || rc=$?
+  "$cc" $flags -Iinclude "${utu[@]}" -o "$bin" >"$bin.build.log" 2>&1 || rc=$?
   t1=$(date +%s%N)
   if [ "$rc" -ne 0 ] || [ -s "$bin.build.log" ]; then
     ndiag=$(grep -cE '(warning|error):' "$bin.build.log" || true)

@@ -18,7 +18,7 @@ stages=(tree build python readme optimised fuzz matrix docs lint mcu firmware bi
 
 describe() {
   case $1 in
-    tree)      echo "no binaries, build products or files over 1 MB tracked (scripts/check_tree.py)" ;;
+    tree)      echo "no binaries, build products, files over 1 MB or test sources over 1000 lines tracked (scripts/check_tree.py)" ;;
     build)     echo "gcc Debug build with -Werror (the Python package's native library too), every ctest" ;;
     python)    echo "the Python package's tests (pytest, hypothesis) over build/gcc's library and program" ;;
     readme)    echo "every recipe README.md prints, run as printed (Release, install, consumers, presets)" ;;
