@@ -105,7 +105,7 @@ def loop_rows(lp):
     """The firmware loop's checks and command times; the link judgement's lines."""
     fw = lp["firmware"].splitlines()
     ms = sorted(int(x) for x in re.findall(r"order 0x20 \w+ \(1 packet, (\d+) ms\)", lp["firmware"]))
-    out = ["", "## Firmware in the loop", "",
+    out = ["", "## Firmware in the loop (QEMU)", "",
            "`scripts/firmware_loop.sh` (also the ctest `firmware_loop`): the firmware example built for QEMU's "
            "`netduinoplus2` board (an emulated STM32F405) runs the client at 50 Hz over its emulated UART, "
            "connected by TCP to `xfgcu sim`, through five phases (normal, simulator stopped, noise and "
