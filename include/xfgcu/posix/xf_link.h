@@ -1,8 +1,8 @@
 /**
  * @file
  * @brief Any link from one string: `tcp:HOST[:PORT]`, `udp:HOST[:PORT][,local=PORT]` or
- * `serial:PATH[,baud=N]`, opened behind the xf_hal interface (CMake target xfgcu::posix, above
- * the links).
+ * `serial:PATH[,baud=N]`, opened behind the xf_hal interface (CMake target xfgcu::linkspec, above
+ * the links alone: neither the client nor the simulator).
  *
  * A program that takes "which gimbal" from its user (a command-line argument, a configuration
  * file) reads one string, validates it with xf_link_spec_parse() and opens it with
@@ -40,7 +40,6 @@
 #include "../xf_error.h"
 #include "../xf_hal.h"
 #include "xf_posix.h"
-#include "xf_simlink.h"
 
 XF_BEGIN_DECLS
 
@@ -209,20 +208,6 @@ size_t xf_link_describe(const xf_link *l, char *buf, size_t cap);
  * @return the error (its text is empty when nothing failed), or NULL for a NULL @p l
  */
 const xf_os_error *xf_link_error(const xf_link *l);
-
-/**
- * The spec a host opens to reach the simulator's end of a link @p gcu (for tests, demonstrations
- * and examples with a built-in simulated GCU): "tcp:127.0.0.1:PORT",
- * "udp:127.0.0.1:PORT,local=0" (any free local port) or "serial:PATH" (the pty's symlink when
- * it has one, else its slave). A TCP or UDP link bound to any address (0.0.0.0, ::) is reached
- * on the loopback address. Writes as xf_link_describe() does. Never blocks.
- * @param gcu  the simulator's link, open
- * @param buf  receives the spec (may be NULL when @p cap is 0)
- * @param cap  the size of @p buf
- * @return the length of the whole spec (not counting the NUL); 0, with an empty @p buf, for a
- *   NULL @p gcu or one never opened
- */
-size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap);
 
 XF_END_DECLS
 

@@ -2,7 +2,7 @@
  * @file
  * @brief Many clients and simulators from one thread: a poll(2) loop that
  * sleeps until a link is readable or a packet is due (CMake target
- * xfgcu::posix, above the links, the client and the simulator).
+ * xfgcu::poll, above the links, the client and the simulator).
  */
 #ifndef XF_POLL_H
 #define XF_POLL_H

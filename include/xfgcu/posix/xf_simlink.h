@@ -2,7 +2,7 @@
  * @file
  * @brief The GCU side of a link, for the simulator: a pseudo-terminal, a
  * UDP port or a TCP server that a simulated GCU answers on, behind the
- * xf_hal interface (CMake target xfgcu::posix, above the links).
+ * xf_hal interface (CMake target xfgcu::simlink, above the links).
  */
 #ifndef XF_SIMLINK_H
 #define XF_SIMLINK_H
@@ -157,6 +157,21 @@ void xf_simlink_wire_init(xf_simlink_wire *w, const xf_hal *inner, uint32_t seed
  * @param l  the link
  */
 void xf_simlink_close(xf_simlink *l);
+
+/**
+ * The spec a host opens (xf_link_open() of posix/xf_link.h) to reach the simulator's end of a
+ * link @p gcu (for tests, demonstrations and examples with a built-in simulated GCU):
+ * "tcp:127.0.0.1:PORT", "udp:127.0.0.1:PORT,local=0" (any free local port) or "serial:PATH"
+ * (the pty's symlink when it has one, else its slave). A TCP or UDP link bound to any address
+ * (0.0.0.0, ::) is reached on the loopback address. Like snprintf(): writes at most @p cap
+ * bytes, NUL-terminated when @p cap is not 0. Never blocks.
+ * @param gcu  the simulator's link, open
+ * @param buf  receives the spec (may be NULL when @p cap is 0)
+ * @param cap  the size of @p buf
+ * @return the length of the whole spec (not counting the NUL); 0, with an empty @p buf, for a
+ *   NULL @p gcu or one never opened
+ */
+size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap);
 
 XF_END_DECLS
 
