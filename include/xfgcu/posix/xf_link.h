@@ -92,6 +92,7 @@ typedef struct xf_link {
 /**
  * Parse @p spec into @p out without opening anything (to validate a user's input early, or to
  * change members before xf_link_open_spec()). Never blocks; touches no file or network.
+ * Cost: O(length of @p spec), no system call; never allocates.
  * @param spec  the text, such as "tcp:192.168.144.108" (may be NULL: refused)
  * @param out   receives the parsed spec, with the defaults of what @p spec leaves out; on failure
  *   its kind is ::XF_LINK_KIND_NONE and out->error.text says why
@@ -126,6 +127,11 @@ xf_err xf_link_spec_init(xf_link_spec *out, xf_link_kind kind, const char *where
  * itself as it is used (xf_link_wait() waits for it). Open on zeroed or closed storage (opening
  * an open link loses its descriptor). On failure the link is closed, l->spec holds what was
  * parsed, and l->error.text says why, in one line.
+ *
+ * Cost: O(length of @p spec) to parse, then what the link's own open costs: getaddrinfo() for
+ * `tcp:` and `udp:` (it allocates, and frees before this returns), libserialport for a real
+ * serial port (it allocates a structure kept until xf_link_close()), termios for a pty (no
+ * allocation) (xf_serial_open(), xf_udp_open(), xf_tcp_open()).
  * @param l     the link's storage
  * @param spec  the text, such as "tcp:192.168.144.108:2332" or "serial:/dev/ttyUSB0,baud=115200"
  *   (read during the call only)
@@ -140,7 +146,8 @@ xf_err xf_link_open(xf_link *l, const char *spec);
  * Open the link @p spec names (as filled by xf_link_spec_parse() or xf_link_spec_init(), and
  * perhaps changed). Blocks as xf_link_open() does; @p spec is copied to l->spec and checked
  * again first (a kind, a host or path that is not empty and ends within its array, a GCU port
- * not 0, a baud rate the GCU speaks). @p spec may be &l->spec.
+ * not 0, a baud rate the GCU speaks). @p spec may be &l->spec. Cost: as xf_link_open(), less
+ * the parsing.
  * @param l     the link's storage (zeroed or closed)
  * @param spec  what to open
  * @return as xf_link_open(); ::XF_ERR_ARG also for a NULL @p spec
@@ -150,7 +157,8 @@ xf_err xf_link_open_spec(xf_link *l, const xf_link_spec *spec);
 /**
  * Wait until the link can carry packets: for TCP, block up to @p timeout_ms until connected
  * (xf_tcp_wait(), polling every 5 ms at most); UDP and serial links have no connection, and
- * return at once. Blocks by design: for start-up, before the client loop runs.
+ * return at once. Blocks by design: for start-up, before the client loop runs. Cost: one
+ * poll() per 5 ms waited; never allocates.
  * @param l           the link, open
  * @param timeout_ms  how long to wait at most
  * @return ::XF_OK (ready); ::XF_ERR_ARG (NULL @p l); ::XF_ERR_CLOSED (not open; or TCP refused or
@@ -182,7 +190,8 @@ int xf_link_keeps_order(const xf_link_spec *spec);
 /**
  * Close the link; it no longer reconnects or reopens by itself. l->spec is kept (for
  * xf_link_describe()). Safe on a closed or never-opened (zeroed) link; does nothing for a NULL
- * @p l. Never blocks.
+ * @p l. Never blocks. Cost: the link's close (one close(), and libserialport's free for a
+ * serial port it opened); never allocates.
  * @param l  the link
  */
 void xf_link_close(xf_link *l);
