@@ -480,16 +480,16 @@ typedef struct xf_client {
      *  private: when the GNSS data was set */
     /** @var xf_client::carrier_ms
      *  private: when the carrier state was set */
-    uint32_t gnss_ms, carrier_ms, ctrl_ms; /**< private: when the control quantities were set */
-    uint32_t operating_ms;                 /**< private: when the GCU said "operating" */
-    uint32_t window_start_ms;              /**< private: start of the current one-second window */
-    uint32_t guard_ms;                     /**< private: when the guard opened */
-    uint32_t version_ms;                   /**< private: when the client began to send the version it sends now */
-    float ctrl[3];                         /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
-    xf_client_config cfg;                  /**< private: the configuration (a copy) */
-    xf_health health;                      /**< private: xf_client_health() */
-    xf_hal hal;                            /**< private: the link (a copy) */
-    xf_telemetry tele;                     /**< private: xf_client_telemetry() */
+    uint32_t gnss_ms, carrier_ms, ctrl_ms;    /**< private: when the control quantities were set */
+    uint32_t operating_ms;                    /**< private: when the GCU said "operating" */
+    uint32_t window_start_ms;                 /**< private: start of the current one-second window */
+    uint32_t guard_ms;                        /**< private: when the guard opened */
+    uint32_t version_ms;                      /**< private: when the client began to send the version it sends now */
+    float ctrl[3];                            /**< private: roll, pitch, yaw: deg/s or deg as ctrl_kind says */
+    xf_client_config cfg;                     /**< private: the configuration (a copy) */
+    xf_health health;                         /**< private: xf_client_health() */
+    xf_hal hal;                               /**< private: the link (a copy) */
+    xf_telemetry tele;                        /**< private: xf_client_telemetry() */
     xf_cmd_record results[XF_CLIENT_RESULTS]; /**< private: the last finished commands, a ring */
     xf_parser parser;                         /**< private: parser of the GCU's replies */
     xf_cmd_slot queue[XF_CLIENT_QUEUE];       /**< private: commands queued or running, a ring */

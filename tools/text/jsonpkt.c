@@ -613,8 +613,8 @@ static xf_err pack(xf_direction dir, const xf_host_packet *host, const xf_gcu_pa
     return (dir == XF_DIR_HOST) ? xf_host_pack(host, out, cap, len) : xf_gcu_pack(gcu, out, cap, len);
 }
 
-int jsonpkt_to_wire(json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
-                    size_t cap, size_t *len, text_err *e)
+int jsonpkt_to_wire(json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out, size_t cap,
+                    size_t *len, text_err *e)
 {
     reader r;
     xf_host_packet host;

@@ -44,8 +44,8 @@ json_t *jsonpkt_from_wire(const uint8_t *buf, size_t len, xf_direction dir, pod_
  * "stdin line 3"). @p obj is not changed (it is not const because jansson's key iteration takes
  * a non-const object). @return TEXT_OK, or TEXT_BAD with @p e saying why.
  */
-int jsonpkt_to_wire(json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out,
-                    size_t cap, size_t *len, text_err *e);
+int jsonpkt_to_wire(json_t *obj, uint8_t default_version, text_view view, const char *where, uint8_t *out, size_t cap,
+                    size_t *len, text_err *e);
 
 /**
  * Parse @p len bytes of JSON text holding one value and nothing else: a NUL byte, a truncated
