@@ -150,6 +150,7 @@ xf_err xf_client_init_checked(xf_client *c, const xf_hal *hal, const xf_client_c
 static uint32_t xf__queued_id(const xf_client *c, size_t i)
 {
     uint32_t back = (uint32_t)(c->q_count - i);
+    XF_ASSERT(i < c->q_count);
     return (back < c->next_id) ? c->next_id - back : c->next_id - back - 1u;
 }
 
@@ -164,7 +165,9 @@ static uint32_t xf__ids_back(const xf_client *c, uint32_t id)
 static void xf__publish(xf_client *c, const xf_cmd_result *r)
 {
     if (r->status != XF_CMD_OPERATING) {
-        xf_cmd_record *k = &c->results[c->r_next]; /* kept in 12 bytes (xf_cmd_record) */
+        xf_cmd_record *k;
+        XF_ASSERT(c->r_next < XF_CLIENT_RESULTS);
+        k = &c->results[c->r_next]; /* kept in 12 bytes (xf_cmd_record) */
         k->order = r->order;
         k->status = (uint8_t)r->status;
         k->state = r->state;
@@ -211,6 +214,7 @@ static void xf__guard(xf_client *c, uint8_t order, int wait)
 static void xf__finish(xf_client *c, xf_cmd_status st, const xf_feedback *fb)
 {
     xf_cmd_result r;
+    XF_ASSERT(c->q_count > 0u && c->q_head < XF_CLIENT_QUEUE); /* there is a head to end */
     xf__result_of(c, st, fb, &r);
     if (c->active) {
         c->nulls_owed = 1; /* back to null packets: the next command of any order is separated */
@@ -397,6 +401,7 @@ static void xf__match(xf_client *c, const xf_frame *f)
 {
     uint8_t order = f->data[XF_OFF_ORDER];
     xf_feedback fb;
+    XF_ASSERT(!c->active || c->q_count > 0u); /* a running command is the queue's head */
     if (!c->active || order != c->queue[c->q_head].order) {
         return;
     }
@@ -557,6 +562,8 @@ static void xf__judge_round(xf_client *c)
 /* A frame out of the parser: whole, of the GCU (the parser's direction), its CRC checked. */
 static void xf__on_frame(xf_client *c, const xf_frame *f)
 {
+    /* every offset read below (telemetry, order, parameters) lies within a whole frame */
+    XF_ASSERT(f->len >= XF_PACKET_MIN_LEN && f->len <= XF_PACKET_MAX_LEN);
     if (c->cfg.on_bytes != NULL) {
         c->cfg.on_bytes(c->cfg.user, XF_DIR_GCU, f->data, f->len, c->now_ms);
     }
@@ -596,6 +603,7 @@ static xf_err xf__receive(xf_client *c)
         if (n == 0u) {
             break;
         }
+        XF_ASSERT(n <= sizeof(buf)); /* the HAL's contract: never more than asked for */
         /* A call returns at most one frame, from the call that feeds its last byte, and says
          * how far it read: a read that holds several packets takes a call for each. */
         while (off < n) {
@@ -864,6 +872,7 @@ static xf_err xf__send(xf_client *c)
     if (order < 0) {
         return XF_OK;
     }
+    XF_ASSERT(n <= XF_PARAMS_KNOWN_MAX); /* the parameters fit buf: a slot's or the stream's */
     xf__put_control(c, buf);
     len = XF_PACKET_MIN_LEN + n;
     /* header, order, parameters and CRC as the codec's packer writes them */
@@ -1086,6 +1095,7 @@ xf_err xf_client_osd(xf_client *c, int show, uint32_t *id)
     err = xf_client_submit(c, &cmd, id, NULL);
     if (err == XF_OK) { /* the value for the GCU's version is set when it starts (xf__fits_version) */
         xf_cmd_slot *slot = &c->queue[(c->q_head + c->q_count - 1u) % XF_CLIENT_QUEUE];
+        XF_ASSERT(c->q_count > 0u); /* just queued: the last slot is this command's */
         slot->params[0] = (uint8_t)(show != 0);
         slot->fits = XF__FITS_OSD;
     }

@@ -482,27 +482,6 @@ const xf_os_error *xf_link_error(const xf_link *l)
     return l->is_open ? xf__held_error(l) : &l->error;
 }
 
-/* snprintf() that returns a size_t, and never a negative length. */
-#if defined(__GNUC__)
-__attribute__((format(printf, 3, 4)))
-#endif
-static size_t
-xf__print(char *buf, size_t cap, const char *fmt, ...)
-{
-    va_list ap;
-    int n;
-    va_start(ap, fmt);
-    n = vsnprintf(cap != 0u ? buf : NULL, cap, fmt, ap);
-    va_end(ap);
-    if (n < 0) {
-        if (cap != 0u) {
-            buf[0] = '\0';
-        }
-        return 0u;
-    }
-    return (size_t)n;
-}
-
 size_t xf_link_describe(const xf_link *l, char *buf, size_t cap)
 {
     const xf_link_spec *s = (l != NULL) ? &l->spec : NULL;
@@ -518,30 +497,4 @@ size_t xf_link_describe(const xf_link *l, char *buf, size_t cap)
     }
     return xf__print(buf, cap, strchr(s->host, ':') != NULL ? "%s [%s]:%u" : "%s %s:%u",
                      s->kind == XF_LINK_KIND_TCP ? "tcp" : "udp", s->host, (unsigned)s->port);
-}
-
-size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap)
-{
-    const char *host;
-    if (buf == NULL) {
-        cap = 0;
-    }
-    if (gcu != NULL && gcu->kind == XF_SIMLINK_PTY && (gcu->link_path[0] != '\0' || gcu->pty_path[0] != '\0')) {
-        return xf__print(buf, cap, "serial:%s", gcu->link_path[0] != '\0' ? gcu->link_path : gcu->pty_path);
-    }
-    if (gcu == NULL || (gcu->kind != XF_SIMLINK_UDP && gcu->kind != XF_SIMLINK_TCP) || gcu->port == 0u ||
-        memchr(gcu->bind_host, '\0', sizeof(gcu->bind_host)) == NULL) {
-        return xf__print(buf, cap, "%s", "");
-    }
-    host = gcu->bind_host;
-    if (host[0] == '\0' || strcmp(host, "0.0.0.0") == 0) {
-        host = "127.0.0.1";
-    } else if (strcmp(host, "::") == 0) {
-        host = "::1";
-    }
-    if (gcu->kind == XF_SIMLINK_TCP) {
-        return xf__print(buf, cap, strchr(host, ':') != NULL ? "tcp:[%s]:%u" : "tcp:%s:%u", host, (unsigned)gcu->port);
-    }
-    return xf__print(buf, cap, strchr(host, ':') != NULL ? "udp:[%s]:%u,local=0" : "udp:%s:%u,local=0", host,
-                     (unsigned)gcu->port);
 }

@@ -78,6 +78,27 @@ xf_err xf__fail(xf_os_error *err, xf_err code, const char *fmt, ...)
     return code;
 }
 
+/* snprintf() that returns a size_t, and never a negative length. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+size_t
+xf__print(char *buf, size_t cap, const char *fmt, ...)
+{
+    va_list ap;
+    int n;
+    va_start(ap, fmt);
+    n = vsnprintf(cap != 0u ? buf : NULL, cap, fmt, ap);
+    va_end(ap);
+    if (n < 0) {
+        if (cap != 0u) {
+            buf[0] = '\0';
+        }
+        return 0u;
+    }
+    return (size_t)n;
+}
+
 int xf__set_nonblock(int fd)
 {
     int fl = fcntl(fd, F_GETFL);

@@ -21,6 +21,14 @@ xf_err xf__fail(xf_os_error *err, xf_err code, const char *fmt, ...)
 #endif
     ;
 
+/* snprintf() that returns a size_t (the whole text's length) and never a negative length; writes
+ * nothing when @p cap is 0 (buf may then be NULL). */
+size_t xf__print(char *buf, size_t cap, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
 int xf__set_nonblock(int fd);
 
 /* Wait until fd is writable, at most timeout_ms: 1 ready, 0 timeout, -1 error. */

@@ -165,6 +165,7 @@ static int xf__angle_mode(xf_mode m) { return m == XF_MODE_ANGLE_CONTROL || m ==
  * "FPV") all three; Euler none. */
 static int xf__relative_axis(const xf_sim *s, int axis)
 {
+    XF_ASSERT(axis >= 0 && axis < 3);
     if (s->mode == XF_MODE_FPV) {
         return 1;
     }
@@ -708,6 +709,7 @@ void xf_sim_snapshot(const xf_sim *s, xf_gcu_packet *pkt)
 
 static void xf__write_reply(xf_sim *s, const uint8_t *bytes, size_t len)
 {
+    XF_ASSERT(s->cap_buf == NULL || s->cap_len <= s->cap_cap);
     if (s->cap_buf != NULL) {
         if (s->cap_len + len <= s->cap_cap) {
             memcpy(s->cap_buf + s->cap_len, bytes, len);
@@ -774,6 +776,7 @@ static void xf__release_delayed(xf_sim *s)
 {
     while (s->n_delayed > 0u && (int32_t)(s->now_ms - s->delayed[0].due_ms) >= 0) {
         xf_sim_delayed d = s->delayed[0];
+        XF_ASSERT(d.len <= sizeof(d.bytes) && s->n_held_in >= d.to_gcu); /* as xf__hold() kept it */
         s->n_delayed--;
         s->n_held_in = (uint16_t)(s->n_held_in - d.to_gcu);
         memmove(&s->delayed[0], &s->delayed[1], (size_t)s->n_delayed * sizeof(s->delayed[0]));
@@ -906,6 +909,7 @@ static void xf__arrive(xf_sim *s, const xf_frame *f)
 static void xf__feed(xf_sim *s, const uint8_t *data, size_t n)
 {
     size_t off = 0;
+    XF_ASSERT(data != NULL || n == 0u); /* xf_sim_process() refused NULL with a length */
     for (;;) {
         size_t used = 0;
         xf_frame f;
@@ -959,6 +963,7 @@ xf_err xf_sim_step(xf_sim *s, uint32_t now_ms)
         if (n == 0u) {
             break;
         }
+        XF_ASSERT(n <= sizeof(buf)); /* the HAL's contract: never more than asked for */
         xf__feed(s, buf, n);
     }
     xf__release_delayed(s);

@@ -493,3 +493,31 @@ void xf_simlink_close(xf_simlink *l)
     xf__close_fd(&l->fd);
     l->link_path[0] = '\0';
 }
+
+/* ---- the host's spec for this link --------------------------------------------------- */
+
+size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap)
+{
+    const char *host;
+    if (buf == NULL) {
+        cap = 0;
+    }
+    if (gcu != NULL && gcu->kind == XF_SIMLINK_PTY && (gcu->link_path[0] != '\0' || gcu->pty_path[0] != '\0')) {
+        return xf__print(buf, cap, "serial:%s", gcu->link_path[0] != '\0' ? gcu->link_path : gcu->pty_path);
+    }
+    if (gcu == NULL || (gcu->kind != XF_SIMLINK_UDP && gcu->kind != XF_SIMLINK_TCP) || gcu->port == 0u ||
+        memchr(gcu->bind_host, '\0', sizeof(gcu->bind_host)) == NULL) {
+        return xf__print(buf, cap, "%s", "");
+    }
+    host = gcu->bind_host;
+    if (host[0] == '\0' || strcmp(host, "0.0.0.0") == 0) {
+        host = "127.0.0.1";
+    } else if (strcmp(host, "::") == 0) {
+        host = "::1";
+    }
+    if (gcu->kind == XF_SIMLINK_TCP) {
+        return xf__print(buf, cap, strchr(host, ':') != NULL ? "tcp:[%s]:%u" : "tcp:%s:%u", host, (unsigned)gcu->port);
+    }
+    return xf__print(buf, cap, strchr(host, ':') != NULL ? "udp:[%s]:%u,local=0" : "udp:%s:%u,local=0", host,
+                     (unsigned)gcu->port);
+}

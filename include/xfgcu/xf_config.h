@@ -17,8 +17,10 @@
  * - ::XF_PARSER_SLOTS: candidates the parser checks at once, 1..16
  *   (default 4): more resist more crafted false headers, at 1 byte of RAM
  *   each and more work per byte on such a stream (docs/codec.md).
- * - ::XF_ASSERT: define to check the codec's internal invariants (the tests
- *   and fuzzers do); by default it compiles to nothing.
+ * - ::XF_ASSERT: define to check the internal invariants and preconditions
+ *   of the codec, the client and the simulator (the tests, the fuzzers and
+ *   the project's own Debug builds of the libraries do); by default it
+ *   compiles to nothing.
  * - `XF_IMPLEMENTATION`: defined in exactly one translation unit (the
  *   library's src/xf_codec.c, or one file of yours), before the first
  *   include, where the codec's functions and tables are defined (::XF_API).
@@ -102,10 +104,12 @@
 #endif
 
 /**
- * Check an internal invariant of the codec. By default nothing is compiled;
- * the tests and fuzzers define it (before any xfgcu header, in the
- * translation unit that defines `XF_IMPLEMENTATION`) to stop on a broken
- * invariant. @p cond has no side effects.
+ * Check an internal invariant or precondition (of the codec, and of the
+ * client's and the simulator's internal functions). By default nothing is
+ * compiled; the tests and fuzzers define it (before any xfgcu header, in the
+ * translation unit that defines `XF_IMPLEMENTATION`), and the project's own
+ * Debug builds define it for the libraries (src/CMakeLists.txt), to stop on
+ * a broken one. @p cond has no side effects.
  */
 #ifndef XF_ASSERT
 #define XF_ASSERT(cond) ((void)0)

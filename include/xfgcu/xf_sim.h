@@ -270,6 +270,10 @@ xf_err xf_sim_attach(xf_sim *s, const xf_hal *hal);
  * Reads the link up to 16 times. Replies the link does not take are counted
  * in xf_sim_stats.write_errors, not returned. Never waits itself, but takes
  * as long as the link's read and write.
+ *
+ * Cost: O(bytes read) through the parser and one reply packed and written per host packet;
+ * under the delay, jitter and duplicate faults also O(::XF_SIM_DELAY_QUEUE) per packet held or
+ * released. Stack: a 512-byte read buffer and one reply. Never allocates.
  * @param s       the simulator
  * @param now_ms  the time, ms, on a wrapping clock (the gimbal moves by the
  *   time since the previous step, at most 200 ms at once)

@@ -1,8 +1,8 @@
 /**
  * @file
  * @brief Any link from one string: `tcp:HOST[:PORT]`, `udp:HOST[:PORT][,local=PORT]` or
- * `serial:PATH[,baud=N]`, opened behind the xf_hal interface (CMake target xfgcu::posix, above
- * the links).
+ * `serial:PATH[,baud=N]`, opened behind the xf_hal interface (CMake target xfgcu::linkspec, above
+ * the links alone: neither the client nor the simulator).
  *
  * A program that takes "which gimbal" from its user (a command-line argument, a configuration
  * file) reads one string, validates it with xf_link_spec_parse() and opens it with
@@ -40,7 +40,6 @@
 #include "../xf_error.h"
 #include "../xf_hal.h"
 #include "xf_posix.h"
-#include "xf_simlink.h"
 
 XF_BEGIN_DECLS
 
@@ -93,6 +92,7 @@ typedef struct xf_link {
 /**
  * Parse @p spec into @p out without opening anything (to validate a user's input early, or to
  * change members before xf_link_open_spec()). Never blocks; touches no file or network.
+ * Cost: O(length of @p spec), no system call; never allocates.
  * @param spec  the text, such as "tcp:192.168.144.108" (may be NULL: refused)
  * @param out   receives the parsed spec, with the defaults of what @p spec leaves out; on failure
  *   its kind is ::XF_LINK_KIND_NONE and out->error.text says why
@@ -127,6 +127,11 @@ xf_err xf_link_spec_init(xf_link_spec *out, xf_link_kind kind, const char *where
  * itself as it is used (xf_link_wait() waits for it). Open on zeroed or closed storage (opening
  * an open link loses its descriptor). On failure the link is closed, l->spec holds what was
  * parsed, and l->error.text says why, in one line.
+ *
+ * Cost: O(length of @p spec) to parse, then what the link's own open costs: getaddrinfo() for
+ * `tcp:` and `udp:` (it allocates, and frees before this returns), libserialport for a real
+ * serial port (it allocates a structure kept until xf_link_close()), termios for a pty (no
+ * allocation) (xf_serial_open(), xf_udp_open(), xf_tcp_open()).
  * @param l     the link's storage
  * @param spec  the text, such as "tcp:192.168.144.108:2332" or "serial:/dev/ttyUSB0,baud=115200"
  *   (read during the call only)
@@ -141,7 +146,8 @@ xf_err xf_link_open(xf_link *l, const char *spec);
  * Open the link @p spec names (as filled by xf_link_spec_parse() or xf_link_spec_init(), and
  * perhaps changed). Blocks as xf_link_open() does; @p spec is copied to l->spec and checked
  * again first (a kind, a host or path that is not empty and ends within its array, a GCU port
- * not 0, a baud rate the GCU speaks). @p spec may be &l->spec.
+ * not 0, a baud rate the GCU speaks). @p spec may be &l->spec. Cost: as xf_link_open(), less
+ * the parsing.
  * @param l     the link's storage (zeroed or closed)
  * @param spec  what to open
  * @return as xf_link_open(); ::XF_ERR_ARG also for a NULL @p spec
@@ -151,7 +157,8 @@ xf_err xf_link_open_spec(xf_link *l, const xf_link_spec *spec);
 /**
  * Wait until the link can carry packets: for TCP, block up to @p timeout_ms until connected
  * (xf_tcp_wait(), polling every 5 ms at most); UDP and serial links have no connection, and
- * return at once. Blocks by design: for start-up, before the client loop runs.
+ * return at once. Blocks by design: for start-up, before the client loop runs. Cost: one
+ * poll() per 5 ms waited; never allocates.
  * @param l           the link, open
  * @param timeout_ms  how long to wait at most
  * @return ::XF_OK (ready); ::XF_ERR_ARG (NULL @p l); ::XF_ERR_CLOSED (not open; or TCP refused or
@@ -183,7 +190,8 @@ int xf_link_keeps_order(const xf_link_spec *spec);
 /**
  * Close the link; it no longer reconnects or reopens by itself. l->spec is kept (for
  * xf_link_describe()). Safe on a closed or never-opened (zeroed) link; does nothing for a NULL
- * @p l. Never blocks.
+ * @p l. Never blocks. Cost: the link's close (one close(), and libserialport's free for a
+ * serial port it opened); never allocates.
  * @param l  the link
  */
 void xf_link_close(xf_link *l);
@@ -209,20 +217,6 @@ size_t xf_link_describe(const xf_link *l, char *buf, size_t cap);
  * @return the error (its text is empty when nothing failed), or NULL for a NULL @p l
  */
 const xf_os_error *xf_link_error(const xf_link *l);
-
-/**
- * The spec a host opens to reach the simulator's end of a link @p gcu (for tests, demonstrations
- * and examples with a built-in simulated GCU): "tcp:127.0.0.1:PORT",
- * "udp:127.0.0.1:PORT,local=0" (any free local port) or "serial:PATH" (the pty's symlink when
- * it has one, else its slave). A TCP or UDP link bound to any address (0.0.0.0, ::) is reached
- * on the loopback address. Writes as xf_link_describe() does. Never blocks.
- * @param gcu  the simulator's link, open
- * @param buf  receives the spec (may be NULL when @p cap is 0)
- * @param cap  the size of @p buf
- * @return the length of the whole spec (not counting the NUL); 0, with an empty @p buf, for a
- *   NULL @p gcu or one never opened
- */
-size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap);
 
 XF_END_DECLS
 

@@ -23,6 +23,12 @@
  * operating system (opening a device, resolving a host name with DNS: pass
  * a numeric address to avoid that). xf_tcp_wait() blocks
  * by design, up to the time they are given. Each function below says so.
+ *
+ * Cost: each function says what it costs in system calls and whether it allocates. Reads,
+ * writes and closes never allocate; opening a network link resolves its host with
+ * getaddrinfo(), which allocates (and frees before it returns), and a serial port opened through
+ * libserialport holds a structure libserialport allocated until it is closed. Measured
+ * latencies: docs/performance.md.
  */
 #ifndef XF_POSIX_H
 #define XF_POSIX_H
@@ -61,6 +67,7 @@ typedef struct xf_link_stats {
  * Monotonic milliseconds (CLOCK_MONOTONIC), wrapping at 2^32: a clock for
  * xf_client_step(), the setters, xf_sim_step() and a tap (the links have no
  * clock; the POSIX ones time their own reconnects with this). Never blocks.
+ * Cost: one clock_gettime() (on Linux usually a vDSO call, no system call); never allocates.
  * @return the time, ms
  */
 uint32_t xf_posix_now_ms(void);
@@ -103,6 +110,10 @@ typedef struct xf_serial {
  * kept). May block briefly in the operating system while the device is
  * opened and configured; never waits for the peer. On failure the link is
  * closed and s->error says why.
+ *
+ * Cost: a few system calls (open, ioctl, tcsetattr). The termios path allocates nothing;
+ * libserialport allocates its port structure (kept until xf_serial_close()) and reads the
+ * port's details from the system.
  * @param s     the link's storage
  * @param path  the device, such as /dev/ttyUSB0 (shorter than 256 bytes)
  * @param baud  115200, 250000, 500000 or 1000000 (xf_serial_baud_ok())
@@ -114,7 +125,8 @@ typedef struct xf_serial {
 xf_err xf_serial_open(xf_serial *s, const char *path, uint32_t baud);
 /**
  * Close the link; it no longer reopens by itself. Safe on a closed link;
- * does nothing for a NULL @p s. Never blocks.
+ * does nothing for a NULL @p s. Never blocks. Cost: one close() (and libserialport's
+ * free of its port structure); never allocates.
  * @param s  the link
  */
 void xf_serial_close(xf_serial *s);
@@ -127,6 +139,10 @@ void xf_serial_close(xf_serial *s);
  * ::XF_OK, ::XF_ERR_CLOSED or ::XF_ERR_IO (never ::XF_ERR_AGAIN); read
  * returns ::XF_OK, ::XF_ERR_CLOSED or ::XF_ERR_IO. Does nothing for a NULL
  * @p hal.
+ *
+ * Cost per call: read, one poll() and at most one read(); write, write() calls until every
+ * byte is taken (poll() between them). Neither allocates, except that a reopen after a
+ * hang-up costs what xf_serial_open() does.
  * @param s    the link
  * @param hal  receives the link's functions
  */
@@ -150,6 +166,7 @@ typedef struct xf_serial_port_info {
 /**
  * Call @p cb for each serial port libserialport finds. XF_ERR_IO if listing fails.
  * Blocks while the system is asked for its ports (no device is opened).
+ * Allocates: libserialport builds the list on the heap, freed before this returns.
  * @param cb    called once per port, with the port's description (valid
  *   during the call only) and @p user
  * @param user  passed to @p cb
@@ -193,6 +210,9 @@ void xf_udp_config_init(xf_udp_config *cfg);
  * non-blocking socket. Unlike TCP there is no connection: the link is usable
  * at once. May block while a host name resolves (DNS); a numeric address
  * does not. On failure the link is closed and u->error says why.
+ *
+ * Cost: getaddrinfo() (which allocates, freed before this returns, and may ask DNS), then
+ * socket(), bind() and a few setsockopt() calls.
  * @param u    the link's storage
  * @param cfg  where to send and listen; NULL means xf_udp_config_init()'s
  *   defaults (a zero gcu_port is not replaced by the default)
@@ -202,6 +222,7 @@ void xf_udp_config_init(xf_udp_config *cfg);
 xf_err xf_udp_open(xf_udp *u, const xf_udp_config *cfg);
 /**
  * Close the link. Safe on a closed link; does nothing for a NULL @p u.
+ * Cost: one close(); never allocates.
  * @param u  the link
  */
 void xf_udp_close(xf_udp *u);
@@ -215,6 +236,9 @@ void xf_udp_close(xf_udp *u);
  * while a whole packet still fits in the buffer, dropping (and counting)
  * those from other sources; it returns ::XF_OK, ::XF_ERR_CLOSED (closed) or
  * ::XF_ERR_IO. Does nothing for a NULL @p hal.
+ *
+ * Cost per call: write, one sendto(); read, recvfrom() until the socket is empty or the
+ * buffer full (at most 64 calls), O(bytes). Neither allocates.
  * @param u    the link
  * @param hal  receives the link's functions
  */
@@ -268,6 +292,10 @@ void xf_tcp_config_init(xf_tcp_config *cfg);
  *
  * May block while a host name resolves (DNS); a numeric address does not.
  * Never waits for the connection: xf_tcp_wait() does.
+ *
+ * Cost: getaddrinfo() (which allocates, freed before this returns, and may ask DNS), then
+ * socket() and a non-blocking connect(). Reconnects reuse the address: they never resolve or
+ * allocate.
  * @param t    the link's storage
  * @param cfg  where to connect; NULL means xf_tcp_config_init()'s defaults.
  *   A NULL host, a zero connect_timeout_ms and a zero retry_min_ms are
@@ -280,7 +308,7 @@ xf_err xf_tcp_open(xf_tcp *t, const xf_tcp_config *cfg);
 /**
  * Block up to @p timeout_ms until connected: XF_OK, or XF_ERR_TIMEOUT / XF_ERR_CLOSED with error.text.
  * Blocks (polling every 5 ms at most) by design: for start-up, before the
- * client loop runs.
+ * client loop runs. Cost: one poll() per 5 ms waited; never allocates.
  * @param t           the link, opened
  * @param timeout_ms  how long to wait at most
  * @return ::XF_OK (connected), ::XF_ERR_ARG (NULL @p t, or not opened),
@@ -290,7 +318,7 @@ xf_err xf_tcp_open(xf_tcp *t, const xf_tcp_config *cfg);
 xf_err xf_tcp_wait(xf_tcp *t, uint32_t timeout_ms);
 /**
  * Close the link; it no longer reconnects. Safe on a closed link; does
- * nothing for a NULL @p t.
+ * nothing for a NULL @p t. Cost: one close(); never allocates.
  * @param t  the link
  */
 void xf_tcp_close(xf_tcp *t);
@@ -304,6 +332,10 @@ void xf_tcp_close(xf_tcp *t);
  * ::XF_ERR_CLOSED and reconnects after the back-off. Write returns ::XF_OK or
  * ::XF_ERR_CLOSED; read ::XF_OK or ::XF_ERR_CLOSED. The fd function gives -1
  * unless connected. Does nothing for a NULL @p hal.
+ *
+ * Cost per call: read, one recv(); write, send() calls until every byte is taken (poll()
+ * between them); while not connected, one poll() on the attempt, or socket() and connect()
+ * once the back-off has passed. Neither allocates.
  * @param t    the link
  * @param hal  receives the link's functions
  */

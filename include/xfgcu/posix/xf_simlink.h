@@ -2,7 +2,7 @@
  * @file
  * @brief The GCU side of a link, for the simulator: a pseudo-terminal, a
  * UDP port or a TCP server that a simulated GCU answers on, behind the
- * xf_hal interface (CMake target xfgcu::posix, above the links).
+ * xf_hal interface (CMake target xfgcu::simlink, above the links).
  */
 #ifndef XF_SIMLINK_H
 #define XF_SIMLINK_H
@@ -55,7 +55,8 @@ typedef struct xf_simlink {
  * at close, and while disconnected, only if it is still the one made here
  * to this pty. When it cannot be made,
  * the error is returned but the pty stays open: call xf_simlink_close()
- * after any failure. Never waits.
+ * after any failure. Never waits. Cost: a few system calls (posix_openpt(), open(),
+ * tcsetattr(), symlink()); never allocates.
  * @param l             the link's storage
  * @param symlink_path  a stable path for the host to open (shorter than 256 bytes), or NULL
  * @return ::XF_OK, ::XF_ERR_ARG (NULL @p l, or @p symlink_path too long), or
@@ -65,7 +66,8 @@ xf_err xf_simlink_open_pty(xf_simlink *l, const char *symlink_path);
 /**
  * Listen for UDP on @p host (NULL: 127.0.0.1) : @p port (0: any free, then l->port).
  * Replies go to whoever sent the last packet. May block while a host name
- * resolves (DNS).
+ * resolves (DNS). Cost: getaddrinfo() (which allocates, freed before this
+ * returns), socket() and bind().
  * @param l     the link's storage
  * @param host  address to bind, or NULL for 127.0.0.1
  * @param port  port to bind, 0 for any free one
@@ -77,7 +79,8 @@ xf_err xf_simlink_open_udp(xf_simlink *l, const char *host, uint16_t port);
 /**
  * TCP server on @p host (NULL: 127.0.0.1) : @p port (0: any free).
  * Serves one host at a time and refuses others, like the real GCU. May
- * block while a host name resolves (DNS).
+ * block while a host name resolves (DNS). Cost: getaddrinfo() (which
+ * allocates, freed before this returns), socket(), bind() and listen().
  * @param l     the link's storage
  * @param host  address to bind, or NULL for 127.0.0.1
  * @param port  port to bind, 0 for any free one (then l->port)
@@ -107,6 +110,9 @@ xf_err xf_simlink_udp_reply_to(xf_simlink *l, const char *host, uint16_t port);
  * server accepts a waiting host there) and returns ::XF_ERR_CLOSED while no
  * host is connected or the link is disconnected; write waits at most
  * 100 ms for a full buffer (pty, TCP). Does nothing for a NULL @p hal.
+ * Cost per call: read, accept() until none waits (TCP) and one read(),
+ * recvfrom() or recv(); write, one sendto() (UDP) or write() and send()
+ * calls until every byte is taken. Neither allocates.
  * @param l    the link
  * @param hal  receives the link's functions
  */
@@ -153,10 +159,26 @@ typedef struct xf_simlink_wire {
 void xf_simlink_wire_init(xf_simlink_wire *w, const xf_hal *inner, uint32_t seed, xf_hal *out);
 /**
  * Close the link and remove its symlink. Safe on a closed link; does
- * nothing for a NULL @p l.
+ * nothing for a NULL @p l. Cost: readlink() and unlink() for the symlink,
+ * one close() per descriptor; never allocates.
  * @param l  the link
  */
 void xf_simlink_close(xf_simlink *l);
+
+/**
+ * The spec a host opens (xf_link_open() of posix/xf_link.h) to reach the simulator's end of a
+ * link @p gcu (for tests, demonstrations and examples with a built-in simulated GCU):
+ * "tcp:127.0.0.1:PORT", "udp:127.0.0.1:PORT,local=0" (any free local port) or "serial:PATH"
+ * (the pty's symlink when it has one, else its slave). A TCP or UDP link bound to any address
+ * (0.0.0.0, ::) is reached on the loopback address. Like snprintf(): writes at most @p cap
+ * bytes, NUL-terminated when @p cap is not 0. Never blocks.
+ * @param gcu  the simulator's link, open
+ * @param buf  receives the spec (may be NULL when @p cap is 0)
+ * @param cap  the size of @p buf
+ * @return the length of the whole spec (not counting the NUL); 0, with an empty @p buf, for a
+ *   NULL @p gcu or one never opened
+ */
+size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap);
 
 XF_END_DECLS
 
