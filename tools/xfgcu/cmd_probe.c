@@ -37,7 +37,6 @@
 #include "probe_ask.h"
 
 #define PROBE_MAX     40     /* orders in the report: planned, sent or not */
-XF_STATIC_ASSERT(PROBE_MAX >= XF_ORDER_COUNT, probe_reports_every_order);
 #define LEGS_MAX      4      /* motions of --move */
 #define NULLS_AFTER   3u     /* null packets after the last command, before closing */
 #define TOLERANCE_DEG 0.5    /* a point is reached within this */
@@ -46,6 +45,8 @@ XF_STATIC_ASSERT(PROBE_MAX >= XF_ORDER_COUNT, probe_reports_every_order);
 #define SETTLE_MS     5000u  /* how long neutral may take to come to rest */
 #define STILL_MS      300u   /* at rest: the attitude moved less than STILL_DEG for this long */
 #define STILL_DEG     0.1
+
+XF_STATIC_ASSERT(PROBE_MAX >= XF_ORDER_COUNT, probe_reports_every_order);
 
 void help_probe(FILE *out)
 {
