@@ -4,26 +4,26 @@
 #
 #   scripts/bench.sh            build (gcc -O2, Release) with the nibble CRC table and with
 #                               XFGCU_CRC_TABLE_256=ON in build/bench/, generate the streams,
-#                               print the tables. About three minutes on a 2-core machine
-#                               (2 tables x 15 streams x 8 chunk sizes x 2 callgrind runs over
-#                               256 and 512 KiB, the two of each pair side by side).
+#                               print the tables. About two minutes on a 2-core machine
+#                               (2 tables x 15 streams x 8 chunk sizes, a callgrind run over
+#                               512 KiB each, as many at once as there are cores).
 #   scripts/bench.sh profile    the same builds with -g: where the instructions go, per
 #                               function of the headers (inlined code included), for the
 #                               512 KiB valid, uart3, adversarial and dense streams fed in
 #                               4096-byte chunks (needs python3).
 #
-# Ir per byte = (Ir(parse 512 KiB) - Ir(parse 256 KiB)) / 256 KiB, counting only inside
-# xf_parser_feed (--toggle-collect; everything it calls included): the parser's own
-# cost, not the benchmark's feeding loop (about 24 more per call at one byte per call);
-# start-up and file reading are excluded; the 256 KiB
-# stream is a prefix of the 512 KiB one. The same sizes at every chunk size (1, 2, 3, 4,
-# 8, 16, 64, 4096 bytes per feed call). The parser's cost per byte is steady: 1 and 2 MiB
-# streams give the same figures within 0.1 Ir/byte (measured on valid and dense at 1 and 16
-# per call) for four times the callgrind time. The CRC floor is xb_crc
+# Ir per byte = Ir(parse 512 KiB) / 512 KiB, counting only inside xf_parser_feed
+# (--toggle-collect; everything it calls included): the parser's own cost, not the
+# benchmark's feeding loop (about 24 more per call at one byte per call); start-up and file
+# reading are outside the function. What the parser does once per run is a few hundred
+# instructions, under 0.01 Ir/byte; the cost per byte is steady: the difference of a 2 MiB and
+# a 1 MiB run, or of 512 and 256 KiB, gives the same figures within 0.15 Ir/byte (measured on
+# valid, dense and hostile at 1, 16 and 4096 per call). The same size at every chunk size (1,
+# 2, 3, 4, 8, 16, 64, 4096 bytes per feed call). The CRC floor is xb_crc
 # (xf_crc16_update over the same bytes, 4096 per call) measured the same way; the
 # "valid floor" row is xb_floor_feed (bench/xfgcu_bench.c) over the valid stream: the
 # search, store and CRC that the valid stream needs, by a reference that keeps no other rule.
-# Per packet likewise with 2N and N packets.
+# Per packet likewise over N packets.
 # Frames found and the worst delay come from plain runs over the 512 KiB streams
 # at every chunk size. The speed targets are printed (ok / OVER), not asserted; the
 # promises fail the script (exit 1): every intact frame of the realistic streams found at
@@ -66,20 +66,25 @@ per() { # (a - b) / d, one decimal
   awk -v a="$1" -v b="$2" -v d="$3" 'BEGIN { printf "%.1f", (a - b) / d }'
 }
 
-# ir_per BIN FN D SUB A1 A2 [ARGS...]: (Ir(SUB A2 ARGS) - Ir(SUB A1 ARGS)) / D inside FN; the
-# two callgrind runs side by side (a core each: on 2 cores the script takes half the time)
-ir_per() {
-  local bin="$1" fn="$2" d="$3" sub="$4" a1="$5" a2="$6" o1 o2 p1 p2
-  shift 6
-  o1=$(mktemp "$bdir/ir.XXXXXX")
-  o2=$(mktemp "$bdir/ir.XXXXXX")
-  ir "$bin" "$fn" "$sub" "$a1" "$@" >"$o1" &
-  p1=$!
-  ir "$bin" "$fn" "$sub" "$a2" "$@" >"$o2" &
-  p2=$!
-  wait "$p1" && wait "$p2" || { rm -f "$o1" "$o2"; exit 1; }
-  per "$(cat "$o2")" "$(cat "$o1")" "$d"
-  rm -f "$o1" "$o2"
+# ir_div BIN FN D ARGS...: the Ir inside FN per unit of D (bytes, packets)
+ir_div() {
+  local bin="$1" fn="$2" d="$3"
+  shift 3
+  per "$(ir "$bin" "$fn" "$@")" 0 "$d"
+}
+
+# bg OUT CMD...: CMD's output into OUT, in the background, at most one job per core running
+cores=$(nproc)
+bg() {
+  local out="$1"
+  shift
+  "$@" >"$out" &
+  while [ "$(jobs -rp | wc -l)" -ge "$cores" ]; do wait -n; done
+}
+# got OUT: what a bg job wrote (after wait); a failed one wrote nothing
+got() {
+  [ -s "$1" ] || { echo "bench.sh: a callgrind run failed ($1)" >&2; exit 1; }
+  cat "$1"
 }
 
 t0=$(date +%s)
@@ -94,14 +99,13 @@ build "t256$suffix" ON
 # valid first: the other rows are compared with it
 kinds=(valid noisy uart4 uart3 adversarial hostile dense storm h0run pairs cpairs mixed mixed79 credit chain)
 chunks=(1 2 3 4 8 16 64 4096)
-small=256k big=512k
-D=262144 # bytes of the small stream: the difference between the two
+big=512k
+D=524288 # its bytes
 streams="$bdir/streams"
 mkdir -p "$streams"
 gen="$bdir/nibble$suffix/bench/xfgcu_bench"
 declare -A inserted
 for k in "${kinds[@]}"; do
-  "$gen" gen "$k" $small "$streams/$k-$small.bin" >/dev/null
   # the first number gen prints: frames inserted intact
   inserted[$k]=$("$gen" gen "$k" $big "$streams/$k-$big.bin" | awk '{print $1}')
 done
@@ -115,7 +119,7 @@ if [ "$mode" = profile ]; then
         "$bdir/$t$suffix/bench/xfgcu_bench" parse "$streams/$k-$big.bin" --no-delay >/dev/null 2>&1
       echo
       echo "== $t table, $k stream (512 KiB): self instructions inside xb_parse"
-      python3 bench/cg_breakdown.py "$out" $((2 * D))
+      python3 bench/cg_breakdown.py "$out" $D
     done
   done
   echo
@@ -145,9 +149,14 @@ for t in nibble t256; do
   b="$bdir/$t$suffix/bench/xfgcu_bench"
   worst="" worst_at=""
   for k in "${kinds[@]}"; do
+    # the chunk sizes of a stream, a callgrind run per core at once
     for c in "${chunks[@]}"; do
-      res[$t.$k.$c]=$(ir_per "$b" xf_parser_feed $D parse "$streams/$k-$small.bin" "$streams/$k-$big.bin" \
-        --chunk "$c" --no-delay)
+      bg "$bdir/ir.$c" ir_div "$b" xf_parser_feed $D parse "$streams/$k-$big.bin" --chunk "$c" --no-delay
+    done
+    bg "$bdir/ir.crc" ir_div "$b" xb_crc $D crc "$streams/$k-$big.bin"
+    wait
+    for c in "${chunks[@]}"; do
+      res[$t.$k.$c]=$(got "$bdir/ir.$c")
       if [ -z "$worst" ] || awk -v a="${res[$t.$k.$c]}" -v w="$worst" 'BEGIN { exit !(a > w) }'; then
         worst=${res[$t.$k.$c]} worst_at="$k, chunk $c"
       fi
@@ -159,7 +168,7 @@ for t in nibble t256; do
       delay[$t.$k.$c]=$(sed -n 's/.*worst_delay=\([0-9]*\).*/\1/p' <<<"$line")
       grep -q unlocated <<<"$line" && delay[$t.$k.$c]="${delay[$t.$k.$c]}?"
     done
-    res[$t.$k.crc]=$(ir_per "$b" xb_crc $D crc "$streams/$k-$small.bin" "$streams/$k-$big.bin")
+    res[$t.$k.crc]=$(got "$bdir/ir.crc")
     mark="" dmax=0 per_chunk=""
     for c in "${chunks[@]}"; do
       [ "${found[$t.$k.$c]}" != "${found[$t.$k.4096]}" ] && mark="!"
@@ -177,14 +186,17 @@ for t in nibble t256; do
   done
   # the floor on the valid stream: search, store and CRC only (xb_floor_feed)
   for c in "${chunks[@]}"; do
-    res[$t.floor.$c]=$(ir_per "$b" xb_floor_feed $D floor "$streams/valid-$small.bin" "$streams/valid-$big.bin" --chunk "$c")
+    bg "$bdir/ir.floor.$c" ir_div "$b" xb_floor_feed $D floor "$streams/valid-$big.bin" --chunk "$c"
   done
+  bg "$bdir/ir.decode" ir_div "$b" xb_parse $D decode "$streams/valid-$big.bin" --no-delay
+  wait
+  for c in "${chunks[@]}"; do res[$t.floor.$c]=$(got "$bdir/ir.floor.$c"); done
   cols=()
   for c in "${chunks[@]}"; do cols+=("${res[$t.floor.$c]}"); done
   hdr "$t" "valid floor" "${cols[@]}" "" "(floor)" ""
   for c in "${chunks[@]}"; do echo "ir $t floor $c ${res[$t.floor.$c]}" >>"$results"; done
   # the whole receive path once, as before: parse + xf_frame_gcu + xf_feedback_decode
-  res[$t.decode]=$(ir_per "$b" xb_parse $D decode "$streams/valid-$small.bin" "$streams/valid-$big.bin" --no-delay)
+  res[$t.decode]=$(got "$bdir/ir.decode")
   hdr "$t" "valid+decode" - - - - - - - "${res[$t.decode]}" "" "(parse+decode)" ""
   echo "worst Ir/byte over every stream and chunk: $worst ($worst_at)"
   res[$t.worst]="$worst ($worst_at)"
@@ -199,8 +211,11 @@ printf '%-8s %-28s %10s\n' table operation "Ir/packet"
 printf '%-8s %-28s %10s\n' -------- ---------------------------- ----------
 for t in nibble t256; do
   b="$bdir/$t$suffix/bench/xfgcu_bench"
-  pk=$(ir_per "$b" xb_pack $N pack $N $((2 * N)))
-  up=$(ir_per "$b" xb_unpack $N unpack $N $((2 * N)))
+  bg "$bdir/ir.pack" ir_div "$b" xb_pack $N pack $N
+  bg "$bdir/ir.unpack" ir_div "$b" xb_unpack $N unpack $N
+  wait
+  pk=$(got "$bdir/ir.pack")
+  up=$(got "$bdir/ir.unpack")
   printf '%-8s %-28s %10s\n' "$t" "xf_host_pack (72/75 bytes)" "$pk"
   printf '%-8s %-28s %10s\n' "$t" "xf_gcu_unpack (72/73 bytes)" "$up"
   echo "pack $t $pk" >>"$results"
