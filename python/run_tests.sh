@@ -31,4 +31,8 @@ if [ -z "${XFGCU_TEST_INSTALLED:-}" ]; then
 fi
 export PYTHONDONTWRITEBYTECODE=1 # nothing written into the source tree
 cd "$here/tests"
-"$python" -m pytest -q -p no:cacheprovider . # not exec: the EXIT trap removes a temporary build
+# The tests wait on sockets and subprocesses more than they compute: four at once with pytest-xdist
+# (scripts/setup.sh --dev installs it), one after the other without it.
+parallel=""
+if "$python" -c "import xdist" 2>/dev/null; then parallel="-n 4"; fi
+"$python" -m pytest -q -p no:cacheprovider $parallel . # not exec: the EXIT trap removes a temporary build
