@@ -32,6 +32,13 @@ void tool_result_free(tool_result *r);
  */
 char **spawn_argv(int argc, const char *const *args);
 
+/**
+ * A local port bound on 127.0.0.1 (any free one; @p type SOCK_DGRAM or SOCK_STREAM), its number
+ * written as text into @p port. The socket is returned, bound and not listening: held open, it
+ * refuses connections or swallows datagrams; closed, the port is free for a program to take.
+ */
+int hold_port(int type, char *port, size_t cap);
+
 /** Number of lines (newline-terminated) in @p text. */
 size_t count_lines(const char *text);
 /**

@@ -39,20 +39,7 @@ extern char **environ;
 /* ---- helpers ---------------------------------------------------------------------------- */
 
 /* A port nobody uses now (bound, read, released), for a program started before its peer. */
-static void free_port(int type, char *buf, size_t cap)
-{
-    struct sockaddr_in a;
-    socklen_t len = sizeof(a);
-    int fd = socket(AF_INET, type, 0);
-    assert_true(fd >= 0);
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
-    snprintf(buf, cap, "%u", (unsigned)ntohs(a.sin_port));
-    close(fd);
-}
+static void free_port(int type, char *buf, size_t cap) { close(hold_port(type, buf, cap)); }
 
 /* The JSON object on line @p i (0-based) of @p text; NULL past the end. */
 static json_t *line_at(const char *text, size_t i)

@@ -190,22 +190,6 @@ static void test_send_osd_follows_gcu(void **state)
 
 /* ---- no GCU -------------------------------------------------------------------------- */
 
-/* A local port that refuses connections (bound, not listening) or swallows datagrams, held while in use. */
-static int hold_port(int type, char *port, size_t cap)
-{
-    struct sockaddr_in a;
-    socklen_t len = sizeof(a);
-    int fd = socket(AF_INET, type, 0);
-    assert_true(fd >= 0);
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
-    snprintf(port, cap, "%u", (unsigned)ntohs(a.sin_port));
-    return fd;
-}
-
 /* The simulator answers to a fixed address and port (the vendor's GCU: the LAN broadcast address,
  * port 2338), not to the sender: a host listening there gets the replies, one listening elsewhere
  * does not. */

@@ -504,19 +504,10 @@ static void test_probe_move(void **state)
 
 static void test_probe_no_gcu(void **state)
 {
-    struct sockaddr_in a;
-    socklen_t len = sizeof(a);
     char port[8];
-    int fd = socket(AF_INET, SOCK_DGRAM, 0); /* a port that swallows datagrams */
+    int fd = hold_port(SOCK_DGRAM, port, sizeof(port)); /* a port that swallows datagrams */
     tool_result r;
     (void)state;
-    assert_true(fd >= 0);
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
-    snprintf(port, sizeof(port), "%u", (unsigned)ntohs(a.sin_port));
     r = run_tool(NULL, "--udp", "127.0.0.1", "--gcu-port", port, "--local-port", "0", "--timeout", "300", "probe",
                  "--json", NULL);
     assert_failure(&r, 3, "no answer from the GCU on udp 127.0.0.1:", "within 300 ms", NULL);
