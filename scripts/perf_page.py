@@ -356,7 +356,7 @@ def render(b, m, loc, c, lp, campaign, ci):
     p += fuzz_rows(campaign)
     p += ["", "## How to reproduce", "", "```sh",
           "scripts/perf_page.py          # every figure of this page, then the page",
-          "scripts/bench.sh              # the parser tables (both CRC tables), three to ten minutes",
+          "scripts/bench.sh              # the parser tables (both CRC tables), two minutes on 2 cores",
           "scripts/firmware_loop.sh      # the firmware example under qemu against xfgcu sim",
           "XF_REORDER_FULL=1 build/gcc/tests/client/test_client_reorder   # the link judgement's figures",
           "scripts/bench.sh profile      # where the instructions go, per function (-g builds)",
