@@ -6,29 +6,18 @@
  * packets go both ways through the xf_hal that xf_link_hal() gives.
  */
 #define _GNU_SOURCE
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-
 #include "hal_test.h"
 #include "xfgcu/posix/xf_link.h"
 
-/* A socket of @p type bound to 127.0.0.1, any free port (in *port); listening when a stream. */
+#include "../loopback.h" /* after cmocka.h, which hal_test.h includes */
+
+/* A socket of @p type on 127.0.0.1, any free port (in *port); listening when a stream. */
 static int loopback_socket(int type, uint16_t *port)
 {
-    struct sockaddr_in a;
-    socklen_t len = sizeof(a);
-    int fd = socket(AF_INET, type, 0);
-    assert_true(fd >= 0);
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
+    int fd = test_loopback_socket(type, port);
     if (type == SOCK_STREAM) {
         assert_int_equal(listen(fd, 1), 0);
     }
-    *port = ntohs(a.sin_port);
     return fd;
 }
 

@@ -18,11 +18,10 @@
 #include <string.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <spawn.h>
 #include <cmocka.h>
+
+#include "../../tests/loopback.h"
 
 #include "xfgcu/xfgcu.h"
 
@@ -332,15 +331,8 @@ const char *str_key(const json_t *obj, const char *key)
 
 int hold_port(int type, char *port, size_t cap)
 {
-    struct sockaddr_in a;
-    socklen_t len = sizeof(a);
-    int fd = socket(AF_INET, type, 0);
-    assert_true(fd >= 0);
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
-    snprintf(port, cap, "%u", (unsigned)ntohs(a.sin_port));
+    uint16_t p = 0;
+    int fd = test_loopback_socket(type, &p);
+    snprintf(port, cap, "%u", (unsigned)p);
     return fd;
 }
