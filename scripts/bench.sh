@@ -15,10 +15,9 @@
 # Ir per byte = Ir(parse 512 KiB) / 512 KiB, counting only inside xf_parser_feed
 # (--toggle-collect; everything it calls included): the parser's own cost, not the
 # benchmark's feeding loop (about 24 more per call at one byte per call); start-up and file
-# reading are outside the function. What the parser does once per run is a few hundred
-# instructions, under 0.01 Ir/byte; the cost per byte is steady: the difference of a 2 MiB and
-# a 1 MiB run, or of 512 and 256 KiB, gives the same figures within 0.15 Ir/byte (measured on
-# valid, dense and hostile at 1, 16 and 4096 per call). The same size at every chunk size (1,
+# reading are outside the function. One run gives what the difference of two did (512 KiB less
+# its 256 KiB prefix, per byte): the 256 Ir/byte figures of the two tables agree within 0.2
+# (the tables each method printed, compared). The same size at every chunk size (1,
 # 2, 3, 4, 8, 16, 64, 4096 bytes per feed call). The CRC floor is xb_crc
 # (xf_crc16_update over the same bytes, 4096 per call) measured the same way; the
 # "valid floor" row is xb_floor_feed (bench/xfgcu_bench.c) over the valid stream: the

@@ -206,14 +206,15 @@ static void check_orders(sim_proc *s, const json_t *p, int v2, const char *const
         n++;
     }
     assert_int_equal(n, 7u + (v2 ? 10u : 0u));
-    /* every order of the codec's table reported once, sent or not */
-    assert_int_equal(json_array_size(orders), XF_ORDER_COUNT);
+    /* every order of the codec's table but null reported once, sent or not: an order added to the table
+     * fails here until probe plans it or says in plan_never() why it never sends it */
+    assert_int_equal(json_array_size(orders), XF_ORDER_COUNT - 1u); /* the null order: every packet */
     for (i = 0; i < XF_ORDER_COUNT; i++) {
         size_t j, times = 0;
         for (j = 0; j < json_array_size(orders); j++) {
             times += int_key(json_array_get(orders, j), "order") == xf_order_at(i)->order;
         }
-        assert_int_equal(times, 1u);
+        assert_int_equal(times, xf_order_at(i)->order != XF_ORDER_NULL);
     }
     for (i = 0; moving[i] != NULL; i++) { /* said twice, as the contract */
         uint8_t code = 0;
