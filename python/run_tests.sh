@@ -31,8 +31,6 @@ if [ -z "${XFGCU_TEST_INSTALLED:-}" ]; then
 fi
 export PYTHONDONTWRITEBYTECODE=1 # nothing written into the source tree
 cd "$here/tests"
-# The tests wait on sockets and subprocesses more than they compute: four at once with pytest-xdist
-# (scripts/setup.sh --dev installs it), one after the other without it.
-parallel=""
-if "$python" -c "import xdist" 2>/dev/null; then parallel="-n 4"; fi
-"$python" -m pytest -q -p no:cacheprovider $parallel . # not exec: the EXIT trap removes a temporary build
+# One test at a time: several processes' UDP clients and simulators on ephemeral ports can reach
+# one another's (a closed test's client, a port reused), and tests count what a simulator executed.
+"$python" -m pytest -q -p no:cacheprovider . # not exec: the EXIT trap removes a temporary build
