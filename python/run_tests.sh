@@ -7,7 +7,7 @@
 # this source tree (configured with -DXFGCU_BUILD_PYTHON=ON here if it was not), and its xfgcu
 # program is what the tests compare with. Without BUILD_DIR, one is made in a temporary
 # directory (and removed).
-# Environment: PYTHON (default /usr/bin/python3); XFGCU_TEST_INSTALLED=1 tests the xfgcu package
+# Environment: PYTHON (default /usr/bin/python3); XFGCU_TEST_WORKERS (default 4); XFGCU_TEST_INSTALLED=1 tests the xfgcu package
 # PYTHON imports (a pip-installed one, e.g. PYTHON=venv/bin/python) instead of this tree's.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
@@ -31,6 +31,16 @@ if [ -z "${XFGCU_TEST_INSTALLED:-}" ]; then
 fi
 export PYTHONDONTWRITEBYTECODE=1 # nothing written into the source tree
 cd "$here/tests"
-# One test at a time: several processes' UDP clients and simulators on ephemeral ports can reach
-# one another's (a closed test's client, a port reused), and tests count what a simulator executed.
-"$python" -m pytest -q -p no:cacheprovider . # not exec: the EXIT trap removes a temporary build
+# Four workers (pytest-xdist), each in a network namespace of its own (own_network.sh): most tests
+# wait on a simulator, and tests count what their simulator executed, which a client of another
+# worker must never reach. Where namespaces or xdist are not to be had: one test at a time.
+# XFGCU_TEST_WORKERS=1 asks for one at a time.
+workers=${XFGCU_TEST_WORKERS:-4}
+set -- -q -p no:cacheprovider
+if [ "$workers" -gt 1 ] && "$python" -c 'import xdist' 2>/dev/null &&
+    ./own_network.sh "$python" -c '' 2>/dev/null; then
+    set -- "$@" -p xdist --dist load --tx "$workers*popen//python='$here/tests/own_network.sh' '$python'"
+else
+    [ "$workers" -le 1 ] || echo "run_tests.sh: one test at a time (no pytest-xdist, or no network namespace: unshare --net, ip)"
+fi
+"$python" -m pytest "$@" . # not exec: the EXIT trap removes a temporary build

@@ -11,7 +11,7 @@ if [ "${1:-}" = "--dev" ]; then
   dev=1
   pkgs+=(libcmocka-dev doxygen groff-base clang clang-tidy clang-format cppcheck libclang-rt-14-dev valgrind g++
          gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf socat
-         python3-pytest python3-hypothesis mypy tshark
+         python3-pytest python3-pytest-xdist python3-hypothesis mypy tshark iproute2
          gcc-s390x-linux-gnu libc6-dev-s390x-cross qemu-user libcmocka-dev:s390x libserialport-dev:s390x)
 fi
 

@@ -23,6 +23,11 @@ settings.register_profile(
 )
 settings.load_profile("xfgcu")
 
+def pytest_configure(config: pytest.Config) -> None:
+    if "PYTEST_XDIST_WORKER" not in os.environ:  # pytest itself, or xdist's controller: the workers see it
+        os.environ["XFGCU_TEST_NETWORK"] = os.readlink("/proc/self/ns/net")
+
+
 def pytest_report_header() -> str:
     return f"xfgcu {xfgcu.__version__} from {os.path.dirname(xfgcu.__file__)}"
 

@@ -3,12 +3,21 @@
 from __future__ import annotations
 
 import json
+import os
 import time
 
 import pytest
 
 import xfgcu
 from conftest import run, wait_until
+
+
+def test_workers_share_no_network() -> None:
+    """Run side by side (run_tests.sh), each pytest worker has a network of its own: a client
+    left talking by one worker's test can never reach the simulator of another's."""
+    if "PYTEST_XDIST_WORKER" in os.environ:
+        here = os.readlink("/proc/self/ns/net")
+        assert here != os.environ["XFGCU_TEST_NETWORK"], "a worker shares its network (tests/own_network.sh)"
 
 
 def test_photo_and_results(sim: xfgcu.Simulator) -> None:
