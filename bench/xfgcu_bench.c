@@ -1,13 +1,15 @@
 /*
  * xfgcu_bench - benchmark of the codec: streaming parser, pack, unpack.
  *
- *   xfgcu_bench parse FILE [--chunk N] [--no-delay]
+ *   xfgcu_bench parse FILE [--chunk N[,N...]] [--no-delay]
  *                                          feed FILE to the parser (GCU -> host) in chunks
  *                                          of exactly N bytes (the last one shorter; N >= 1,
  *                                          default 4096); prints the number of valid frames
  *                                          first, then the parser's counters, then
  *                                          worst_delay=D (a second, unmeasured run; see
- *                                          below), which --no-delay leaves out
+ *                                          below), which --no-delay leaves out. Several
+ *                                          sizes: a fresh parser and a line for each, in
+ *                                          turn (so does every command that takes --chunk)
  *   xfgcu_bench decode FILE [--chunk N] [--no-delay]
  *                                          parse + xf_frame_gcu (no second CRC) + xf_feedback_decode
  *   xfgcu_bench crc FILE [--chunk N]       the CRC floor: xf_crc16_update over the same bytes
@@ -33,6 +35,9 @@
  * N_BYTES, N and the chunk accept a k or m suffix (KiB, MiB). The measured
  * functions (callgrind --toggle-collect, scripts/bench.sh) are xb_parse (parse,
  * decode), xb_crc, xb_floor_feed, xb_pack and xb_unpack; nothing else runs inside them.
+ * One pass over FILE per chunk size is one call of xb_parse, xb_crc or xb_floor_run,
+ * never inlined, so that callgrind --dump-after=FUNCTION gives a count per chunk size
+ * from a single run (a valgrind start-up costs more than a pass over 512 KiB).
  *
  * worst_delay: the parser promises no added latency, an intact frame comes out
  * of the feed call that hands over its last byte. A separate run (xb_delay, the
@@ -117,6 +122,12 @@
 #endif
 
 #define XB_CHUNK 4096u
+#define XB_CHUNKS 16 /* chunk sizes in one --chunk list */
+
+typedef struct xb_chunks {
+    size_t size[XB_CHUNKS];
+    size_t n;
+} xb_chunks;
 
 /* ---- deterministic PRNG (xorshift64*) ---------------------------------- */
 
@@ -680,7 +691,7 @@ XB_NOINLINE int xb_floor_feed(xb_floor *s, const uint8_t *d, size_t n, size_t *u
 }
 
 /* Feed d[0..n) to the floor as xb_parse feeds the parser; the frames found. */
-static size_t xb_floor_run(const uint8_t *d, size_t n, size_t chunk, size_t *hits)
+XB_NOINLINE static size_t xb_floor_run(const uint8_t *d, size_t n, size_t chunk, size_t *hits)
 {
     xb_floor s;
     size_t off, frames = 0;
@@ -913,10 +924,10 @@ static void xb_print_delay(const xb_delay_result *dr)
 static int xb_usage(void)
 {
     size_t k;
-    fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N] [--no-delay]\n"
-                    "       xfgcu_bench decode FILE [--chunk N] [--no-delay]\n"
-                    "       xfgcu_bench crc FILE [--chunk N]\n"
-                    "       xfgcu_bench floor FILE [--chunk N]\n"
+    fprintf(stderr, "usage: xfgcu_bench parse FILE [--chunk N[,N...]] [--no-delay]\n"
+                    "       xfgcu_bench decode FILE [--chunk N[,N...]] [--no-delay]\n"
+                    "       xfgcu_bench crc FILE [--chunk N[,N...]]\n"
+                    "       xfgcu_bench floor FILE [--chunk N[,N...]]\n"
                     "       xfgcu_bench gen ");
     for (k = 0; k < XB_KINDS; k++) {
         fprintf(stderr, "%s%s", (k > 0u) ? "|" : "", xb_kind_names[k]);
@@ -926,20 +937,45 @@ static int xb_usage(void)
                     "       xfgcu_bench time KIND N_BYTES [REPS]\n"
                     "       xfgcu_bench selftest\n"
                     "(N_BYTES, N: k and m suffixes are KiB and MiB; --chunk: bytes per feed call, >= 1,\n"
-                    " default 4096; parse prints the frames found first, then the counters and\n"
-                    " worst_delay, the latency of the parser in bytes, from a second unmeasured run)\n");
+                    " default 4096, several sizes a line each in turn; parse prints the frames found\n"
+                    " first, then the counters and worst_delay, the latency of the parser in bytes,\n"
+                    " from a second unmeasured run)\n");
     return 2;
 }
 
-/* What follows FILE: [--chunk N] [--no-delay] (the latter only where allowed). */
-static int xb_options(int argc, char **argv, int first, int delay_ok, size_t *chunk, int *delay)
+/* The chunk sizes of --chunk: N[,N...], each >= 1, at most XB_CHUNKS of them. */
+static int xb_chunk_list(const char *s, xb_chunks *c)
+{
+    char one[32];
+    c->n = 0;
+    for (;;) {
+        size_t len = strcspn(s, ",");
+        if (c->n == XB_CHUNKS || len >= sizeof(one)) {
+            return -1;
+        }
+        memcpy(one, s, len);
+        one[len] = '\0';
+        if (xb_size(one, &c->size[c->n]) != 0 || c->size[c->n] == 0u) {
+            return -1;
+        }
+        c->n++;
+        if (s[len] == '\0') {
+            return 0;
+        }
+        s += len + 1u;
+    }
+}
+
+/* What follows FILE: [--chunk N[,N...]] [--no-delay] (the latter only where allowed). */
+static int xb_options(int argc, char **argv, int first, int delay_ok, xb_chunks *chunks, int *delay)
 {
     int i;
-    *chunk = XB_CHUNK;
+    chunks->size[0] = XB_CHUNK;
+    chunks->n = 1;
     *delay = delay_ok;
     for (i = first; i < argc; i++) {
         if (strcmp(argv[i], "--chunk") == 0 && i + 1 < argc) {
-            if (xb_size(argv[++i], chunk) != 0 || *chunk == 0u) {
+            if (xb_chunk_list(argv[++i], chunks) != 0) {
                 return -1;
             }
         } else if (delay_ok && strcmp(argv[i], "--no-delay") == 0) {
@@ -951,14 +987,9 @@ static int xb_options(int argc, char **argv, int first, int delay_ok, size_t *ch
     return 0;
 }
 
-static int xb_cmd_parse(const char *path, size_t chunk, int decode, int delay)
+static void xb_parse_line(const uint8_t *d, size_t n, size_t chunk, int decode, int delay)
 {
-    size_t n = 0;
     xb_result res;
-    uint8_t *d = xb_read_file(path, &n);
-    if (d == NULL) {
-        return 1;
-    }
     xb_parse(d, n, chunk, decode, &res);
     printf("%lu frames (%lu bytes) in %lu bytes; ", (unsigned long)res.frames, (unsigned long)res.frame_bytes,
            (unsigned long)n);
@@ -972,34 +1003,38 @@ static int xb_cmd_parse(const char *path, size_t chunk, int decode, int delay)
         xb_print_delay(&dr);
     }
     printf("\n");
-    free(d);
-    return 0;
 }
 
-static int xb_cmd_crc(const char *path, size_t chunk)
+static void xb_crc_line(const uint8_t *d, size_t n, size_t chunk)
 {
-    size_t n = 0;
-    uint16_t crc;
-    uint8_t *d = xb_read_file(path, &n);
-    if (d == NULL) {
-        return 1;
-    }
-    crc = xb_crc(d, n, chunk);
+    uint16_t crc = xb_crc(d, n, chunk);
     printf("crc=0x%04X over %lu bytes in chunks of %lu\n", (unsigned)crc, (unsigned long)n, (unsigned long)chunk);
-    free(d);
-    return 0;
 }
 
-static int xb_cmd_floor(const char *path, size_t chunk)
+static void xb_floor_line(const uint8_t *d, size_t n, size_t chunk)
 {
-    size_t n = 0, hits, frames;
-    uint8_t *d = xb_read_file(path, &n);
-    if (d == NULL) {
-        return 1;
-    }
-    frames = xb_floor_run(d, n, chunk, &hits);
+    size_t hits, frames = xb_floor_run(d, n, chunk, &hits);
     printf("%lu frames (floor; %lu searches found an h0 inside a frame) in %lu bytes in chunks of %lu\n",
            (unsigned long)frames, (unsigned long)hits, (unsigned long)n, (unsigned long)chunk);
+}
+
+/* parse, decode, crc or floor (cmd: 'p', 'd', 'c', 'f') over FILE, a line per chunk size. */
+static int xb_cmd_file(char cmd, const char *path, const xb_chunks *chunks, int delay)
+{
+    size_t n = 0, i;
+    uint8_t *d = xb_read_file(path, &n);
+    if (d == NULL) {
+        return 1;
+    }
+    for (i = 0; i < chunks->n; i++) {
+        if (cmd == 'c') {
+            xb_crc_line(d, n, chunks->size[i]);
+        } else if (cmd == 'f') {
+            xb_floor_line(d, n, chunks->size[i]);
+        } else {
+            xb_parse_line(d, n, chunks->size[i], cmd == 'd', delay);
+        }
+    }
     free(d);
     return 0;
 }
@@ -1150,20 +1185,19 @@ static int xb_cmd_selftest(void)
 
 int main(int argc, char **argv)
 {
-    size_t n, chunk;
+    size_t n;
+    xb_chunks chunks;
     int delay;
     if (argc < 2) {
         return xb_usage();
     }
     if ((strcmp(argv[1], "parse") == 0 || strcmp(argv[1], "decode") == 0) && argc >= 3 &&
-        xb_options(argc, argv, 3, 1, &chunk, &delay) == 0) {
-        return xb_cmd_parse(argv[2], chunk, argv[1][0] == 'd', delay);
+        xb_options(argc, argv, 3, 1, &chunks, &delay) == 0) {
+        return xb_cmd_file(argv[1][0], argv[2], &chunks, delay);
     }
-    if (strcmp(argv[1], "crc") == 0 && argc >= 3 && xb_options(argc, argv, 3, 0, &chunk, &delay) == 0) {
-        return xb_cmd_crc(argv[2], chunk);
-    }
-    if (strcmp(argv[1], "floor") == 0 && argc >= 3 && xb_options(argc, argv, 3, 0, &chunk, &delay) == 0) {
-        return xb_cmd_floor(argv[2], chunk);
+    if ((strcmp(argv[1], "crc") == 0 || strcmp(argv[1], "floor") == 0) && argc >= 3 &&
+        xb_options(argc, argv, 3, 0, &chunks, &delay) == 0) {
+        return xb_cmd_file(argv[1][0], argv[2], &chunks, 0);
     }
     if (strcmp(argv[1], "gen") == 0 && argc == 5) {
         return xb_cmd_gen(argv[2], argv[3], argv[4]);

@@ -4,9 +4,10 @@
 #
 #   scripts/bench.sh            build (gcc -O2, Release) with the nibble CRC table and with
 #                               XFGCU_CRC_TABLE_256=ON in build/bench/, generate the streams,
-#                               print the tables. About two minutes on a 2-core machine
-#                               (2 tables x 15 streams x 8 chunk sizes, a callgrind run over
-#                               512 KiB each, as many at once as there are cores).
+#                               print the tables. Under a minute on a 2-core machine: one
+#                               callgrind run per table and stream passes over its 512 KiB once
+#                               per chunk size (valgrind's start-up costs more than a pass),
+#                               as many runs at once as there are cores.
 #   scripts/bench.sh profile    the same builds with -g: where the instructions go, per
 #                               function of the headers (inlined code included), for the
 #                               512 KiB valid, uart3, adversarial and dense streams fed in
@@ -15,11 +16,13 @@
 # Ir per byte = Ir(parse 512 KiB) / 512 KiB, counting only inside xf_parser_feed
 # (--toggle-collect; everything it calls included): the parser's own cost, not the
 # benchmark's feeding loop (about 24 more per call at one byte per call); start-up and file
-# reading are outside the function. One run gives what the difference of two did (512 KiB less
-# its 256 KiB prefix, per byte): the 256 Ir/byte figures of the two tables agree within 0.2
-# (the tables each method printed, compared). The same size at every chunk size (1,
-# 2, 3, 4, 8, 16, 64, 4096 bytes per feed call). The CRC floor is xb_crc
-# (xf_crc16_update over the same bytes, 4096 per call) measured the same way; the
+# reading are outside the function. Each pass is a call of xb_parse with a fresh parser, and
+# --dump-after=xb_parse counts each apart. The program's symbols are bound at start-up (-z now),
+# so no pass counts the binding of a libc call; a run per chunk size counted it (a few thousand
+# instructions): of the 256 figures that way, 10 were 0.1 higher. The same size at every chunk size
+# (1, 2, 3, 4, 8, 16, 64, 4096 bytes per feed call). The CRC floor is xb_crc
+# (xf_crc16_update over the valid stream, 4096 per call; its cost does not depend on the
+# bytes) measured the same way, shown in the floor row; the
 # "valid floor" row is xb_floor_feed (bench/xfgcu_bench.c) over the valid stream: the
 # search, store and CRC that the valid stream needs, by a reference that keeps no other rule.
 # Per packet likewise over N packets.
@@ -51,25 +54,21 @@ build() { # dir table256
   cmake --build "$bdir/$1" --target xfgcu_bench --parallel "$(nproc)" >/dev/null
 }
 
-# ir BIN FUNCTION ARGS...: instructions executed inside FUNCTION
+# ir BIN FN PASS D ARGS...: the instructions executed inside FN per unit of D (bytes, packets),
+# one decimal, a figure per call of PASS (one pass over the data: one per chunk size), on a line.
+# One callgrind run: --dump-after=PASS writes the count of each pass to a file of its own.
 ir() {
-  local bin="$1" fn="$2" out; shift 2
+  local bin="$1" fn="$2" pass="$3" d="$4" out i figures=()
+  shift 4
   out=$(mktemp "$bdir/cg.XXXXXX")
-  valgrind --tool=callgrind --callgrind-out-file="$out" --toggle-collect="$fn" \
+  valgrind --tool=callgrind --callgrind-out-file="$out" --toggle-collect="$fn" --dump-after="$pass" \
     "$bin" "$@" >/dev/null 2>"$out.log" || { cat "$out.log" >&2; exit 1; }
-  awk '/^totals:/ {print $2; exit}' "$out"
-  rm -f "$out" "$out.log"
-}
-
-per() { # (a - b) / d, one decimal
-  awk -v a="$1" -v b="$2" -v d="$3" 'BEGIN { printf "%.1f", (a - b) / d }'
-}
-
-# ir_div BIN FN D ARGS...: the Ir inside FN per unit of D (bytes, packets)
-ir_div() {
-  local bin="$1" fn="$2" d="$3"
-  shift 3
-  per "$(ir "$bin" "$fn" "$@")" 0 "$d"
+  for ((i = 1; ; i++)); do
+    [ -f "$out.$i" ] || break
+    figures+=("$(awk -v d="$d" '/^totals:/ { printf "%.1f", $2 / d; exit }' "$out.$i")")
+  done
+  rm -f "$out" "$out".*
+  echo "${figures[*]}"
 }
 
 # bg OUT CMD...: CMD's output into OUT, in the background, at most one job per core running
@@ -80,9 +79,9 @@ bg() {
   "$@" >"$out" &
   while [ "$(jobs -rp | wc -l)" -ge "$cores" ]; do wait -n; done
 }
-# got OUT: what a bg job wrote (after wait); a failed one wrote nothing
+# got OUT N: what a bg job wrote (after wait), N figures; a failed one wrote nothing
 got() {
-  [ -s "$1" ] || { echo "bench.sh: a callgrind run failed ($1)" >&2; exit 1; }
+  [ -s "$1" ] && [ "$(wc -w <"$1")" = "$2" ] || { echo "bench.sh: a callgrind run failed ($1)" >&2; exit 1; }
   cat "$1"
 }
 
@@ -136,38 +135,48 @@ hdr() {
 }
 echo
 echo "Ir/byte inside xf_parser_feed with the parser fed 1, 2, 3, 4, 8, 16, 64, 4096 bytes per call; the CRC floor"
-echo "(xf_crc16_update alone, 4096 per call); frames found / intact inserted (512 KiB, 4096 per"
+echo "(xf_crc16_update alone, 4096 per call; in the floor row); frames found / intact inserted (512 KiB, 4096 per"
 echo "call; '!' when another chunk size found another number, listed below the table); worst"
 echo "delay: bytes between a frame's last byte and the end of the data handed over when it came"
 echo "out, the largest over the chunk sizes (0: no added latency)."
 echo
 hdr table stream c=1 c=2 c=3 c=4 c=8 c=16 c=64 c=4096 "CRC" "frames" delay
 hdr ------ ------------ ------ ------ ------ ------ ------ ------ ------ ------ ------ --------------- -------
+# Every callgrind run of both tables, as many at once as there are cores: a run per stream (its
+# chunk sizes in turn), the floor, parse + decode, the CRC, pack and unpack.
+list=$(IFS=,; echo "${chunks[*]}")
+for t in nibble t256; do
+  b="$bdir/$t$suffix/bench/xfgcu_bench"
+  for k in "${kinds[@]}"; do
+    bg "$bdir/ir.$t.$k" ir "$b" xf_parser_feed xb_parse $D parse "$streams/$k-$big.bin" --chunk "$list" --no-delay
+  done
+  bg "$bdir/ir.$t.floor" ir "$b" xb_floor_feed xb_floor_run $D floor "$streams/valid-$big.bin" --chunk "$list"
+  bg "$bdir/ir.$t.decode" ir "$b" xb_parse xb_parse $D decode "$streams/valid-$big.bin" --no-delay
+  bg "$bdir/ir.$t.crc" ir "$b" xb_crc xb_crc $D crc "$streams/valid-$big.bin"
+  bg "$bdir/ir.$t.pack" ir "$b" xb_pack xb_pack $N pack $N
+  bg "$bdir/ir.$t.unpack" ir "$b" xb_unpack xb_unpack $N unpack $N
+done
+wait
 notes=()
 for t in nibble t256; do
   b="$bdir/$t$suffix/bench/xfgcu_bench"
   worst="" worst_at=""
   for k in "${kinds[@]}"; do
-    # the chunk sizes of a stream, a callgrind run per core at once
-    for c in "${chunks[@]}"; do
-      bg "$bdir/ir.$c" ir_div "$b" xf_parser_feed $D parse "$streams/$k-$big.bin" --chunk "$c" --no-delay
-    done
-    bg "$bdir/ir.crc" ir_div "$b" xb_crc $D crc "$streams/$k-$big.bin"
-    wait
-    for c in "${chunks[@]}"; do
-      res[$t.$k.$c]=$(got "$bdir/ir.$c")
+    read -r -a irs <<<"$(got "$bdir/ir.$t.$k" ${#chunks[@]})"
+    # frames (the first number parse prints) and worst_delay, from a plain run: a line per chunk size
+    mapfile -t lines < <("$b" parse "$streams/$k-$big.bin" --chunk "$list")
+    for i in "${!chunks[@]}"; do
+      c=${chunks[$i]} line=${lines[$i]}
+      res[$t.$k.$c]=${irs[$i]}
       if [ -z "$worst" ] || awk -v a="${res[$t.$k.$c]}" -v w="$worst" 'BEGIN { exit !(a > w) }'; then
         worst=${res[$t.$k.$c]} worst_at="$k, chunk $c"
       fi
-      # frames (the first number parse prints) and worst_delay, from a plain run over 512 KiB
-      line=$("$b" parse "$streams/$k-$big.bin" --chunk "$c")
       found[$t.$k.$c]=$(awk '{print $1}' <<<"$line")
       given[$t.$k.$c]=$(sed -n 's/.*given_up=\([0-9]*\).*/\1/p' <<<"$line")
       echo "ir $t $k $c ${res[$t.$k.$c]}" >>"$results"
       delay[$t.$k.$c]=$(sed -n 's/.*worst_delay=\([0-9]*\).*/\1/p' <<<"$line")
       grep -q unlocated <<<"$line" && delay[$t.$k.$c]="${delay[$t.$k.$c]}?"
     done
-    res[$t.$k.crc]=$(got "$bdir/ir.crc")
     mark="" dmax=0 per_chunk=""
     for c in "${chunks[@]}"; do
       [ "${found[$t.$k.$c]}" != "${found[$t.$k.4096]}" ] && mark="!"
@@ -179,23 +188,20 @@ for t in nibble t256; do
     [ -n "$mark" ] && notes+=("$t $k: frames found$per_chunk")
     cols=()
     for c in "${chunks[@]}"; do cols+=("${res[$t.$k.$c]}"); done
-    hdr "$t" "$k" "${cols[@]}" "${res[$t.$k.crc]}" "${found[$t.$k.4096]} / ${inserted[$k]}$mark" "$dmax"
+    hdr "$t" "$k" "${cols[@]}" "" "${found[$t.$k.4096]} / ${inserted[$k]}$mark" "$dmax"
     echo "frames $t $k ${found[$t.$k.4096]} ${inserted[$k]} ${given[$t.$k.4096]} $dmax" >>"$results"
-    echo "crc $t ${res[$t.$k.crc]}" >>"$results"
   done
-  # the floor on the valid stream: search, store and CRC only (xb_floor_feed)
-  for c in "${chunks[@]}"; do
-    bg "$bdir/ir.floor.$c" ir_div "$b" xb_floor_feed $D floor "$streams/valid-$big.bin" --chunk "$c"
+  # the floor on the valid stream: search, store and CRC only (xb_floor_feed); the CRC alone
+  read -r -a irs <<<"$(got "$bdir/ir.$t.floor" ${#chunks[@]})"
+  res[$t.crc]=$(got "$bdir/ir.$t.crc" 1)
+  for i in "${!chunks[@]}"; do
+    res[$t.floor.${chunks[$i]}]=${irs[$i]}
+    echo "ir $t floor ${chunks[$i]} ${irs[$i]}" >>"$results"
   done
-  bg "$bdir/ir.decode" ir_div "$b" xb_parse $D decode "$streams/valid-$big.bin" --no-delay
-  wait
-  for c in "${chunks[@]}"; do res[$t.floor.$c]=$(got "$bdir/ir.floor.$c"); done
-  cols=()
-  for c in "${chunks[@]}"; do cols+=("${res[$t.floor.$c]}"); done
-  hdr "$t" "valid floor" "${cols[@]}" "" "(floor)" ""
-  for c in "${chunks[@]}"; do echo "ir $t floor $c ${res[$t.floor.$c]}" >>"$results"; done
+  hdr "$t" "valid floor" "${irs[@]}" "${res[$t.crc]}" "(floor)" ""
+  echo "crc $t ${res[$t.crc]}" >>"$results"
   # the whole receive path once, as before: parse + xf_frame_gcu + xf_feedback_decode
-  res[$t.decode]=$(got "$bdir/ir.decode")
+  res[$t.decode]=$(got "$bdir/ir.$t.decode" 1)
   hdr "$t" "valid+decode" - - - - - - - "${res[$t.decode]}" "" "(parse+decode)" ""
   echo "worst Ir/byte over every stream and chunk: $worst ($worst_at)"
   res[$t.worst]="$worst ($worst_at)"
@@ -209,12 +215,8 @@ if [ "${#notes[@]}" -gt 0 ]; then echo "('!': the frames found depend on the chu
 printf '%-8s %-28s %10s\n' table operation "Ir/packet"
 printf '%-8s %-28s %10s\n' -------- ---------------------------- ----------
 for t in nibble t256; do
-  b="$bdir/$t$suffix/bench/xfgcu_bench"
-  bg "$bdir/ir.pack" ir_div "$b" xb_pack $N pack $N
-  bg "$bdir/ir.unpack" ir_div "$b" xb_unpack $N unpack $N
-  wait
-  pk=$(got "$bdir/ir.pack")
-  up=$(got "$bdir/ir.unpack")
+  pk=$(got "$bdir/ir.$t.pack" 1)
+  up=$(got "$bdir/ir.$t.unpack" 1)
   printf '%-8s %-28s %10s\n' "$t" "xf_host_pack (72/75 bytes)" "$pk"
   printf '%-8s %-28s %10s\n' "$t" "xf_gcu_unpack (72/73 bytes)" "$up"
   echo "pack $t $pk" >>"$results"

@@ -300,7 +300,7 @@ def render(b, m, loc, c, lp, campaign, ci):
                                                       ok(h["seconds"], 900)))
     p += ["", "## The parser", "",
           "Instructions per byte inside `xf_parser_feed` (`scripts/bench.sh`: callgrind, the Ir inside the function "
-          "over a 512 KiB stream, per byte, gcc `-O2`). The `valid floor` row is a reference that "
+          "over a 512 KiB stream, per byte, gcc `-O2`, the program's symbols bound at start-up). The `valid floor` row is a reference that "
           "only searches every byte for `h0`, stores and CRCs each frame (`xb_floor_feed`): what the clean "
           "stream's work costs without any rule. The realistic streams (valid, noisy, uart4, uart3) must lose no "
           "intact frame; the others are built to cost the most or to crowd the slots, and lose frames by design "
@@ -357,7 +357,7 @@ def render(b, m, loc, c, lp, campaign, ci):
     p += fuzz_rows(campaign)
     p += ["", "## How to reproduce", "", "```sh",
           "scripts/perf_page.py          # every figure of this page, then the page",
-          "scripts/bench.sh              # the parser tables (both CRC tables), two minutes on 2 cores",
+          "scripts/bench.sh              # the parser tables (both CRC tables), a minute on 2 cores",
           "scripts/firmware_loop.sh      # the firmware example under qemu against xfgcu sim",
           "XF_REORDER_FULL=1 build/gcc/tests/client/test_client_reorder   # the link judgement's figures",
           "scripts/bench.sh profile      # where the instructions go, per function (-g builds)",
