@@ -121,7 +121,7 @@
 #define XB_NOINLINE
 #endif
 
-#define XB_CHUNK 4096u
+#define XB_CHUNK  4096u
 #define XB_CHUNKS 16 /* chunk sizes in one --chunk list */
 
 typedef struct xb_chunks {

@@ -20,7 +20,7 @@ fi
 echo "folders: clean"
 
 echo "--- cppcheck"
-cppcheck --enable=warning,style,performance,portability --std=c99 --error-exitcode=2 --inline-suppr --quiet \
+cppcheck -j "$(nproc)" --enable=warning,style,performance,portability --std=c99 --error-exitcode=2 --inline-suppr --quiet \
   --suppress=variableScope -UXF_CONFIG_HEADER -Iinclude -Itools/xfgcu -Itools/text src include tools/xfgcu \
   tools/text tools/docgen tools/wireshark examples python/native
 echo "cppcheck: clean"

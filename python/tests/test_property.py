@@ -282,6 +282,7 @@ def test_disconnect(value: Any) -> None:
 
 
 @SLOW
+@pytest.mark.filterwarnings("ignore:rate_hz=.*outside the recommended:UserWarning")  # a rate taken, with its warning
 @given(st.sampled_from(list(xfgcu.CONFIG_KEYS) + ["protocol", "connect_timeout_ms", "raise_on_failure"]), HOSTILE)
 def test_connect(rig: Rig, key: str, value: Any) -> None:
     def taken(g: xfgcu.Gimbal) -> None:
