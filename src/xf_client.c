@@ -603,7 +603,9 @@ static xf_err xf__receive(xf_client *c)
         if (n == 0u) {
             break;
         }
-        XF_ASSERT(n <= sizeof(buf)); /* the HAL's contract: never more than asked for */
+        if (n > sizeof(buf)) {
+            return XF_ERR_IO; /* a broken backend says it copied more than asked: none of it is read */
+        }
         /* A call returns at most one frame, from the call that feeds its last byte, and says
          * how far it read: a read that holds several packets takes a call for each. */
         while (off < n) {

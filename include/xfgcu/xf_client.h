@@ -609,8 +609,9 @@ size_t xf_client_size(void);
  * @return ::XF_OK; ::XF_ERR_ARG (NULL @p c); ::XF_ERR_BUSY (called from one
  *   of the client's callbacks, or from inside xf_client_cancel_all(): nothing
  *   done, not even the time taken); or the link's error of this
- *   step: a read error (::XF_ERR_CLOSED, ::XF_ERR_IO: reading stops for
- *   this step, the packet due is still sent) takes precedence over a write
+ *   step: a read error (::XF_ERR_CLOSED, ::XF_ERR_IO, the latter also for a
+ *   read that says it copied more than asked, none of which is read: reading
+ *   stops for this step, the packet due is still sent) takes precedence over a write
  *   error (::XF_ERR_AGAIN, ::XF_ERR_CLOSED, ::XF_ERR_IO: counted in
  *   xf_health.send_errors; that packet is not sent again, the next goes at
  *   the next period)

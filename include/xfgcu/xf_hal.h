@@ -79,7 +79,8 @@ typedef struct xf_hal {
      * @param ctx      xf_hal.ctx
      * @param buf      where the bytes go
      * @param cap      capacity of @p buf
-     * @param out_len  receives the number of bytes copied (0 = nothing now)
+     * @param out_len  receives the number of bytes copied (0 = nothing now), at
+     *   most @p cap (the client and the simulator take more as ::XF_ERR_IO)
      * @return ::XF_OK, ::XF_ERR_CLOSED (the link is down, *out_len = 0; keep
      *   calling: a backend that reconnects does so here), or ::XF_ERR_IO
      */

@@ -278,8 +278,9 @@ xf_err xf_sim_attach(xf_sim *s, const xf_hal *hal);
  * @param now_ms  the time, ms, on a wrapping clock (the gimbal moves by the
  *   time since the previous step, at most 200 ms at once)
  * @return ::XF_OK (also when detached), ::XF_ERR_ARG (NULL @p s), or the
- *   link's read error (::XF_ERR_CLOSED, ::XF_ERR_IO); delayed replies are
- *   then not released in this step
+ *   link's read error (::XF_ERR_CLOSED, ::XF_ERR_IO, the latter also for a
+ *   read that says it copied more than asked, none of which is read); delayed
+ *   replies are then not released in this step
  */
 xf_err xf_sim_step(xf_sim *s, uint32_t now_ms);
 

@@ -259,6 +259,41 @@ static void test_watchdog_off(void **state)
     ct_rig_free(r);
 }
 
+/* A read that says it copied more than it was asked for is the link's error, to the client and
+ * to the simulator, and none of it is read: past the buffer there is nothing to read. The
+ * client's packet due still goes; the next step reads again. */
+static void test_overlong_read(void **state)
+{
+    ct_rig *r = ct_rig_new(NULL, NULL);
+    (void)state;
+    assert_true(ct_run_link(r, XF_LINK_UP, 100));
+    r->host.overread = 1;
+    {
+        uint32_t bytes = xf_client_parser_stats(&r->c)->bytes_in, sent = r->c.health.packets_sent;
+        uint32_t replies = r->c.health.replies;
+        r->now += 20u;
+        assert_xf(xf_client_step(&r->c, r->now), XF_ERR_IO);
+        assert_int_equal(xf_client_parser_stats(&r->c)->bytes_in, bytes);
+        assert_int_equal(r->c.health.packets_sent, sent + 1u);
+        r->host.overread = 0;
+        ct_run(r, 100); /* reading again, and nothing of the broken read taken for a reply */
+        assert_true(r->c.health.replies > replies);
+        assert_int_equal(xf_client_parser_stats(&r->c)->crc_errors, 0);
+        assert_int_equal(xf_client_parser_stats(&r->c)->bytes_skipped, 0);
+    }
+    r->gcu.overread = 1; /* the simulator's link alike */
+    {
+        uint32_t bytes = r->s.parser.stats.bytes_in, packets = r->s.stats.packets_in;
+        assert_xf(xf_sim_step(&r->s, r->now), XF_ERR_IO);
+        assert_int_equal(r->s.parser.stats.bytes_in, bytes);
+        r->gcu.overread = 0;
+        ct_run(r, 100);
+        assert_true(r->s.stats.packets_in > packets);
+        assert_int_equal(r->s.parser.stats.crc_errors, 0);
+    }
+    ct_rig_free(r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -270,6 +305,7 @@ int main(void)
         cmocka_unit_test(test_transport_closed_flag),
         cmocka_unit_test(test_watchdog_zeroes_rates),
         cmocka_unit_test(test_watchdog_off),
+        cmocka_unit_test(test_overlong_read),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
