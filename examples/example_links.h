@@ -36,7 +36,7 @@ static inline const char *example_spec(const char *prog, const char *given, xf_s
     xf_simlink_hal(gcu, &hal);
     xf_sim_init(sim, NULL);
     xf_sim_attach(sim, &hal);
-    (void)xf_link_spec_for_simlink(gcu, spec, sizeof(spec));
+    (void)xf_simlink_host_spec(gcu, spec, sizeof(spec));
     return spec;
 }
 

@@ -496,7 +496,7 @@ void xf_simlink_close(xf_simlink *l)
 
 /* ---- the host's spec for this link --------------------------------------------------- */
 
-size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap)
+size_t xf_simlink_host_spec(const xf_simlink *gcu, char *buf, size_t cap)
 {
     const char *host;
     if (buf == NULL) {

@@ -901,7 +901,7 @@ int xfpy_sim_open(void *p, const char *kind, const char *where, int port, char *
             xf_sim_set_failure(&h->sim, (uint8_t)i, h->fail[i]);
         }
     }
-    (void)xf_link_spec_for_simlink(&h->link, h->spec, sizeof(h->spec));
+    (void)xf_simlink_host_spec(&h->link, h->spec, sizeof(h->spec));
     if (err != XF_OK) {
         return fail((int)err, msgs, msgs_cap, "sim: %s", xf_strerror(err));
     }

@@ -360,7 +360,7 @@ static void test_link_arguments(void **state)
     fd0_open = fcntl(0, F_GETFD) != -1;
     xf_link_close(&l); /* zeroed: descriptor 0 is not closed */
     assert_int_equal(fcntl(0, F_GETFD) != -1, fd0_open);
-    assert_int_equal(xf_link_spec_for_simlink(NULL, NULL, 0), 0);
+    assert_int_equal(xf_simlink_host_spec(NULL, NULL, 0), 0);
 }
 
 static void test_open_failures(void **state)
@@ -441,7 +441,7 @@ static void rig_open(rig *r, xf_simlink_kind kind, uint16_t rate_hz)
     xf_simlink_hal(&r->gcu, &sim_hal);
     assert_xf(xf_sim_init(&r->sim, NULL), XF_OK);
     assert_xf(xf_sim_attach(&r->sim, &sim_hal), XF_OK);
-    assert_true(xf_link_spec_for_simlink(&r->gcu, r->spec, sizeof(r->spec)) < sizeof(r->spec));
+    assert_true(xf_simlink_host_spec(&r->gcu, r->spec, sizeof(r->spec)) < sizeof(r->spec));
     if (xf_link_open(&r->link, r->spec) != XF_OK) {
         print_error("%s: %s\n", r->spec, r->link.error.text);
         fail();

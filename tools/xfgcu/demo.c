@@ -49,7 +49,7 @@ static int start_client(demo *d)
     char spec[128];
     xf_client_config cc;
     xf_hal hal;
-    (void)xf_link_spec_for_simlink(&d->gcu_link, spec, sizeof(spec));
+    (void)xf_simlink_host_spec(&d->gcu_link, spec, sizeof(spec));
     if (xf_link_open(&d->link, spec) != XF_OK || xf_link_wait(&d->link, 2000) != XF_OK ||
         xf_link_hal(&d->link, &hal) != XF_OK) {
         return cli_fail_link("demo: cannot connect to the simulated GCU: %s", xf_link_error(&d->link)->text);

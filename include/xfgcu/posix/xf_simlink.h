@@ -178,7 +178,7 @@ void xf_simlink_close(xf_simlink *l);
  * @return the length of the whole spec (not counting the NUL); 0, with an empty @p buf, for a
  *   NULL @p gcu or one never opened
  */
-size_t xf_link_spec_for_simlink(const xf_simlink *gcu, char *buf, size_t cap);
+size_t xf_simlink_host_spec(const xf_simlink *gcu, char *buf, size_t cap);
 
 XF_END_DECLS
 
