@@ -10,11 +10,13 @@
  *                                          below), which --no-delay leaves out. Several
  *                                          sizes: a fresh parser and a line for each, in
  *                                          turn (so does every command that takes --chunk)
- *   xfgcu_bench decode FILE [--chunk N] [--no-delay]
+ *   xfgcu_bench decode FILE [--chunk N[,N...]] [--no-delay]
  *                                          parse + xf_frame_gcu (no second CRC) + xf_feedback_decode
- *   xfgcu_bench crc FILE [--chunk N]       the CRC floor: xf_crc16_update over the same bytes
+ *   xfgcu_bench crc FILE [--chunk N[,N...]]
+ *                                          the CRC floor: xf_crc16_update over the same bytes
  *                                          in the same chunking; prints the CRC
- *   xfgcu_bench floor FILE [--chunk N]     the floor (xb_floor_feed): only the search,
+ *   xfgcu_bench floor FILE [--chunk N[,N...]]
+ *                                          the floor (xb_floor_feed): only the search,
  *                                          store and CRC, one frame at a time; prints the
  *                                          frames found first (all of them on valid only)
  *   xfgcu_bench gen KIND N_BYTES FILE      write an N_BYTES test stream (deterministic; a
@@ -33,8 +35,9 @@
  *                                          or the floor one of valid
  *
  * N_BYTES, N and the chunk accept a k or m suffix (KiB, MiB). The measured
- * functions (callgrind --toggle-collect, scripts/bench.sh) are xb_parse (parse,
- * decode), xb_crc, xb_floor_feed, xb_pack and xb_unpack; nothing else runs inside them.
+ * functions (callgrind --toggle-collect, scripts/bench.sh) are xf_parser_feed (parse),
+ * xb_parse (decode), xb_crc, xb_floor_feed, xb_pack and xb_unpack; nothing else runs inside
+ * them.
  * One pass over FILE per chunk size is one call of xb_parse, xb_crc or xb_floor_run,
  * never inlined, so that callgrind --dump-after=FUNCTION gives a count per chunk size
  * from a single run (a valgrind start-up costs more than a pass over 512 KiB).

@@ -36,11 +36,20 @@ cd "$here/tests"
 # worker must never reach. Where namespaces or xdist are not to be had: one test at a time.
 # XFGCU_TEST_WORKERS=1 asks for one at a time.
 workers=${XFGCU_TEST_WORKERS:-4}
+case $workers in
+    '' | *[!0-9]*) echo "run_tests.sh: XFGCU_TEST_WORKERS='$workers' is not a number of workers" >&2; exit 2 ;;
+esac
 set -- -q -p no:cacheprovider
-if [ "$workers" -gt 1 ] && "$python" -c 'import xdist' 2>/dev/null &&
-    ./own_network.sh "$python" -c '' 2>/dev/null; then
-    set -- "$@" -p xdist --dist load --tx "$workers*popen//python='$here/tests/own_network.sh' '$python'"
+why=
+if [ "$workers" -le 1 ]; then
+    :
+elif ! "$python" -c 'import xdist' 2>/dev/null; then
+    why="$python has no pytest-xdist"
+elif ! why=$(./own_network.sh "$python" -c '' 2>&1); then
+    why="no network namespace of its own here ($(printf '%s' "$why" | head -1))"
 else
-    [ "$workers" -le 1 ] || echo "run_tests.sh: one test at a time (no pytest-xdist, or no network namespace: unshare --net, ip)"
+    why=
+    set -- "$@" -p xdist --dist load --tx "$workers*popen//python='$here/tests/own_network.sh' '$python'"
 fi
+[ -z "$why" ] || echo "run_tests.sh: one test at a time: $why"
 "$python" -m pytest "$@" . # not exec: the EXIT trap removes a temporary build
