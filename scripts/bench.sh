@@ -18,8 +18,7 @@
 # benchmark's feeding loop (about 24 more per call at one byte per call); start-up and file
 # reading are outside the function. Each pass is a call of xb_parse with a fresh parser, and
 # --dump-after=xb_parse counts each apart. The program's symbols are bound at start-up (-z now),
-# so no pass counts the binding of a libc call; a run per chunk size counted it (a few thousand
-# instructions): of the 256 figures that way, 10 were 0.1 higher. The same size at every chunk size
+# so no pass counts the binding of a libc call (only the first would). The same size at every chunk size
 # (1, 2, 3, 4, 8, 16, 64, 4096 bytes per feed call). The CRC floor is xb_crc
 # (xf_crc16_update over the valid stream, 4096 per call; its cost does not depend on the
 # bytes) measured the same way, shown in the floor row; the
@@ -31,7 +30,7 @@
 # promises fail the script (exit 1): every intact frame of the realistic streams found at
 # every chunk size, no added latency, and the cost bound of docs/codec.md (150 Ir/byte on
 # any stream at any chunk size). Every figure also goes to build/bench/results.txt (one
-# `name value` line each) for scripts/perf_page.sh. The streams: bench/xfgcu_bench.c's header.
+# `name value` line each) for scripts/perf_page.py. The streams: bench/xfgcu_bench.c's header.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -100,15 +99,14 @@ build "t256$suffix" ON
 # valid first: the other rows are compared with it
 kinds=(valid noisy uart4 uart3 adversarial hostile dense storm h0run pairs cpairs mixed mixed79 credit chain)
 chunks=(1 2 3 4 8 16 64 4096)
-big=512k
-D=524288 # its bytes
+D=524288 # bytes of each stream (512 KiB)
 streams="$bdir/streams"
 mkdir -p "$streams"
 gen="$bdir/nibble$suffix/bench/xfgcu_bench"
 declare -A inserted
 for k in "${kinds[@]}"; do
   # the first number gen prints: frames inserted intact
-  inserted[$k]=$("$gen" gen "$k" $big "$streams/$k-$big.bin" | awk '{print $1}')
+  inserted[$k]=$("$gen" gen "$k" $D "$streams/$k-$D.bin" | awk '{print $1}')
 done
 
 if [ "$mode" = profile ]; then
@@ -117,7 +115,7 @@ if [ "$mode" = profile ]; then
     for k in valid uart3 adversarial dense; do
       out="$bdir/callgrind.$t.$k.out"
       valgrind --tool=callgrind --callgrind-out-file="$out" --toggle-collect=xb_parse \
-        "$bdir/$t$suffix/bench/xfgcu_bench" parse "$streams/$k-$big.bin" --no-delay >/dev/null 2>&1
+        "$bdir/$t$suffix/bench/xfgcu_bench" parse "$streams/$k-$D.bin" --no-delay >/dev/null 2>&1
       echo
       echo "== $t table, $k stream (512 KiB): self instructions inside xb_parse"
       python3 bench/cg_breakdown.py "$out" $D
@@ -151,11 +149,11 @@ list=$(IFS=,; echo "${chunks[*]}")
 for t in nibble t256; do
   b="$bdir/$t$suffix/bench/xfgcu_bench"
   for k in "${kinds[@]}"; do
-    bg "$bdir/ir.$t.$k" ir "$b" xf_parser_feed xb_parse $D parse "$streams/$k-$big.bin" --chunk "$list" --no-delay
+    bg "$bdir/ir.$t.$k" ir "$b" xf_parser_feed xb_parse $D parse "$streams/$k-$D.bin" --chunk "$list" --no-delay
   done
-  bg "$bdir/ir.$t.floor" ir "$b" xb_floor_feed xb_floor_run $D floor "$streams/valid-$big.bin" --chunk "$list"
-  bg "$bdir/ir.$t.decode" ir "$b" xb_parse xb_parse $D decode "$streams/valid-$big.bin" --no-delay
-  bg "$bdir/ir.$t.crc" ir "$b" xb_crc xb_crc $D crc "$streams/valid-$big.bin"
+  bg "$bdir/ir.$t.floor" ir "$b" xb_floor_feed xb_floor_run $D floor "$streams/valid-$D.bin" --chunk "$list"
+  bg "$bdir/ir.$t.decode" ir "$b" xb_parse xb_parse $D decode "$streams/valid-$D.bin" --no-delay
+  bg "$bdir/ir.$t.crc" ir "$b" xb_crc xb_crc $D crc "$streams/valid-$D.bin"
   bg "$bdir/ir.$t.pack" ir "$b" xb_pack xb_pack $N pack $N
   bg "$bdir/ir.$t.unpack" ir "$b" xb_unpack xb_unpack $N unpack $N
 done
@@ -168,7 +166,7 @@ for t in nibble t256; do
     s=$(got "$bdir/ir.$t.$k" ${#chunks[@]})
     read -r -a irs <<<"$s"
     # frames (the first number parse prints) and worst_delay, from a plain run: a line per chunk size
-    s=$("$b" parse "$streams/$k-$big.bin" --chunk "$list")
+    s=$("$b" parse "$streams/$k-$D.bin" --chunk "$list")
     mapfile -t lines <<<"$s"
     [ ${#lines[@]} = ${#chunks[@]} ] || { echo "bench.sh: parse $k: ${#lines[@]} lines, not ${#chunks[@]}" >&2; exit 1; }
     for i in "${!chunks[@]}"; do
@@ -236,13 +234,13 @@ verdict() { awk -v a="$1" -v m="$2" 'BEGIN { print (a <= m) ? "ok" : "OVER" }'; 
 BOUND=150 # docs/codec.md: the cost per byte on any input, at any chunk size
 echo "targets (ok / OVER; speed is printed, the last four lines are promises: OVER fails the script):"
 for t in nibble t256; do
-  one=60 sixteen=35 big=30
-  [ "$t" = t256 ] && one=45 sixteen=25 big=20
+  one=60 sixteen=35 many=30 # the limits at 1, 16, and 64 and 4096 bytes per call
+  [ "$t" = t256 ] && one=45 sixteen=25 many=20
   line="  $t: valid, Ir/byte at chunk 1 <= $one: ${res[$t.valid.1]} $(verdict "${res[$t.valid.1]}" $one);"
   line="$line 16 <= $sixteen: ${res[$t.valid.16]} $(verdict "${res[$t.valid.16]}" $sixteen);"
-  line="$line 64 and 4096 <= $big: ${res[$t.valid.64]}, ${res[$t.valid.4096]}"
+  line="$line 64 and 4096 <= $many: ${res[$t.valid.64]}, ${res[$t.valid.4096]}"
   big_max=$(awk -v a="${res[$t.valid.64]}" -v b="${res[$t.valid.4096]}" 'BEGIN { print (a > b) ? a : b }')
-  echo "$line $(verdict "$big_max" "$big")"
+  echo "$line $(verdict "$big_max" "$many")"
   echo "  $t: the floor: search, store and CRC only (valid floor row) at 1 / 16 / 64 / 4096: ${res[$t.floor.1]} / ${res[$t.floor.16]} / ${res[$t.floor.64]} / ${res[$t.floor.4096]}"
   # noisy streams against the clean one at the same chunk size
   rworst="" rat=""

@@ -11,7 +11,7 @@
 #                                    writable corpus in build/fuzz/corpus-long/ that persists
 #                                    between campaigns (seeded from fuzz/corpus/). Its record
 #                                    (commit, date, per binary: executions, new inputs, result)
-#                                    goes to build/fuzz/campaign.txt, which scripts/perf_page.sh
+#                                    goes to build/fuzz/campaign.txt, which scripts/perf_page.py
 #                                    puts in docs/performance.md.
 #   scripts/fuzz.sh corpus           regenerate the committed seed corpus and the hand-made
 #                                    regressions (sem-*) of the parser's semantics (fuzz/gen_corpus.c).

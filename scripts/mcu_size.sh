@@ -7,7 +7,7 @@
 #   parser + CRC, linked alone: <= 1536 bytes with the 16-entry table, <= 2048 with the 256-entry one
 #   sizeof(xf_parser) at the default XF_PACKET_MAX_LEN (255): <= 300 bytes
 #   codec + client in the firmware example: <= 8192 bytes of flash, <= 512 bytes of RAM per gimbal
-# The figures also go to build/mcu/results.txt (`name value` lines) for scripts/perf_page.sh.
+# The figures also go to build/mcu/results.txt (`name value` lines) for scripts/perf_page.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=build/mcu

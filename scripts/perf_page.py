@@ -4,8 +4,8 @@ command of the repository, run here (or, with --reuse, from its last run's recor
 
   scripts/perf_page.py            run the benchmarks, then write docs/performance.md
   scripts/perf_page.py --reuse    use build/bench/results.txt and build/mcu/results.txt when they
-                                  exist instead of running scripts/bench.sh (about three minutes)
-                                  and scripts/mcu_size.sh again
+                                  exist instead of running scripts/bench.sh and
+                                  scripts/mcu_size.sh again
 
 What it runs: scripts/bench.sh (parser and packer instructions, frames, latency in bytes),
 scripts/firmware_loop.sh (the firmware example under qemu), test_client_reorder with
@@ -64,10 +64,6 @@ def ok(value, limit):
     return "met" if float(value) <= float(limit) else "**over**"
 
 
-def git(*args):
-    return subprocess.run(["git"] + list(args), cwd=ROOT, stdout=subprocess.PIPE, text=True).stdout.strip()
-
-
 def machine():
     cpu = "unknown CPU"
     try:
@@ -92,10 +88,12 @@ def client_figures():
 
 
 def loop_figures():
-    """The firmware example under qemu against the simulator, and the client's link judgement over
-    simulated links (the fake clock: the figures do not depend on the machine)."""
-    fw = run(["scripts/firmware_loop.sh"])
-    run(["cmake", "-S", ".", "-B", "build/gcc", "-DCMAKE_BUILD_TYPE=Debug"])
+    """The firmware example under qemu against the simulator (client_figures' program), and the
+    client's link judgement over simulated links (the fake clock: the figures do not depend on the
+    machine), in scripts/test.sh's Debug build."""
+    fw = run(["scripts/firmware_loop.sh", "--xfgcu", os.path.join(ROOT, "build/perf/tools/xfgcu")])
+    run(["cmake", "-S", ".", "-B", "build/gcc", "-DCMAKE_BUILD_TYPE=Debug", "-DCMAKE_C_COMPILER=gcc",
+         "-DXFGCU_BUILD_PYTHON=ON"])
     run(["cmake", "--build", "build/gcc", "--parallel", "2", "--target", "test_client_reorder"])
     reorder = run(["build/gcc/tests/client/test_client_reorder"], env=dict(os.environ, XF_REORDER_FULL="1"))
     return {"firmware": fw, "reorder": reorder}
@@ -339,7 +337,7 @@ def render(b, m, loc, c, lp, campaign, ci):
           "simulator on its own thread (target p99 <= 200 us); `cpu 3`, the CPU time of the thread driving the "
           "clients at 50 Hz over loopback UDP (target: 64 gimbals <= 5 % of a core); `alloc`, heap allocations in "
           "steady state (target 0; also the ctest `client_no_heap`). `scripts/bench_send.sh`: `xfgcu send shutter` "
-          "from start to exit against the simulator on loopback (target < 30 ms)."]
+          "from start to exit against the simulator on loopback, over UDP and TCP."]
     p += client_rows(c)
     p += loop_rows(lp)
     p += ["", "## Fuzzing", "",
@@ -357,7 +355,7 @@ def render(b, m, loc, c, lp, campaign, ci):
     p += fuzz_rows(campaign)
     p += ["", "## How to reproduce", "", "```sh",
           "scripts/perf_page.py          # every figure of this page, then the page",
-          "scripts/bench.sh              # the parser tables (both CRC tables), a minute on 2 cores",
+          "scripts/bench.sh              # the parser tables (both CRC tables): %s s at this run" % figure(b, "seconds")[0],
           "scripts/firmware_loop.sh      # the firmware example under qemu against xfgcu sim",
           "XF_REORDER_FULL=1 build/gcc/tests/client/test_client_reorder   # the link judgement's figures",
           "scripts/bench.sh profile      # where the instructions go, per function (-g builds)",

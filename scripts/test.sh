@@ -11,15 +11,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
-# ctest: four tests per core; most wait on sockets, ptys, timers and child processes (the build
-# stage's tests: 73 s one per core, 44 s two, 26 s four; each way passes --repeat until-fail:3)
+# ctest: four tests per core; most wait on sockets, ptys, timers and child processes, and each
+# passes --repeat until-fail:3 so run
 tjobs=$((4 * jobs))
 
 stages=(tree build python readme optimised fuzz matrix docs lint mcu firmware bigendian bench mutation)
 
 describe() {
   case $1 in
-    tree)      echo "no binaries, build products, files over 1 MB or test sources over 1000 lines tracked (scripts/check_tree.py)" ;;
+    tree)      echo "no binaries, build products, big files or long test sources tracked (scripts/check_tree.py)" ;;
     build)     echo "gcc Debug build with -Werror (the Python package's native library too), every ctest" ;;
     python)    echo "the Python package's tests (pytest, hypothesis) over build/gcc's library and program" ;;
     readme)    echo "every recipe README.md prints, run as printed (Release, install, consumers, presets)" ;;
