@@ -350,6 +350,18 @@ XF_API xf_err xf_feedback_decode(uint8_t order, const uint8_t *fb, size_t len, x
  */
 XF_API uint8_t xf_feedback_state(uint8_t order, xf_result result, uint8_t failed_cameras);
 
+/* Private: the @p i-th (from 0) of the NUL-ended names packed in @p names (the codec's order and
+ * field names, the client's status and configuration texts). Names packed in one array, not a
+ * literal each: literals share a section, which a firmware that links any of them keeps whole. */
+static inline const char *xf__nth_name(const char *names, size_t i)
+{
+    for (; i > 0u; i--) {
+        while (*names++ != '\0') {
+        }
+    }
+    return names;
+}
+
 #if XF_EMIT_DEFINITIONS
 
 /* The order table, one row per order, read like the spec's table; sorted by
@@ -418,16 +430,6 @@ static inline const uint8_t (*xf__value_max(void))[2] { return xf__order_vmax; }
 /* The names of the table's rows, in its order, each ended by a NUL. */
 static const char xf__order_name_list[] = XF__ORDER_ROWS(XF__NAME);
 static inline const char *xf__order_names(void) { return xf__order_name_list; }
-
-/* The @p i-th of the NUL-ended names packed in @p names. */
-static inline const char *xf__nth_name(const char *names, size_t i)
-{
-    for (; i > 0u; i--) {
-        while (*names++ != '\0') {
-        }
-    }
-    return names;
-}
 
 XF_API const xf_order_info *xf_order_at(size_t i) { return (i < XF_ORDER_COUNT) ? &xf__order_table()[i] : NULL; }
 

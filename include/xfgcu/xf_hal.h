@@ -80,7 +80,7 @@ typedef struct xf_hal {
      * @param buf      where the bytes go
      * @param cap      capacity of @p buf
      * @param out_len  receives the number of bytes copied (0 = nothing now), at
-     *   most @p cap (the client and the simulator take more as ::XF_ERR_IO)
+     *   most @p cap (more is ::XF_ERR_IO to xf_hal_read(), which every reader uses)
      * @return ::XF_OK, ::XF_ERR_CLOSED (the link is down, *out_len = 0; keep
      *   calling: a backend that reconnects does so here), or ::XF_ERR_IO
      */
@@ -120,6 +120,29 @@ static inline xf_err xf_hal_check(const xf_hal *hal)
  * @return the descriptor, or -1 (NULL @p hal, no fd function, or none now)
  */
 static inline int xf_hal_fd(const xf_hal *hal) { return (hal != NULL && hal->fd != NULL) ? hal->fd(hal->ctx) : -1; }
+
+/**
+ * Read the link (xf_hal.read), holding it to its contract: a read that says it copied more
+ * than @p cap bytes is ::XF_ERR_IO with *out_len = 0 (a broken backend: none of its bytes can
+ * be trusted, and those past @p buf are not there). How the client, the simulator and the
+ * program read a link.
+ * @param hal      the link (checked by xf_hal_check())
+ * @param buf      where the bytes go
+ * @param cap      capacity of @p buf
+ * @param out_len  receives the number of bytes copied (0 on any error)
+ * @return what xf_hal.read returned, or ::XF_ERR_IO for an over-long read
+ */
+static inline xf_err xf_hal_read(const xf_hal *hal, uint8_t *buf, size_t cap, size_t *out_len)
+{
+    xf_err err;
+    *out_len = 0;
+    err = hal->read(hal->ctx, buf, cap, out_len);
+    if (err != XF_OK || *out_len > cap) {
+        *out_len = 0;
+        return (err != XF_OK) ? err : XF_ERR_IO;
+    }
+    return XF_OK;
+}
 
 XF_END_DECLS
 

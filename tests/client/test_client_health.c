@@ -35,13 +35,36 @@ static void test_link_transitions(void **state)
     assert_int_equal(r->log.links[3], XF_LINK_UP);
     assert_int_equal(r->log.link_ms[1], last_rx + 250u);
     assert_int_equal(r->log.link_ms[2], last_rx + 1000u);
-    assert_string_equal(xf_link_state_name(XF_LINK_UP), "up");
-    assert_string_equal(xf_link_state_name(XF_LINK_STALE), "stale");
-    assert_string_equal(xf_link_state_name(XF_LINK_DOWN), "down");
-    assert_string_equal(xf_cmd_status_name(XF_CMD_LINK_LOST), "link lost");
-    assert_string_equal(xf_cmd_status_name(XF_CMD_OK), "ok");
-    assert_string_equal(xf_cmd_status_name((xf_cmd_status)99), "unknown");
     ct_rig_free(r);
+}
+
+/* Every link state's and command status's name, each by its enumerator: the names are packed
+ * texts in the enum's order, so one out of place or missing shows here. */
+static void test_state_names(void **state)
+{
+    static const struct {
+        xf_cmd_status s;
+        const char *name;
+    } cmd[] = {{XF_CMD_UNKNOWN, "unknown"},
+               {XF_CMD_QUEUED, "queued"},
+               {XF_CMD_SENDING, "sending"},
+               {XF_CMD_OPERATING, "operating"},
+               {XF_CMD_OK, "ok"},
+               {XF_CMD_FAILED, "failed"},
+               {XF_CMD_TIMEOUT, "timeout"},
+               {XF_CMD_LINK_LOST, "link lost"},
+               {XF_CMD_CANCELLED, "cancelled"},
+               {XF_CMD_REFUSED, "refused"}};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(cmd) / sizeof(cmd[0]); i++) {
+        assert_string_equal(xf_cmd_status_name(cmd[i].s), cmd[i].name);
+    }
+    assert_string_equal(xf_cmd_status_name((xf_cmd_status)(XF_CMD_REFUSED + 1)), "unknown");
+    assert_string_equal(xf_link_state_name(XF_LINK_DOWN), "down");
+    assert_string_equal(xf_link_state_name(XF_LINK_STALE), "stale");
+    assert_string_equal(xf_link_state_name(XF_LINK_UP), "up");
+    assert_string_equal(xf_link_state_name((xf_link_state)(XF_LINK_UP + 1)), "down");
 }
 
 /* Commands fail with LINK_LOST when the link dies: silent GCU, closed transport,
@@ -298,6 +321,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_link_transitions),
+        cmocka_unit_test(test_state_names),
         cmocka_unit_test(test_link_lost_fails_commands),
         cmocka_unit_test(test_reopened_transport_down_until_reply),
         cmocka_unit_test(test_health_figures),

@@ -12,9 +12,7 @@
  * Timing checks leave room for a loaded machine and sanitizers.
  */
 #define _XOPEN_SOURCE 700 /* mkdtemp, kill */
-#include <arpa/inet.h>
 #include <fcntl.h>
-#include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
@@ -24,6 +22,8 @@
 #include "xfgcu/posix/xf_link.h"
 #include "xfgcu/posix/xf_poll.h"
 #include "xfgcu/posix/xf_simlink.h"
+
+#include "../loopback.h" /* after cmocka.h, which client_test.h includes */
 
 /* ---- parsing ----------------------------------------------------------------------------- */
 
@@ -365,10 +365,9 @@ static void test_link_arguments(void **state)
 
 static void test_open_failures(void **state)
 {
-    struct sockaddr_in a;
-    socklen_t len = sizeof(a);
     char spec[64], text[64];
-    int fd = socket(AF_INET, SOCK_DGRAM, 0);
+    uint16_t port = 0;
+    int fd;
     xf_link l;
     (void)state;
     memset(&l, 0, sizeof(l));
@@ -380,26 +379,15 @@ static void test_open_failures(void **state)
                      strlen("serial /dev/xfgcu-no-such-device at 115200 baud"));
     xf_link_close(&l);
     /* a local UDP port in use */
-    assert_true(fd >= 0);
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_ANY);
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
-    snprintf(spec, sizeof(spec), "udp:127.0.0.1:9,local=%u", (unsigned)ntohs(a.sin_port));
+    fd = test_loopback_socket(SOCK_DGRAM, &port);
+    snprintf(spec, sizeof(spec), "udp:127.0.0.1:9,local=%u", (unsigned)port);
     assert_xf(xf_link_open(&l, spec), XF_ERR_BUSY);
     assert_true(l.error.os_errno != 0);
     assert_true(l.error.text[0] != '\0');
     close(fd);
     /* a TCP port that refuses: the open succeeds (it connects by itself), the wait says why not */
-    fd = socket(AF_INET, SOCK_STREAM, 0);
-    assert_true(fd >= 0);
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    a.sin_port = 0;
-    assert_int_equal(bind(fd, (struct sockaddr *)&a, sizeof(a)), 0); /* bound, not listening */
-    len = sizeof(a);
-    assert_int_equal(getsockname(fd, (struct sockaddr *)&a, &len), 0);
-    snprintf(spec, sizeof(spec), "tcp:127.0.0.1:%u", (unsigned)ntohs(a.sin_port));
+    fd = test_loopback_socket(SOCK_STREAM, &port); /* bound, not listening */
+    snprintf(spec, sizeof(spec), "tcp:127.0.0.1:%u", (unsigned)port);
     assert_xf(xf_link_open(&l, spec), XF_OK);
     assert_xf(xf_link_wait(&l, 2000), XF_ERR_CLOSED);
     assert_contains(xf_link_error(&l)->text, "connect to 127.0.0.1:");

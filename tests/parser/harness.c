@@ -6,6 +6,10 @@
 #include <stdlib.h>
 #include "parser_test.h"
 
+#define MAX_FRAMES 40000      /* frames a harness or a stream holds */
+#define MAX_OUT    (4u << 20) /* bytes of the frames a harness returned */
+#define MAX_STREAM (2u << 20) /* bytes of a stream */
+
 /* ---- harness: feed, collect, check the counters after every call -------- */
 
 void harness_init(harness *h, xf_direction dir)

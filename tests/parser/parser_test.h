@@ -24,9 +24,6 @@
 
 /* ---- the harness ------------------------------------------------------------ */
 
-#define MAX_FRAMES 40000
-#define MAX_OUT    (4u << 20)
-
 typedef struct harness {
     xf_parser p;
     xf_direction dir;
@@ -48,8 +45,6 @@ void check_counters(harness *h);
 size_t harness_feed(harness *h, const uint8_t *data, size_t len);
 
 /* ---- the stream builder ------------------------------------------------------- */
-
-#define MAX_STREAM (2u << 20)
 
 typedef struct stream {
     uint8_t *buf;

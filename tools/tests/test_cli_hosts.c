@@ -502,18 +502,11 @@ static void test_72_and_73_byte_replies(void **state)
  * V2.0.6 has none) with a yaw of 365 deg. Returns its pid; *port is its port. */
 static pid_t fake_gcu(int *port, int seconds)
 {
-    struct sockaddr_in a;
-    socklen_t alen = sizeof(a);
-    int lfd = socket(AF_INET, SOCK_STREAM, 0), one = 1;
+    char text[8];
+    int lfd = hold_port(SOCK_STREAM, text, sizeof(text));
     pid_t pid;
-    memset(&a, 0, sizeof(a));
-    a.sin_family = AF_INET;
-    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    setsockopt(lfd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof(one));
-    assert_int_equal(bind(lfd, (struct sockaddr *)&a, sizeof(a)), 0);
     assert_int_equal(listen(lfd, 4), 0);
-    assert_int_equal(getsockname(lfd, (struct sockaddr *)&a, &alen), 0);
-    *port = ntohs(a.sin_port);
+    *port = atoi(text);
     pid = fork();
     assert_true(pid >= 0);
     if (pid == 0) {

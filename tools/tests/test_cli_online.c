@@ -16,7 +16,6 @@
 #include <stdlib.h>
 #include <glob.h>
 #include <string.h>
-#include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 #include <cmocka.h>

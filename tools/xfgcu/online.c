@@ -611,7 +611,7 @@ unsigned online_raw_read(online *o, uint32_t ms, void (*got)(void *user, const u
         pfd.fd = xf_hal_fd(&o->hal);
         pfd.events = POLLIN;
         (void)poll(&pfd, pfd.fd >= 0 ? 1u : 0u, (int)(ms - waited));
-        if (o->hal.read(o->hal.ctx, buf, sizeof(buf), &got_len) != XF_OK || got_len > sizeof(buf)) {
+        if (xf_hal_read(&o->hal, buf, sizeof(buf), &got_len) != XF_OK) {
             break;
         }
         while (xf_parser_feed(&parser, buf + taken, got_len - taken, &used, &frame) == XF_PARSE_FRAME) {
